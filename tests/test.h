@@ -16,10 +16,12 @@
 #define REAL_EPS ((double)DBL_EPSILON)
 #define REAL_NAME "double"
 #define REAL_MIN ((double)DBL_MIN)
+#define REAL_MAX ((double)DBL_MAX)
 #else
 #define REAL_EPS ((double)FLT_EPSILON)
 #define REAL_NAME "float"
 #define REAL_MIN ((double)FLT_MIN)
+#define REAL_MAX ((double)FLT_MAX)
 #endif
 
 #ifdef __cplusplus

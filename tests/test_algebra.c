@@ -31,6 +31,8 @@ static double mv_diff(ga2d_mv a, ga2d_mv b)
 
 #define CHECK_MV_NEAR(a, b, tol) CHECK_NEAR(mv_diff((a), (b)), 0, (tol))
 
+#define PI_D 3.14159265358979323846
+
 static const ga2d_mv E12 = {0, 0, 0, 1};
 static const ga2d_mv ONE = {1, 0, 0, 0};
 
@@ -226,6 +228,22 @@ static void non_invertible_is_reported(void)
         CHECK_RESULT(ga2d_mv_inverse(bad[i], &out), GA2D_ERR_NOT_INVERTIBLE);
         CHECK(memcmp(&out, &sentinel, sizeof out) == 0);
     }
+    /* 1 + u for any unit vector u is a zero divisor too, but rounding in u
+       leaves m conj(m) = 1 - |u|^2 a few eps off zero instead of 0: the
+       tolerance must still call it non-invertible, not return ~1e7 */
+    {
+        test_rng rng = {13};
+        for (i = 0; i < 1000; ++i) {
+            double t = rng_uniform(&rng, -PI_D, PI_D);
+            ga2d_mv out = sentinel;
+            ga2d_vec u;
+            ga2d_vec_normalize(ga2d_vec_make((ga2d_real)cos(t), (ga2d_real)sin(t)), &u);
+            CHECK_RESULT(ga2d_mv_inverse(ga2d_mv_make(1, u.x, u.y, 0), &out), GA2D_ERR_NOT_INVERTIBLE);
+            /* and e12 + u: (e12 + u) conj = -|u|^2 + 1 as well */
+            CHECK_RESULT(ga2d_mv_inverse(ga2d_mv_make(0, u.x, u.y, 1), &out), GA2D_ERR_NOT_INVERTIBLE);
+            CHECK(memcmp(&out, &sentinel, sizeof out) == 0);
+        }
+    }
     {
         ga2d_mv out = sentinel;
         CHECK_RESULT(ga2d_mv_inverse(ga2d_mv_make((ga2d_real)NAN, 0, 0, 0), &out), GA2D_ERR_NOT_FINITE);
@@ -240,7 +258,7 @@ static void non_invertible_is_reported(void)
 static void vector_length_and_normalize(void)
 {
     ga2d_vec u;
-    ga2d_real big = (ga2d_real)(FLT_MAX / 2); /* in float, big*big overflows */
+    ga2d_real big = (ga2d_real)(REAL_MAX / 2); /* big*big overflows */
     CHECK(ga2d_vec_normalize(ga2d_vec_make(0, 0), &u) == 0 && u.x == 0 && u.y == 0);
     /* a subnormal length: 1/len would overflow */
     CHECK(ga2d_vec_normalize(ga2d_vec_make((ga2d_real)(REAL_MIN / 16), 0), &u) == 0 && u.x == 0 && u.y == 0);
@@ -257,7 +275,7 @@ static void vector_length_and_normalize(void)
     CHECK_NEAR(u.x, sqrt(0.5), 4 * REAL_EPS);
     /* a tiny vector whose square underflows still has its length */
     {
-        double tiny = sqrt(REAL_MIN) / 8; /* tiny^2 is below the smallest normal */
+        double tiny = sqrt(REAL_MIN) / 1024; /* tiny^2 is deep in the subnormals */
         CHECK_NEAR(ga2d_vec_length(ga2d_vec_make((ga2d_real)(3 * tiny), (ga2d_real)(4 * tiny))), 5 * tiny, 4 * REAL_EPS * 5 * tiny);
     }
     CHECK_NEAR(ga2d_vec_length(ga2d_vec_make(-3, -4)), 5, 4 * REAL_EPS * 5);
@@ -402,6 +420,15 @@ static void rotor_normalize_nlerp_between(void)
     /* exactly opposite rotors: no shorter arc, documented to turn CCW */
     half = ga2d_rotor_nlerp(ga2d_rotor_identity(), ga2d_rotor_from_angle((ga2d_real)3.14159265358979323846), 0.5);
     CHECK_NEAR(ga2d_rotor_angle(half), 3.14159265358979323846 / 2, 8 * REAL_EPS);
+    /* b = -a exactly (negation is exact), so the chord's midpoint is 0 */
+    {
+        ga2d_rotor a = ga2d_rotor_from_angle((ga2d_real)0.5), b;
+        b.c = -a.c;
+        b.s = -a.s;
+        half = ga2d_rotor_nlerp(a, b, 0.5);
+        CHECK_NEAR(half.c * half.c + half.s * half.s, 1, 4 * REAL_EPS);
+        CHECK_NEAR(ga2d_rotor_angle(half), 0.5 + 3.14159265358979323846 / 2, 16 * REAL_EPS);
+    }
 
     /* rotor_between: the rotor turning a's direction onto b's */
     for (i = 0; i < 500; ++i) {
