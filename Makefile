@@ -3,6 +3,8 @@
 #   make demo     build and run the demo (the README's main job)
 #   make test     the test suite in every configuration (the README's test command)
 #   make clean
+# Test configurations are built in parallel; the README quick start is built
+# from README.md itself.
 
 CC      ?= cc
 BUILD   := build
@@ -56,12 +58,23 @@ $(BUILD)/tests/%: $(TEST_DEP)
 	@mkdir -p $(dir $@)
 	$(CFG_$*) $(OPT) $(WARN) $(INC) $(TEST_SRC) -x none -o $@ $(LIBS)
 
-test-build: $(TEST_BINS)
+# The README's quick start, cut out of README.md, must build warning-free as
+# C99 and C++11 and run.
+$(BUILD)/readme/quickstart.c: README.md
+	@mkdir -p $(dir $@)
+	awk '/^## Quick start/{q=1} q&&/^```c$$/{f=1;next} f&&/^```$$/{exit} f' README.md > $@
+	@test -s $@ || { echo "README.md has no quick start block"; exit 1; }
+$(BUILD)/readme/quickstart: $(BUILD)/readme/quickstart.c $(HEADER)
+	gcc -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
+	g++ -std=c++11 -x c++ $(OPT) $(WARN) $(INC) $< -x none -o $@-cxx $(LIBS)
+
+test-build: $(TEST_BINS) $(BUILD)/readme/quickstart
 
 # Runs every configuration (built in parallel), prints each one's summary,
 # and ends with the total line "N passed, N failed".
 test:
 	@$(MAKE) --no-print-directory -j$(NPROC) test-build
+	@echo "README quick start:" && ./$(BUILD)/readme/quickstart && ./$(BUILD)/readme/quickstart-cxx >/dev/null
 	@sh tests/run_all.sh $(TEST_BINS)
 
 clean:
