@@ -1,4 +1,4 @@
-/* ga2d_physics.h - v0.1.0 - 2D rigid-body physics of convex polygons,
+/* ga2d_physics.h - v0.2.0 - 2D rigid-body physics of convex polygons,
    written in the geometric algebra of the plane.   MIT / public domain.
 
    ==========================================================================
@@ -12,7 +12,10 @@
      - convex polygons: validated construction, convex hull of a point
        cloud, boxes and regular polygons, transforms and bounding boxes;
      - exact mass properties of a polygon (mass, centre of mass, moment of
-       inertia), precise even far from the origin.
+       inertia), precise even far from the origin;
+     - a world of static, kinematic and dynamic bodies moving under
+       gravity, forces, torques, impulses and a user force field, with a
+       choice of integrator and rotor update (contacts come next).
 
    ==========================================================================
    HOW TO USE IT
@@ -40,7 +43,9 @@
      GA2D_MAX_POLYGON_VERTICES the most vertices a polygon may have (8).
 
    Build flags: the library uses no global state.  Do not build it with
-   -ffast-math: NaN/Inf checks on user input rely on IEEE semantics.
+   -ffast-math: NaN/Inf checks on user input rely on IEEE semantics.  Build
+   with -ffp-contract=off (as the Makefile does) for results that do not
+   depend on the compiler's use of fused multiply-add.
 
    ==========================================================================
    THE ALGEBRA, AND ITS CONVENTIONS
@@ -92,6 +97,56 @@
    keeps its precision.
 
    ==========================================================================
+   THE WORLD AND ITS BODIES
+   ==========================================================================
+     ga2d_world_def wd = ga2d_default_world_def();   // gravity (0,-10), 4 substeps
+     ga2d_world *world = ga2d_world_create(&wd);     // NULL on failure
+
+     ga2d_body_def bd = ga2d_default_body_def();     // static 1 m box
+     bd.type = GA2D_BODY_DYNAMIC;
+     bd.position = ga2d_vec_make(0, 4);
+     bd.polygon = ga2d_polygon_box(0.5f, 0.25f);
+     ga2d_body_id box = ga2d_body_create(world, &bd); // null id on failure
+
+     for (int i = 0; i < 60; ++i) ga2d_world_step(world, 1.0f / 60);
+     ga2d_vec p = ga2d_body_position(world, box);    // the body origin
+     ga2d_world_destroy(world);
+
+   A body's state lives at its centre of mass: ga2d_body_center and
+   ga2d_body_velocity are the centre's; ga2d_body_position is the origin its
+   polygon's vertices are given in.  Orientation is a rotor; angular
+   velocity is the bivector Omega = w e12 (ga2d_body_angular_velocity
+   returns w).  A body point at offset r from the centre moves with
+   v + r Omega; a force F at r gives the torque r ^ F.
+
+   Ids carry a generation: a destroyed body's id is refused everywhere
+   (GA2D_ERR_STALE_ID), also once its slot is reused.  The world has no
+   global state; its memory comes from ga2d_world_def.allocator.
+
+   Integrators (ga2d_world_def.integrator), per substep h = dt / substeps:
+     GA2D_INTEGRATOR_SYMPLECTIC_EULER  v += h a(x); x += h v.  1st order,
+         symplectic (energy error bounded, no drift), 1 force evaluation.
+     GA2D_INTEGRATOR_VERLET  kick h/2, drift h, kick h/2.  2nd order,
+         symplectic, exact under constant forces; forces must depend on
+         position only; 1 evaluation (the end of a step starts the next).
+     GA2D_INTEGRATOR_RK4  classic Runge-Kutta.  4th order, 4 evaluations,
+         not symplectic (slow energy drift).
+   Rotor update (ga2d_world_def.rotation_update): GA2D_ROTATION_EXACT turns
+   by q <- q exp(w h e12) (its own series: no libm in the step);
+   GA2D_ROTATION_LINEAR by normalize(q (1 + w h e12)), cheaper, lagging by
+   w h - atan(w h) per substep.  Bodies that do not turn skip it.
+
+   A force field is a callback (ga2d_world_def.force_callback): the step
+   calls it at every state its integrator needs; inside, the getters read
+   that state and ga2d_body_apply_force adds to it:
+
+     static void spring(ga2d_world *w, void *ctx) {
+         ga2d_body_id id = *(ga2d_body_id *)ctx;
+         ga2d_vec x = ga2d_body_center(w, id);
+         ga2d_body_apply_force_to_center(w, id, ga2d_vec_scale(x, -40.0f));
+     }
+
+   ==========================================================================
    ERRORS
    ==========================================================================
    Functions that can fail return a ga2d_result (GA2D_OK = 0) and leave
@@ -102,6 +157,8 @@
    ==========================================================================
    VERSION HISTORY
    ==========================================================================
+   0.2.0  world and bodies; symplectic Euler, Verlet and RK4 integrators;
+          exact and first-order rotor updates; force callback; counters.
    0.1.0  algebra, polygons, hull, exact mass properties.
 
    The license is at the end of this file.
@@ -113,7 +170,7 @@
 #include <stdint.h>
 
 #define GA2D_VERSION_MAJOR 0
-#define GA2D_VERSION_MINOR 1
+#define GA2D_VERSION_MINOR 2
 #define GA2D_VERSION_PATCH 0
 
 #ifndef GA2D_MAX_POLYGON_VERTICES
@@ -161,7 +218,8 @@ typedef enum ga2d_result {
     GA2D_ERR_NOT_CONVEX,        /* not strictly convex (or self-crossing)   */
     GA2D_ERR_NOT_INVERTIBLE,    /* a multivector with no inverse            */
     GA2D_ERR_OUT_OF_MEMORY,
-    GA2D_ERR_STALE_ID,
+    GA2D_ERR_STALE_ID,          /* a destroyed, reused or forged body id  */
+    GA2D_ERR_LOCKED,            /* the world is stepping (force callback) */
     GA2D_RESULT_COUNT
 } ga2d_result;
 
@@ -302,6 +360,174 @@ GA2D_API ga2d_result ga2d_polygon_mass_checked(const ga2d_polygon *p, ga2d_real 
 #define GA2D_MAX_COORDINATE 1e8f
 #endif
 
+/* ------------------------------------------------------- world and bodies */
+typedef struct ga2d_world ga2d_world;
+
+/* A body handle: slot index + 1 and the slot's generation.  The zero value
+   is the null id.  A destroyed body's id stays invalid after its slot is
+   reused (the generation moves on), and a forged id is refused. */
+typedef struct ga2d_body_id { uint32_t index1; uint32_t generation; } ga2d_body_id;
+GA2D_API ga2d_body_id ga2d_body_id_null(void);
+GA2D_API int ga2d_body_id_is_null(ga2d_body_id id);
+GA2D_API int ga2d_body_id_equal(ga2d_body_id a, ga2d_body_id b);
+
+/* Memory for a world.  NULL functions mean malloc/free.  free gets the size
+   that was asked for, so an arena or a counting allocator needs no header. */
+typedef struct ga2d_allocator {
+    void *(*alloc)(size_t size, void *ctx);
+    void (*free)(void *ptr, size_t size, void *ctx);
+    void *ctx;
+} ga2d_allocator;
+
+typedef enum ga2d_integrator {
+    GA2D_INTEGRATOR_SYMPLECTIC_EULER = 0, /* v += h a(x); x += h v: 1st order,
+                                             symplectic, 1 evaluation */
+    GA2D_INTEGRATOR_VERLET,               /* velocity Verlet: 2nd order,
+                                             symplectic, exact for constant a;
+                                             forces must depend on position
+                                             only; 1 evaluation (reused) */
+    GA2D_INTEGRATOR_RK4,                  /* classic Runge-Kutta: 4th order,
+                                             not symplectic, 4 evaluations */
+    GA2D_INTEGRATOR_COUNT
+} ga2d_integrator;
+
+typedef enum ga2d_rotation_update {
+    GA2D_ROTATION_EXACT = 0, /* q <- q exp(w h e12): exact for constant w */
+    GA2D_ROTATION_LINEAR,    /* q <- normalize(q (1 + w h e12)): a sqrt
+                                instead of a series; lags atan(wh) vs wh */
+    GA2D_ROTATION_COUNT
+} ga2d_rotation_update;
+
+typedef enum ga2d_body_type {
+    GA2D_BODY_STATIC = 0, /* never moves; costs nothing per step */
+    GA2D_BODY_KINEMATIC,  /* moves with its velocity; no forces */
+    GA2D_BODY_DYNAMIC,    /* moves under forces, torques and impulses */
+    GA2D_BODY_TYPE_COUNT
+} ga2d_body_type;
+
+/* A force field, evaluated by the step at every state its integrator needs
+   (once per substep for symplectic Euler and Verlet, four times for RK4).
+   Inside it, the getters (ga2d_body_center, _velocity, ...) return the
+   state being evaluated and ga2d_world_time the time of that state;
+   ga2d_body_apply_force / _apply_torque add to the field's force.  Any
+   other change to the world is refused with GA2D_ERR_LOCKED. */
+typedef void ga2d_force_fn(ga2d_world *world, void *context);
+
+typedef struct ga2d_world_def {
+    ga2d_vec gravity;                     /* m/s^2; default (0, -10) */
+    int substeps;                         /* per step; 0 means 4 */
+    ga2d_integrator integrator;           /* default symplectic Euler */
+    ga2d_rotation_update rotation_update; /* default exact */
+    ga2d_real length_units_per_meter;     /* 0 means 1 */
+    ga2d_allocator allocator;             /* zero means malloc/free */
+    ga2d_force_fn *force_callback;        /* NULL: no force field */
+    void *force_context;
+} ga2d_world_def;
+
+typedef struct ga2d_body_def {
+    ga2d_body_type type;        /* default static */
+    ga2d_vec position;          /* the body origin, in world coordinates */
+    ga2d_rotor rotor;           /* orientation; zero means identity */
+    ga2d_vec velocity;          /* of the centre of mass, m/s */
+    ga2d_real angular_velocity; /* w of Omega = w e12, rad/s */
+    ga2d_polygon polygon;       /* in the body frame; default a 1 m box */
+    ga2d_real density;          /* kg/m^2; default 1 */
+    ga2d_real friction;         /* default 0.6 */
+    ga2d_real restitution;      /* default 0 */
+    ga2d_real linear_damping;   /* 1/s; default 0 */
+    ga2d_real angular_damping;  /* 1/s; default 0 */
+    ga2d_real gravity_scale;    /* default 1 */
+    int fixed_rotation;         /* never rotates (infinite inertia) */
+    int is_awake;               /* default 1 */
+    void *user_data;
+} ga2d_body_def;
+
+/* What the last step did: for checking that a scene pays only for what it
+   uses, without timing anything. */
+typedef struct ga2d_world_counters {
+    int body_count;         /* live bodies of every type */
+    int moving_body_count;  /* kinematic + dynamic: the bodies a step visits */
+    int integrated_bodies;  /* body updates in the last step, all substeps */
+    int force_evaluations;  /* force callback calls in the last step */
+    int rotation_updates;   /* rotor updates in the last step */
+    long long step_count;   /* steps taken */
+} ga2d_world_counters;
+
+GA2D_API ga2d_world_def ga2d_default_world_def(void);
+/* Why a def would be refused: NOT_FINITE gravity, INVALID_ARGUMENT for a
+   bad enum, substeps outside [0, 1024], a negative length unit or half an
+   allocator. */
+GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *def);
+GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def); /* NULL on failure; def NULL = defaults */
+GA2D_API void ga2d_world_destroy(ga2d_world *w);
+/* Advances by dt seconds in substeps.  A dt that is not finite and > 0 is
+   refused (GA2D_ERR_INVALID_ARGUMENT) and nothing changes. */
+GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt);
+GA2D_API double ga2d_world_time(const ga2d_world *w);
+GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w);
+GA2D_API ga2d_vec ga2d_world_gravity(const ga2d_world *w);
+GA2D_API ga2d_result ga2d_world_set_gravity(ga2d_world *w, ga2d_vec g);
+GA2D_API ga2d_result ga2d_world_set_substeps(ga2d_world *w, int substeps);
+/* May allocate (RK4 keeps per-body scratch): OUT_OF_MEMORY leaves it as it was. */
+GA2D_API ga2d_result ga2d_world_set_integrator(ga2d_world *w, ga2d_integrator integrator);
+GA2D_API ga2d_result ga2d_world_set_rotation_update(ga2d_world *w, ga2d_rotation_update mode);
+GA2D_API ga2d_result ga2d_world_set_force_callback(ga2d_world *w, ga2d_force_fn *fn, void *context);
+
+GA2D_API ga2d_body_def ga2d_default_body_def(void);
+/* Why a def would be refused: NOT_FINITE anywhere, INVALID_ARGUMENT for a
+   bad type, a density <= 0 (dynamic bodies), a negative friction,
+   restitution or damping, a rotor too small to normalize; the polygon's
+   own error from ga2d_polygon_make; DEGENERATE for a mass or inertia
+   whose inverse overflows. */
+GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *def);
+/* The null id on failure (ga2d_body_def_validate says why; or out of
+   memory; or the world is locked). */
+GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def);
+GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id);
+GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id);
+
+/* Getters: for an invalid id they return zero (identity for rotors). */
+GA2D_API ga2d_body_type ga2d_body_get_type(const ga2d_world *w, ga2d_body_id id);
+GA2D_API ga2d_vec ga2d_body_position(const ga2d_world *w, ga2d_body_id id); /* origin */
+GA2D_API ga2d_rotor ga2d_body_rotor(const ga2d_world *w, ga2d_body_id id);
+GA2D_API ga2d_real ga2d_body_angle(const ga2d_world *w, ga2d_body_id id);
+GA2D_API ga2d_transform ga2d_body_transform(const ga2d_world *w, ga2d_body_id id);
+GA2D_API ga2d_vec ga2d_body_center(const ga2d_world *w, ga2d_body_id id); /* centre of mass, world */
+GA2D_API ga2d_vec ga2d_body_velocity(const ga2d_world *w, ga2d_body_id id); /* of the centre */
+GA2D_API ga2d_real ga2d_body_angular_velocity(const ga2d_world *w, ga2d_body_id id);
+/* velocity of the body point at world point p: v + (p - c) Omega */
+GA2D_API ga2d_vec ga2d_body_velocity_at(const ga2d_world *w, ga2d_body_id id, ga2d_vec p);
+GA2D_API ga2d_mass ga2d_body_mass_data(const ga2d_world *w, ga2d_body_id id); /* center in body frame */
+GA2D_API ga2d_real ga2d_body_kinetic_energy(const ga2d_world *w, ga2d_body_id id);
+GA2D_API const ga2d_polygon *ga2d_body_polygon(const ga2d_world *w, ga2d_body_id id);
+GA2D_API void *ga2d_body_user_data(const ga2d_world *w, ga2d_body_id id);
+
+/* Setters validate (STALE_ID, NOT_FINITE, INVALID_ARGUMENT, LOCKED) and
+   change nothing when they refuse.  A rotor must be nonzero and large
+   enough to normalize; a static body takes no velocity; a dynamic body
+   that cannot turn (fixed rotation, or inertia 0) takes no angular
+   velocity but 0.  Forces, torques and impulses whose sums would overflow
+   are refused with NOT_FINITE. */
+GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2d_vec position, ga2d_rotor q);
+GA2D_API ga2d_result ga2d_body_set_velocity(ga2d_world *w, ga2d_body_id id, ga2d_vec v);
+GA2D_API ga2d_result ga2d_body_set_angular_velocity(ga2d_world *w, ga2d_body_id id, ga2d_real omega);
+/* Replace the mass properties from the polygon (mass > 0, inertia > 0 or
+   0 for no rotation, centre in the body frame).  The origin stays put;
+   the centre's velocity follows the rigid motion. */
+GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2d_mass m);
+GA2D_API ga2d_result ga2d_body_set_gravity_scale(ga2d_world *w, ga2d_body_id id, ga2d_real scale);
+GA2D_API ga2d_result ga2d_body_set_damping(ga2d_world *w, ga2d_body_id id, ga2d_real linear, ga2d_real angular);
+GA2D_API ga2d_result ga2d_body_set_user_data(ga2d_world *w, ga2d_body_id id, void *user_data);
+
+/* Forces and torques act during the next step, then are cleared.  Impulses
+   act at once: dv = P/m, dOmega = I^-1 (r ^ P).  On static and kinematic
+   bodies they do nothing (and return GA2D_OK). */
+GA2D_API ga2d_result ga2d_body_apply_force(ga2d_world *w, ga2d_body_id id, ga2d_vec force, ga2d_vec world_point);
+GA2D_API ga2d_result ga2d_body_apply_force_to_center(ga2d_world *w, ga2d_body_id id, ga2d_vec force);
+GA2D_API ga2d_result ga2d_body_apply_torque(ga2d_world *w, ga2d_body_id id, ga2d_real torque_e12);
+GA2D_API ga2d_result ga2d_body_apply_impulse(ga2d_world *w, ga2d_body_id id, ga2d_vec impulse, ga2d_vec world_point);
+GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id id, ga2d_real impulse_e12);
+
 #ifdef __cplusplus
 }
 #endif
@@ -315,6 +541,7 @@ GA2D_API ga2d_result ga2d_polygon_mass_checked(const ga2d_polygon *p, ga2d_real 
 
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifndef GA2D_ASSERT
@@ -364,6 +591,7 @@ GA2D_API const char *ga2d_result_string(ga2d_result r)
     case GA2D_ERR_NOT_INVERTIBLE: return "multivector is not invertible";
     case GA2D_ERR_OUT_OF_MEMORY: return "out of memory";
     case GA2D_ERR_STALE_ID: return "id is stale or forged";
+    case GA2D_ERR_LOCKED: return "the world is locked while it steps";
     case GA2D_RESULT_COUNT: break;
     }
     return "unknown result";
@@ -844,6 +1072,939 @@ GA2D_API ga2d_mass ga2d_polygon_mass(const ga2d_polygon *p, ga2d_real density)
     memset(&m, 0, sizeof m);
     if (ga2d_polygon_mass_checked(p, density, &m) != GA2D_OK) memset(&m, 0, sizeof m);
     return m;
+}
+
+/* ======================================================== world and bodies */
+/* A body slot.  State is kept at the centre of mass (position `center`,
+   orientation `q`, velocity `v`, angular velocity `w` of Omega = w e12);
+   the origin that users see is center - local_center q. */
+typedef struct ga2d__body {
+    ga2d_vec center;
+    ga2d_rotor q;
+    ga2d_vec v;
+    ga2d_real w;
+    ga2d_vec force;              /* the user's, cleared after each step */
+    ga2d_real torque;
+    ga2d_vec field_force;        /* the force callback's, per evaluation */
+    ga2d_real field_torque;
+    ga2d_vec field_accel;        /* Verlet: the field's acceleration at the */
+    ga2d_real field_alpha;       /* current state, reused by the next step */
+    int field_valid;
+    ga2d_real mass, inv_mass, inertia, inv_inertia;
+    ga2d_vec local_center;
+    ga2d_real friction, restitution, linear_damping, angular_damping, gravity_scale;
+    ga2d_polygon polygon;
+    void *user_data;
+    uint32_t generation;
+    int type;                    /* ga2d_body_type; -1 for a free slot */
+    int next_free;
+    int move_index;              /* index in world->moving, or -1 */
+    int fixed_rotation;
+    int awake;
+} ga2d__body;
+
+/* RK4's per-body scratch for one substep: the start state, the derivative
+   of the last stage and the weighted sum of the stages. */
+typedef struct ga2d__rk4 {
+    ga2d_vec x0, v0, kx, kv, sx, sv;
+    ga2d_rotor q0;
+    ga2d_real w0, kth, kw, sth, sw;
+} ga2d__rk4;
+
+struct ga2d_world {
+    ga2d_world_def def;          /* as resolved at creation, kept current */
+    ga2d__body *bodies;
+    int body_capacity, body_used, body_count, free_head;
+    int *moving;                 /* slots of kinematic and dynamic bodies */
+    int moving_count, moving_capacity;
+    ga2d__rk4 *rk4;              /* only while the integrator is RK4 */
+    int rk4_capacity;
+    double time, eval_time;
+    int locked;                  /* inside ga2d_world_step */
+    int in_callback;             /* inside the force callback */
+    ga2d_world_counters counters;
+};
+
+/* The most slots a world holds: keeps every byte count far from overflow. */
+#define GA2D__MAX_BODIES (1 << 26)
+
+static void *ga2d__alloc(const ga2d_allocator *a, size_t size)
+{
+    return a->alloc ? a->alloc(size, a->ctx) : malloc(size);
+}
+
+static void ga2d__free(const ga2d_allocator *a, void *p, size_t size)
+{
+    if (!p) return;
+    if (a->free) a->free(p, size, a->ctx);
+    else free(p);
+}
+
+/* Grows *arr to hold `need` elements.  The new block is allocated before
+   the old one is released, so a failure (returns 0) changes nothing. */
+static int ga2d__grow(const ga2d_allocator *a, void **arr, int *cap, int need, size_t elem)
+{
+    int newcap = *cap ? *cap : 16;
+    void *p;
+    if (need <= *cap) return 1;
+    if (need > GA2D__MAX_BODIES) return 0;
+    while (newcap < need) newcap *= 2;
+    p = ga2d__alloc(a, (size_t)newcap * elem);
+    if (!p) return 0;
+    if (*arr) {
+        memcpy(p, *arr, (size_t)*cap * elem);
+        ga2d__free(a, *arr, (size_t)*cap * elem);
+    }
+    *arr = p;
+    *cap = newcap;
+    return 1;
+}
+
+static int ga2d__finite_vec(ga2d_vec v) { return ga2d__finite(v.x) && ga2d__finite(v.y); }
+
+GA2D_API ga2d_body_id ga2d_body_id_null(void) { ga2d_body_id id; id.index1 = 0; id.generation = 0; return id; }
+GA2D_API int ga2d_body_id_is_null(ga2d_body_id id) { return id.index1 == 0; }
+GA2D_API int ga2d_body_id_equal(ga2d_body_id a, ga2d_body_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+
+/* The live body an id names, or NULL: out-of-range, free and reused slots
+   are all refused by the index and generation check. */
+static ga2d__body *ga2d__lookup(const ga2d_world *w, ga2d_body_id id)
+{
+    ga2d__body *b;
+    if (!w || id.index1 == 0 || id.index1 > (uint32_t)w->body_used) return NULL;
+    b = &w->bodies[id.index1 - 1];
+    if (b->type < 0 || b->generation != id.generation) return NULL;
+    return b;
+}
+
+/* Refuses a change while the world is stepping. */
+static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__body **out)
+{
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    *out = ga2d__lookup(w, id);
+    return *out ? GA2D_OK : GA2D_ERR_STALE_ID;
+}
+
+/* ---------------------------------------------------------------- world */
+GA2D_API ga2d_world_def ga2d_default_world_def(void)
+{
+    ga2d_world_def d;
+    memset(&d, 0, sizeof d);
+    d.gravity = ga2d_vec_make(0, -10);
+    d.substeps = 4;
+    d.integrator = GA2D_INTEGRATOR_SYMPLECTIC_EULER;
+    d.rotation_update = GA2D_ROTATION_EXACT;
+    d.length_units_per_meter = 1;
+    return d;
+}
+
+GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *d)
+{
+    if (!d) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__finite_vec(d->gravity) || !ga2d__finite(d->length_units_per_meter)) return GA2D_ERR_NOT_FINITE;
+    if (d->substeps < 0 || d->substeps > 1024) return GA2D_ERR_INVALID_ARGUMENT;
+    if ((int)d->integrator < 0 || (int)d->integrator >= GA2D_INTEGRATOR_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
+    if ((int)d->rotation_update < 0 || (int)d->rotation_update >= GA2D_ROTATION_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
+    if (d->length_units_per_meter < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    if ((d->allocator.alloc == NULL) != (d->allocator.free == NULL)) return GA2D_ERR_INVALID_ARGUMENT;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
+{
+    ga2d_world_def d = def ? *def : ga2d_default_world_def();
+    ga2d_world *w;
+    if (ga2d_world_def_validate(&d) != GA2D_OK) return NULL;
+    if (d.substeps == 0) d.substeps = 4;
+    if (d.length_units_per_meter == 0) d.length_units_per_meter = 1;
+    w = (ga2d_world *)ga2d__alloc(&d.allocator, sizeof *w);
+    if (!w) return NULL;
+    memset(w, 0, sizeof *w);
+    w->def = d;
+    w->free_head = -1;
+    return w;
+}
+
+GA2D_API void ga2d_world_destroy(ga2d_world *w)
+{
+    ga2d_allocator a;
+    if (!w) return;
+    a = w->def.allocator;
+    ga2d__free(&a, w->bodies, (size_t)w->body_capacity * sizeof *w->bodies);
+    ga2d__free(&a, w->moving, (size_t)w->moving_capacity * sizeof *w->moving);
+    ga2d__free(&a, w->rk4, (size_t)w->rk4_capacity * sizeof *w->rk4);
+    ga2d__free(&a, w, sizeof *w);
+}
+
+GA2D_API double ga2d_world_time(const ga2d_world *w)
+{
+    if (!w) return 0;
+    return w->in_callback ? w->eval_time : w->time;
+}
+
+GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w)
+{
+    ga2d_world_counters c;
+    memset(&c, 0, sizeof c);
+    if (!w) return c;
+    c = w->counters;
+    c.body_count = w->body_count;
+    c.moving_body_count = w->moving_count;
+    return c;
+}
+
+GA2D_API ga2d_vec ga2d_world_gravity(const ga2d_world *w) { return w ? w->def.gravity : ga2d_vec_make(0, 0); }
+
+GA2D_API ga2d_result ga2d_world_set_gravity(ga2d_world *w, ga2d_vec g)
+{
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    if (!ga2d__finite_vec(g)) return GA2D_ERR_NOT_FINITE;
+    w->def.gravity = g;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_set_substeps(ga2d_world *w, int substeps)
+{
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    if (substeps < 1 || substeps > 1024) return GA2D_ERR_INVALID_ARGUMENT;
+    w->def.substeps = substeps;
+    return GA2D_OK;
+}
+
+/* Forget the force field's last evaluation: its forces and Verlet's cached
+   accelerations (so the next Verlet substep evaluates afresh). */
+static void ga2d__reset_field(ga2d_world *w)
+{
+    int k;
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->field_force = b->field_accel = ga2d_vec_make(0, 0);
+        b->field_torque = b->field_alpha = 0;
+        b->field_valid = 0;
+    }
+}
+
+GA2D_API ga2d_result ga2d_world_set_integrator(ga2d_world *w, ga2d_integrator integrator)
+{
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    if ((int)integrator < 0 || (int)integrator >= GA2D_INTEGRATOR_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
+    if (integrator == GA2D_INTEGRATOR_RK4 &&
+        !ga2d__grow(&w->def.allocator, (void **)&w->rk4, &w->rk4_capacity, w->moving_capacity, sizeof *w->rk4))
+        return GA2D_ERR_OUT_OF_MEMORY;
+    w->def.integrator = integrator;
+    ga2d__reset_field(w); /* other integrators moved bodies without it */
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_set_rotation_update(ga2d_world *w, ga2d_rotation_update mode)
+{
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    if ((int)mode < 0 || (int)mode >= GA2D_ROTATION_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
+    w->def.rotation_update = mode;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_set_force_callback(ga2d_world *w, ga2d_force_fn *fn, void *context)
+{
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    w->def.force_callback = fn;
+    w->def.force_context = context;
+    ga2d__reset_field(w);
+    return GA2D_OK;
+}
+
+/* ---------------------------------------------------------------- bodies */
+GA2D_API ga2d_body_def ga2d_default_body_def(void)
+{
+    ga2d_body_def d;
+    memset(&d, 0, sizeof d);
+    d.type = GA2D_BODY_STATIC;
+    d.rotor = ga2d_rotor_identity();
+    d.polygon = ga2d_polygon_box(GA2D__R(0.5), GA2D__R(0.5));
+    d.density = 1;
+    d.friction = GA2D__R(0.6);
+    d.gravity_scale = 1;
+    d.is_awake = 1;
+    return d;
+}
+
+GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *d)
+{
+    ga2d_polygon check;
+    ga2d_result r;
+    int count;
+    if (!d) return GA2D_ERR_INVALID_ARGUMENT;
+    if ((int)d->type < 0 || (int)d->type >= GA2D_BODY_TYPE_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!(d->rotor.c == 0 && d->rotor.s == 0) && ga2d__finite(d->rotor.c) && ga2d__finite(d->rotor.s) &&
+        ga2d_vec_normalize(ga2d_vec_make(d->rotor.c, d->rotor.s), NULL) == 0)
+        return GA2D_ERR_INVALID_ARGUMENT; /* nonzero, yet too small to give a direction */
+    if (!ga2d__finite_vec(d->position) || !ga2d__finite(d->rotor.c) || !ga2d__finite(d->rotor.s) ||
+        !ga2d__finite_vec(d->velocity) || !ga2d__finite(d->angular_velocity) || !ga2d__finite(d->density) ||
+        !ga2d__finite(d->friction) || !ga2d__finite(d->restitution) || !ga2d__finite(d->linear_damping) ||
+        !ga2d__finite(d->angular_damping) || !ga2d__finite(d->gravity_scale))
+        return GA2D_ERR_NOT_FINITE;
+    if (d->type == GA2D_BODY_DYNAMIC && !(d->density > 0)) return GA2D_ERR_INVALID_ARGUMENT;
+    if (d->density < 0 || d->friction < 0 || d->restitution < 0 || d->linear_damping < 0 || d->angular_damping < 0)
+        return GA2D_ERR_INVALID_ARGUMENT;
+    /* the polygon is validated again from its vertices: a hand-filled
+       struct gets the same checks as ga2d_polygon_make */
+    count = d->polygon.count;
+    if (count < 0 || count > GA2D_MAX_POLYGON_VERTICES) return count < 0 ? GA2D_ERR_INVALID_ARGUMENT : GA2D_ERR_TOO_MANY_POINTS;
+    r = ga2d_polygon_make(d->polygon.vertices, count, &check);
+    if (r != GA2D_OK) return r;
+    if (d->type == GA2D_BODY_DYNAMIC) {
+        ga2d_mass m;
+        r = ga2d_polygon_mass_checked(&check, d->density, &m);
+        if (r != GA2D_OK) return r;
+        /* the step divides by both: their inverses must be finite too */
+        if (!(m.mass > 0) || !(m.inertia > 0) || !ga2d__finite(1 / m.mass) || !ga2d__finite(1 / m.inertia))
+            return GA2D_ERR_DEGENERATE;
+    }
+    return GA2D_OK;
+}
+
+/* Adds slot i to the moving list (capacity ensured by the caller). */
+static void ga2d__moving_add(ga2d_world *w, int i)
+{
+    w->bodies[i].move_index = w->moving_count;
+    w->moving[w->moving_count++] = i;
+}
+
+static void ga2d__moving_remove(ga2d_world *w, int i)
+{
+    int k = w->bodies[i].move_index, last;
+    if (k < 0) return;
+    last = w->moving[--w->moving_count];
+    w->moving[k] = last;
+    w->bodies[last].move_index = k;
+    w->bodies[i].move_index = -1;
+}
+
+GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
+{
+    ga2d_body_id id = ga2d_body_id_null();
+    ga2d_polygon poly;
+    ga2d_mass m;
+    ga2d__body *b;
+    int slot, moves;
+    if (!w || w->locked || ga2d_body_def_validate(def) != GA2D_OK) return id;
+    moves = def->type != GA2D_BODY_STATIC;
+    /* every allocation first: a failure leaves the world as it was */
+    slot = w->free_head >= 0 ? w->free_head : w->body_used;
+    if (!ga2d__grow(&w->def.allocator, (void **)&w->bodies, &w->body_capacity, slot + 1, sizeof *w->bodies)) return id;
+    if (moves) {
+        if (!ga2d__grow(&w->def.allocator, (void **)&w->moving, &w->moving_capacity, w->moving_count + 1, sizeof *w->moving))
+            return id;
+        if (w->def.integrator == GA2D_INTEGRATOR_RK4 &&
+            !ga2d__grow(&w->def.allocator, (void **)&w->rk4, &w->rk4_capacity, w->moving_capacity, sizeof *w->rk4))
+            return id;
+    }
+    ga2d_polygon_make(def->polygon.vertices, def->polygon.count, &poly); /* validated above */
+    /* the centroid for every type; mass and inertia only move dynamic bodies */
+    ga2d_polygon_mass_checked(&poly, def->type == GA2D_BODY_DYNAMIC ? def->density : 1, &m);
+
+    if (slot == w->body_used) {
+        w->bodies[slot].generation = 0;
+        ++w->body_used;
+    } else {
+        w->free_head = w->bodies[slot].next_free;
+    }
+    b = &w->bodies[slot];
+    {
+        uint32_t generation = b->generation + 1;
+        memset(b, 0, sizeof *b);
+        b->generation = generation ? generation : 1; /* 0 is the null id's */
+    }
+    b->type = (int)def->type;
+    b->polygon = poly;
+    b->local_center = m.center;
+    b->q = (def->rotor.c == 0 && def->rotor.s == 0) ? ga2d_rotor_identity() : ga2d_rotor_normalize(def->rotor);
+    b->center = ga2d_vec_add(def->position, ga2d_rotate(b->q, m.center));
+    b->friction = def->friction;
+    b->restitution = def->restitution;
+    b->linear_damping = def->linear_damping;
+    b->angular_damping = def->angular_damping;
+    b->gravity_scale = def->gravity_scale;
+    b->fixed_rotation = def->fixed_rotation != 0;
+    b->awake = def->is_awake != 0;
+    b->user_data = def->user_data;
+    b->move_index = -1;
+    b->next_free = -1;
+    if (def->type == GA2D_BODY_DYNAMIC) {
+        b->mass = m.mass;
+        b->inv_mass = 1 / m.mass;
+        b->inertia = m.inertia;
+        b->inv_inertia = b->fixed_rotation ? 0 : 1 / m.inertia;
+    }
+    if (moves) {
+        b->v = def->velocity;
+        b->w = (b->fixed_rotation && def->type == GA2D_BODY_DYNAMIC) ? 0 : def->angular_velocity;
+        ga2d__moving_add(w, slot);
+    }
+    ++w->body_count;
+    id.index1 = (uint32_t)slot + 1;
+    id.generation = b->generation;
+    return id;
+}
+
+GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    int slot;
+    if (r != GA2D_OK) return r;
+    slot = (int)id.index1 - 1;
+    ga2d__moving_remove(w, slot);
+    b->type = -1;
+    b->generation = b->generation + 1 ? b->generation + 1 : 1;
+    b->next_free = w->free_head;
+    w->free_head = slot;
+    --w->body_count;
+    return GA2D_OK;
+}
+
+GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id) { return ga2d__lookup(w, id) != NULL; }
+
+/* ---------------------------------------------------------------- getters */
+GA2D_API ga2d_body_type ga2d_body_get_type(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    return b ? (ga2d_body_type)b->type : GA2D_BODY_STATIC;
+}
+
+GA2D_API ga2d_vec ga2d_body_position(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    return b ? ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)) : ga2d_vec_make(0, 0);
+}
+
+GA2D_API ga2d_rotor ga2d_body_rotor(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    return b ? b->q : ga2d_rotor_identity();
+}
+
+GA2D_API ga2d_real ga2d_body_angle(const ga2d_world *w, ga2d_body_id id) { return ga2d_rotor_angle(ga2d_body_rotor(w, id)); }
+
+GA2D_API ga2d_transform ga2d_body_transform(const ga2d_world *w, ga2d_body_id id)
+{
+    return ga2d_transform_make(ga2d_body_position(w, id), ga2d_body_rotor(w, id));
+}
+
+GA2D_API ga2d_vec ga2d_body_center(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    return b ? b->center : ga2d_vec_make(0, 0);
+}
+
+GA2D_API ga2d_vec ga2d_body_velocity(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    return b ? b->v : ga2d_vec_make(0, 0);
+}
+
+GA2D_API ga2d_real ga2d_body_angular_velocity(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    return b ? b->w : 0;
+}
+
+/* v + r Omega with r = p - c: r (w e12) = w perp(r) */
+GA2D_API ga2d_vec ga2d_body_velocity_at(const ga2d_world *w, ga2d_body_id id, ga2d_vec p)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    if (!b) return ga2d_vec_make(0, 0);
+    return ga2d_vec_add(b->v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(p, b->center)), b->w));
+}
+
+GA2D_API ga2d_mass ga2d_body_mass_data(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    ga2d_mass m;
+    memset(&m, 0, sizeof m);
+    if (!b) return m;
+    m.mass = b->mass;
+    m.center = b->local_center;
+    m.inertia = b->inertia;
+    return m;
+}
+
+GA2D_API ga2d_real ga2d_body_kinetic_energy(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    if (!b || b->type != GA2D_BODY_DYNAMIC) return 0;
+    return (b->mass * ga2d_dot(b->v, b->v) + (b->inv_inertia > 0 ? b->inertia * b->w * b->w : 0)) / 2;
+}
+
+GA2D_API const ga2d_polygon *ga2d_body_polygon(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    return b ? &b->polygon : NULL;
+}
+
+GA2D_API void *ga2d_body_user_data(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    return b ? b->user_data : NULL;
+}
+
+/* ---------------------------------------------------------------- setters */
+GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2d_vec position, ga2d_rotor q)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite_vec(position) || !ga2d__finite(q.c) || !ga2d__finite(q.s)) return GA2D_ERR_NOT_FINITE;
+    {
+        ga2d_vec u;
+        /* zero, or too small to normalize (subnormal): no direction */
+        if (ga2d_vec_normalize(ga2d_vec_make(q.c, q.s), &u) == 0) return GA2D_ERR_INVALID_ARGUMENT;
+        b->q = ga2d__rotor(u.x, u.y);
+    }
+    b->center = ga2d_vec_add(position, ga2d_rotate(b->q, b->local_center));
+    b->field_valid = 0;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_set_velocity(ga2d_world *w, ga2d_body_id id, ga2d_vec v)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite_vec(v)) return GA2D_ERR_NOT_FINITE;
+    if (b->type == GA2D_BODY_STATIC) return GA2D_ERR_INVALID_ARGUMENT; /* a static body cannot move */
+    b->v = v;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_set_angular_velocity(ga2d_world *w, ga2d_body_id id, ga2d_real omega)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(omega)) return GA2D_ERR_NOT_FINITE;
+    if (b->type == GA2D_BODY_STATIC) return GA2D_ERR_INVALID_ARGUMENT;
+    /* fixed rotation, or inertia 0 from set_mass_data: it cannot turn */
+    if (b->type == GA2D_BODY_DYNAMIC && b->inv_inertia == 0 && omega != 0) return GA2D_ERR_INVALID_ARGUMENT;
+    b->w = omega;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2d_mass m)
+{
+    ga2d__body *b;
+    ga2d_vec old_center;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(m.mass) || !ga2d__finite(m.inertia) || !ga2d__finite_vec(m.center)) return GA2D_ERR_NOT_FINITE;
+    if (b->type != GA2D_BODY_DYNAMIC || !(m.mass > 0) || m.inertia < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__finite(1 / m.mass) || (m.inertia > 0 && !ga2d__finite(1 / m.inertia))) return GA2D_ERR_INVALID_ARGUMENT;
+    old_center = b->center;
+    b->center = ga2d_vec_add(ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)), ga2d_rotate(b->q, m.center));
+    /* the new centre moves with the rigid motion: v + (c' - c) Omega */
+    b->v = ga2d_vec_add(b->v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(b->center, old_center)), b->w));
+    b->local_center = m.center;
+    b->mass = m.mass;
+    b->inv_mass = 1 / m.mass;
+    b->inertia = m.inertia;
+    b->inv_inertia = (b->fixed_rotation || m.inertia == 0) ? 0 : 1 / m.inertia;
+    if (b->inv_inertia == 0) b->w = 0;
+    b->field_valid = 0;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_set_gravity_scale(ga2d_world *w, ga2d_body_id id, ga2d_real scale)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(scale)) return GA2D_ERR_NOT_FINITE;
+    b->gravity_scale = scale;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_set_damping(ga2d_world *w, ga2d_body_id id, ga2d_real linear, ga2d_real angular)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(linear) || !ga2d__finite(angular)) return GA2D_ERR_NOT_FINITE;
+    if (linear < 0 || angular < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    b->linear_damping = linear;
+    b->angular_damping = angular;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_set_user_data(ga2d_world *w, ga2d_body_id id, void *user_data)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    b->user_data = user_data;
+    return GA2D_OK;
+}
+
+/* -------------------------------------------------- forces and impulses */
+/* Forces are allowed inside the force callback (they go to the field's
+   accumulator there); everything else needs an unlocked world. */
+static ga2d_result ga2d__force_target(ga2d_world *w, ga2d_body_id id, ga2d__body **out)
+{
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked && !w->in_callback) return GA2D_ERR_LOCKED;
+    *out = ga2d__lookup(w, id);
+    return *out ? GA2D_OK : GA2D_ERR_STALE_ID;
+}
+
+GA2D_API ga2d_result ga2d_body_apply_force(ga2d_world *w, ga2d_body_id id, ga2d_vec force, ga2d_vec point)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__force_target(w, id, &b);
+    ga2d_real tau;
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite_vec(force) || !ga2d__finite_vec(point)) return GA2D_ERR_NOT_FINITE;
+    if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
+    tau = ga2d_wedge(ga2d_vec_sub(point, b->center), force); /* r ^ F */
+    {
+        ga2d_vec *f = w->in_callback ? &b->field_force : &b->force;
+        ga2d_real *t = w->in_callback ? &b->field_torque : &b->torque;
+        ga2d_vec nf = ga2d_vec_add(*f, force);
+        ga2d_real nt = *t + tau;
+        /* finite inputs can still overflow the sums: refuse, keep the old */
+        if (!ga2d__finite_vec(nf) || !ga2d__finite(nt)) return GA2D_ERR_NOT_FINITE;
+        *f = nf;
+        *t = nt;
+    }
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_apply_force_to_center(ga2d_world *w, ga2d_body_id id, ga2d_vec force)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__force_target(w, id, &b);
+    if (r != GA2D_OK) return r;
+    return ga2d_body_apply_force(w, id, force, b->center);
+}
+
+GA2D_API ga2d_result ga2d_body_apply_torque(ga2d_world *w, ga2d_body_id id, ga2d_real torque)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__force_target(w, id, &b);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(torque)) return GA2D_ERR_NOT_FINITE;
+    if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
+    {
+        ga2d_real *t = w->in_callback ? &b->field_torque : &b->torque;
+        if (!ga2d__finite(*t + torque)) return GA2D_ERR_NOT_FINITE;
+        *t += torque;
+    }
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_apply_impulse(ga2d_world *w, ga2d_body_id id, ga2d_vec impulse, ga2d_vec point)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite_vec(impulse) || !ga2d__finite_vec(point)) return GA2D_ERR_NOT_FINITE;
+    if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
+    {
+        ga2d_vec v = ga2d_vec_add(b->v, ga2d_vec_scale(impulse, b->inv_mass));
+        ga2d_real om = b->w + b->inv_inertia * ga2d_wedge(ga2d_vec_sub(point, b->center), impulse); /* I^-1 (r ^ P) */
+        if (!ga2d__finite_vec(v) || !ga2d__finite(om)) return GA2D_ERR_NOT_FINITE;
+        b->v = v;
+        b->w = om;
+    }
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id id, ga2d_real impulse)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(impulse)) return GA2D_ERR_NOT_FINITE;
+    if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
+    if (!ga2d__finite(b->w + b->inv_inertia * impulse)) return GA2D_ERR_NOT_FINITE;
+    b->w += b->inv_inertia * impulse;
+    return GA2D_OK;
+}
+
+/* ============================================================ world step */
+/* exp(a e12) = cos a + sin a e12, without libm so that a step gives the
+   same bits on every platform.  |a| <= pi/4 (the usual turn per substep)
+   goes straight to the series; larger a is first reduced by k quarter
+   turns (Cody-Waite: pi/2 in two parts), and e12^k is exact:
+   (c, s) -> (-s, c).  The series (Horner, reciprocal factorials) stop where
+   the next term at pi/4 is below half an ulp: r^9 / r^10 in float,
+   r^17 / r^18 in double. */
+static ga2d_rotor ga2d__exp_e12(ga2d_real a)
+{
+#ifdef GA2D_DOUBLE
+    const ga2d_real pio2_hi = 1.5707963267341256, pio2_lo = 6.077100506506192e-11; /* hi: 33 bits */
+#else
+    const ga2d_real pio2_hi = 1.5707963705062866f, pio2_lo = -4.371139000186243e-08f; /* float pi/2 and the rest */
+#endif
+    ga2d_real r = a, r2, c, s, t;
+    long quarter = 0;
+    if (!(GA2D__FABS(a) <= GA2D__R(0.78539816339744831))) {
+        ga2d_real k;
+        if (!ga2d__finite(a)) return ga2d__rotor(a - a, a - a); /* NaN: the step reports it */
+        if (GA2D__FABS(a) > GA2D__R(1e6)) a = (ga2d_real)fmod((double)a, 6.283185307179586); /* exact */
+        k = (ga2d_real)floor((double)(a * GA2D__R(0.63661977236758134) + GA2D__R(0.5)));
+        r = (a - k * pio2_hi) - k * pio2_lo;
+        quarter = (long)k & 3;
+    }
+    r2 = r * r;
+#ifdef GA2D_DOUBLE
+    c = 1 + r2 * (-1.0 / 2 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800 +
+        r2 * (1.0 / 479001600 + r2 * (-1.0 / 87178291200.0 + r2 * (1.0 / 20922789888000.0))))))));
+    s = r * (1 + r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880 + r2 * (-1.0 / 39916800 +
+        r2 * (1.0 / 6227020800.0 + r2 * (-1.0 / 1307674368000.0 + r2 * (1.0 / 355687428096000.0)))))))));
+#else
+    c = 1 + r2 * (-1.0f / 2 + r2 * (1.0f / 24 + r2 * (-1.0f / 720 + r2 * (1.0f / 40320))));
+    s = r * (1 + r2 * (-1.0f / 6 + r2 * (1.0f / 120 + r2 * (-1.0f / 5040 + r2 * (1.0f / 362880)))));
+#endif
+    for (; quarter > 0; --quarter) { t = c; c = -s; s = t; }
+    return ga2d__rotor(c, s);
+}
+
+/* q turned by `angle`: exactly, q exp(angle e12) followed by one Newton
+   step toward |q| = 1 (r (3 - |r|^2)/2 takes a norm of 1 + d to 1 + O(d^2),
+   so rounding never accumulates); or to first order, q (1 + angle e12)
+   renormalized, which turns by atan(angle) instead of angle. */
+static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update mode)
+{
+    ga2d_rotor r;
+    ga2d_real k;
+    if (mode == GA2D_ROTATION_LINEAR) {
+        r = ga2d__rotor(q.c - angle * q.s, q.s + angle * q.c);
+        k = 1 / GA2D__SQRT(r.c * r.c + r.s * r.s);
+    } else {
+        r = ga2d_rotor_mul(q, ga2d__exp_e12(angle));
+        k = (3 - (r.c * r.c + r.s * r.s)) / 2;
+    }
+    return ga2d__rotor(r.c * k, r.s * k);
+}
+
+/* Runs the force callback at time t on the bodies' current state. */
+static void ga2d__eval_field(ga2d_world *w, double t)
+{
+    int k;
+    if (!w->def.force_callback) return;
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->field_force = ga2d_vec_make(0, 0);
+        b->field_torque = 0;
+    }
+    w->in_callback = 1;
+    w->eval_time = t;
+    w->def.force_callback(w, w->def.force_context);
+    w->in_callback = 0;
+    ++w->counters.force_evaluations;
+}
+
+/* a = g s + (F_user + F_field)/m and alpha = (tau_user + tau_field)/I */
+static void ga2d__acceleration(const ga2d_world *w, const ga2d__body *b, ga2d_vec *a, ga2d_real *alpha)
+{
+    ga2d_vec f = ga2d_vec_add(b->force, b->field_force);
+    *a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(f, b->inv_mass));
+    *alpha = (b->torque + b->field_torque) * b->inv_inertia;
+}
+
+/* Damping as the implicit factor 1/(1 + c h): stable for any c h. */
+static void ga2d__damp(ga2d__body *b, ga2d_real h)
+{
+    if (b->linear_damping > 0) b->v = ga2d_vec_scale(b->v, 1 / (1 + h * b->linear_damping));
+    if (b->angular_damping > 0) b->w *= 1 / (1 + h * b->angular_damping);
+}
+
+/* Position update x += h v, q <- q exp(w h e12).  A body that does not
+   turn (fixed rotation, or w = 0) skips the rotor altogether. */
+static void ga2d__drift(ga2d_world *w, ga2d__body *b, ga2d_real h)
+{
+    b->center = ga2d_vec_add(b->center, ga2d_vec_scale(b->v, h));
+    if (b->w != 0) {
+        b->q = ga2d__turn(b->q, b->w * h, w->def.rotation_update);
+        ++w->counters.rotation_updates;
+    }
+    ++w->counters.integrated_bodies;
+}
+
+/* Symplectic Euler: velocities from the forces at the start, then
+   positions from the new velocities. */
+static void ga2d__substep_euler(ga2d_world *w, ga2d_real h, double t)
+{
+    int k;
+    ga2d__eval_field(w, t);
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (b->type == GA2D_BODY_DYNAMIC) {
+            ga2d_vec a;
+            ga2d_real alpha;
+            ga2d__acceleration(w, b, &a, &alpha);
+            b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, h));
+            b->w += alpha * h;
+            ga2d__damp(b, h);
+        }
+        ga2d__drift(w, b, h);
+    }
+}
+
+/* Caches the field's acceleration of every moving body (Verlet). */
+static void ga2d__cache_field(ga2d_world *w)
+{
+    int k;
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->field_accel = ga2d_vec_scale(b->field_force, b->inv_mass);
+        b->field_alpha = b->field_torque * b->inv_inertia;
+        b->field_valid = 1;
+    }
+}
+
+/* Half a kick with the cached field plus gravity and the user's forces. */
+static void ga2d__verlet_kick(ga2d_world *w, ga2d__body *b, ga2d_real half)
+{
+    ga2d_vec a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale),
+                              ga2d_vec_add(b->field_accel, ga2d_vec_scale(b->force, b->inv_mass)));
+    b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, half));
+    b->w += (b->field_alpha + b->torque * b->inv_inertia) * half;
+}
+
+/* Velocity Verlet: kick h/2, drift h, evaluate, kick h/2.  The field at
+   the end of one substep is the field at the start of the next, so each
+   substep costs one evaluation (plus one after anything moved a body). */
+static void ga2d__substep_verlet(ga2d_world *w, ga2d_real h, double t)
+{
+    int k, stale = 0;
+    ga2d_real half = h / 2;
+    if (w->def.force_callback) {
+        for (k = 0; k < w->moving_count && !stale; ++k) stale = !w->bodies[w->moving[k]].field_valid;
+        if (stale) {
+            ga2d__eval_field(w, t);
+            ga2d__cache_field(w);
+        }
+    }
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (b->type == GA2D_BODY_DYNAMIC) ga2d__verlet_kick(w, b, half);
+        ga2d__drift(w, b, h);
+    }
+    if (w->def.force_callback) {
+        ga2d__eval_field(w, t + (double)h);
+        ga2d__cache_field(w);
+    }
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (b->type != GA2D_BODY_DYNAMIC) continue;
+        ga2d__verlet_kick(w, b, half);
+        ga2d__damp(b, h);
+    }
+}
+
+/* Classic RK4 on (x, theta, v, w), theta the turn since the substep began
+   (rotations in the plane commute, so q = q0 exp(theta e12)).  Damping is
+   the continuous -c v here.  Without a force callback no stage writes a
+   trial state into the bodies and nothing is evaluated. */
+static void ga2d__substep_rk4(ga2d_world *w, ga2d_real h, double t)
+{
+    static const ga2d_real at[4] = {0, GA2D__R(0.5), GA2D__R(0.5), 1};
+    static const ga2d_real weight[4] = {1, 2, 2, 1};
+    int k, stage, n = w->moving_count, field = w->def.force_callback != NULL;
+    ga2d__rk4 *s = w->rk4;
+    GA2D_ASSERT(w->rk4_capacity >= n);
+    for (k = 0; k < n; ++k) {
+        const ga2d__body *b = &w->bodies[w->moving[k]];
+        memset(&s[k], 0, sizeof s[k]);
+        s[k].x0 = b->center;
+        s[k].q0 = b->q;
+        s[k].v0 = b->v;
+        s[k].w0 = b->w;
+    }
+    for (stage = 0; stage < 4; ++stage) {
+        ga2d_real c = at[stage] * h;
+        if (field) {
+            for (k = 0; k < n; ++k) {
+                ga2d__body *b = &w->bodies[w->moving[k]];
+                b->center = ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].kx, c));
+                b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, c));
+                b->w = s[k].w0 + s[k].kw * c;
+                b->q = s[k].kth * c != 0 ? ga2d__turn(s[k].q0, s[k].kth * c, w->def.rotation_update) : s[k].q0;
+            }
+            ga2d__eval_field(w, t + (double)c);
+        }
+        for (k = 0; k < n; ++k) {
+            ga2d__body *b = &w->bodies[w->moving[k]];
+            ga2d_vec v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, c));
+            ga2d_real om = s[k].w0 + s[k].kw * c;
+            s[k].kx = v;
+            s[k].kth = om;
+            if (b->type == GA2D_BODY_DYNAMIC) {
+                ga2d_vec a;
+                ga2d_real alpha;
+                ga2d__acceleration(w, b, &a, &alpha);
+                s[k].kv = ga2d_vec_sub(a, ga2d_vec_scale(v, b->linear_damping));
+                s[k].kw = alpha - b->angular_damping * om;
+            }
+            s[k].sx = ga2d_vec_add(s[k].sx, ga2d_vec_scale(s[k].kx, weight[stage]));
+            s[k].sv = ga2d_vec_add(s[k].sv, ga2d_vec_scale(s[k].kv, weight[stage]));
+            s[k].sth += s[k].kth * weight[stage];
+            s[k].sw += s[k].kw * weight[stage];
+        }
+    }
+    for (k = 0; k < n; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d_real th = s[k].sth * (h / 6);
+        b->center = ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].sx, h / 6));
+        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].sv, h / 6));
+        b->w = s[k].w0 + s[k].sw * (h / 6);
+        b->q = s[k].q0;
+        if (th != 0) {
+            b->q = ga2d__turn(s[k].q0, th, w->def.rotation_update);
+            ++w->counters.rotation_updates;
+        }
+        ++w->counters.integrated_bodies;
+    }
+}
+
+GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
+{
+    ga2d_real h;
+    double t0;
+    int s, k;
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    if (!ga2d__finite(dt) || !(dt > 0)) return GA2D_ERR_INVALID_ARGUMENT;
+    h = dt / (ga2d_real)w->def.substeps;
+    if (!(h > 0)) return GA2D_ERR_INVALID_ARGUMENT; /* dt underflows when split */
+    w->locked = 1;
+    w->counters.integrated_bodies = 0;
+    w->counters.force_evaluations = 0;
+    w->counters.rotation_updates = 0;
+    t0 = w->time;
+    for (s = 0; s < w->def.substeps; ++s) {
+        double t = t0 + (double)h * s; /* no drift from summing h */
+        switch (w->def.integrator) {
+        case GA2D_INTEGRATOR_VERLET: ga2d__substep_verlet(w, h, t); break;
+        case GA2D_INTEGRATOR_RK4: ga2d__substep_rk4(w, h, t); break;
+        default: ga2d__substep_euler(w, h, t); break;
+        }
+    }
+    w->time = t0 + (double)dt;
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->force = ga2d_vec_make(0, 0);
+        b->torque = 0;
+    }
+    ++w->counters.step_count;
+    w->locked = 0;
+    return GA2D_OK;
 }
 
 #ifdef __cplusplus

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "ga2d_physics.h"
@@ -46,6 +47,8 @@ void suite_algebra(void);
 void suite_polygon(void);
 void suite_mass(void);
 void suite_config(void);
+void suite_world(void);
+void suite_motion(void);
 
 #ifdef __cplusplus
 }

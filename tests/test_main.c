@@ -66,6 +66,8 @@ int main(void)
     suite_algebra();
     suite_polygon();
     suite_mass();
+    suite_world();
+    suite_motion();
     printf("%d passed, %d failed\n", g_passed, g_failed);
     return g_failed ? 1 : 0;
 }
