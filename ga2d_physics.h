@@ -528,6 +528,55 @@ GA2D_API ga2d_result ga2d_body_apply_torque(ga2d_world *w, ga2d_body_id id, ga2d
 GA2D_API ga2d_result ga2d_body_apply_impulse(ga2d_world *w, ga2d_body_id id, ga2d_vec impulse, ga2d_vec world_point);
 GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id id, ga2d_real impulse_e12);
 
+/* -------------------------------------------------------------- collision */
+/* Tolerances, in metres; a world scales them by its length_units_per_meter.
+   Linear slop: the overlap the solver allows to keep contacts steady.
+   Speculative distance: contact points this far apart are kept, so a fast
+   body is caught before it overlaps. */
+#define GA2D_LINEAR_SLOP 0.005
+#define GA2D_SPECULATIVE_DISTANCE (4 * GA2D_LINEAR_SLOP)
+#define GA2D_AABB_MARGIN 0.1
+
+/* A contact point.  point: world position (midway between the two
+   surfaces); anchor_a, anchor_b: the same point relative to body A's and
+   body B's origins (world orientation), computed without subtracting large
+   coordinates; separation < 0 is penetration; id names the features that
+   made the point: bit 16 set when B's face is the reference, bits 8-15 A's
+   feature and bits 0-7 B's feature, so the same contact keeps its id while
+   the bodies move a little.  The impulses are the solver's, carried from
+   step to step by id (0 from ga2d_collide_polygons). */
+typedef struct ga2d_manifold_point {
+    ga2d_vec point;
+    ga2d_vec anchor_a, anchor_b;
+    ga2d_real separation;
+    ga2d_real normal_impulse, tangent_impulse;
+    uint32_t id;
+    int persisted; /* the id was in the previous step's manifold too */
+} ga2d_manifold_point;
+
+/* normal: unit, world frame, from A to B.  count: 0, 1 or 2. */
+typedef struct ga2d_manifold {
+    ga2d_vec normal;
+    int count;
+    ga2d_manifold_point points[2];
+} ga2d_manifold;
+
+/* The contact manifold of polygon a placed by xa and polygon b placed by
+   xb, keeping points up to GA2D_SPECULATIVE_DISTANCE apart.  Returns the
+   number of points (0: farther apart than that; *out then has count 0), or
+   a negative -GA2D_ERR_* for bad input (NULL, a polygon whose count is out
+   of range, a non-finite transform), with *out untouched.  Needs no world. */
+GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
+                                   ga2d_transform xb, ga2d_manifold *out);
+/* The same with the tolerances of a world whose length unit is
+   1/length_units_per_meter of a metre (slop, margin scaled by it). */
+GA2D_API int ga2d_collide_polygons_scaled(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
+                                          ga2d_transform xb, ga2d_real length_units_per_meter, ga2d_manifold *out);
+
+GA2D_API int ga2d_aabb_overlaps(ga2d_aabb a, ga2d_aabb b);   /* closed boxes */
+GA2D_API int ga2d_aabb_contains(ga2d_aabb outer, ga2d_aabb inner);
+GA2D_API ga2d_aabb ga2d_aabb_union(ga2d_aabb a, ga2d_aabb b);
+
 #ifdef __cplusplus
 }
 #endif
@@ -551,6 +600,7 @@ GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id
 
 #ifdef GA2D_DOUBLE
 #define GA2D__EPS DBL_EPSILON
+#define GA2D__MAX DBL_MAX
 #define GA2D__MIN_NORMAL DBL_MIN
 #define GA2D__SQRT(x) sqrt(x)
 #define GA2D__SIN(x) sin(x)
@@ -559,6 +609,7 @@ GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id
 #define GA2D__FABS(x) fabs(x)
 #else
 #define GA2D__EPS FLT_EPSILON
+#define GA2D__MAX FLT_MAX
 #define GA2D__MIN_NORMAL FLT_MIN
 #define GA2D__SQRT(x) sqrtf(x)
 #define GA2D__SIN(x) sinf(x)
@@ -598,6 +649,7 @@ GA2D_API const char *ga2d_result_string(ga2d_result r)
 }
 
 static int ga2d__finite(ga2d_real x) { return x - x == x - x; } /* false for NaN, Inf */
+static int ga2d__finite_vec(ga2d_vec v) { return ga2d__finite(v.x) && ga2d__finite(v.y); }
 
 /* ---------------------------------------------------------------- vectors */
 GA2D_API ga2d_vec ga2d_vec_make(ga2d_real x, ga2d_real y) { ga2d_vec v; v.x = x; v.y = y; return v; }
@@ -1074,6 +1126,228 @@ GA2D_API ga2d_mass ga2d_polygon_mass(const ga2d_polygon *p, ga2d_real density)
     return m;
 }
 
+/* ============================================================ narrowphase */
+GA2D_API int ga2d_aabb_overlaps(ga2d_aabb a, ga2d_aabb b)
+{
+    return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y && b.lower.y <= a.upper.y;
+}
+
+GA2D_API int ga2d_aabb_contains(ga2d_aabb o, ga2d_aabb i)
+{
+    return o.lower.x <= i.lower.x && o.lower.y <= i.lower.y && i.upper.x <= o.upper.x && i.upper.y <= o.upper.y;
+}
+
+GA2D_API ga2d_aabb ga2d_aabb_union(ga2d_aabb a, ga2d_aabb b)
+{
+    ga2d_aabb c;
+    c.lower.x = a.lower.x < b.lower.x ? a.lower.x : b.lower.x;
+    c.lower.y = a.lower.y < b.lower.y ? a.lower.y : b.lower.y;
+    c.upper.x = a.upper.x > b.upper.x ? a.upper.x : b.upper.x;
+    c.upper.y = a.upper.y > b.upper.y ? a.upper.y : b.upper.y;
+    return c;
+}
+
+/* A polygon's vertices and normals expressed in some frame. */
+typedef struct ga2d__hull {
+    int count;
+    ga2d_vec v[GA2D_MAX_POLYGON_VERTICES];
+    ga2d_vec n[GA2D_MAX_POLYGON_VERTICES];
+} ga2d__hull;
+
+/* The separating-axis test over p1's edge normals: the largest, over
+   p1's edges, of the smallest distance of a p2 vertex above that edge.
+   Positive: separated along that normal. */
+static ga2d_real ga2d__max_separation(const ga2d__hull *p1, const ga2d__hull *p2, int *edge)
+{
+    ga2d_real best = -GA2D__MAX;
+    int i, j;
+    *edge = 0;
+    for (i = 0; i < p1->count; ++i) {
+        ga2d_real lo = GA2D__MAX;
+        for (j = 0; j < p2->count; ++j) {
+            ga2d_real s = ga2d_dot(p1->n[i], ga2d_vec_sub(p2->v[j], p1->v[i]));
+            lo = s < lo ? s : lo;
+        }
+        if (lo > best) {
+            best = lo;
+            *edge = i;
+        }
+    }
+    return best;
+}
+
+/* Closest points of segments p1q1 and p2q2: fractions s, t in [0, 1]
+   along each (the textbook clamp-and-reclamp solution). */
+static void ga2d__segment_closest(ga2d_vec p1, ga2d_vec q1, ga2d_vec p2, ga2d_vec q2, ga2d_real *s, ga2d_real *t)
+{
+    ga2d_vec d1 = ga2d_vec_sub(q1, p1), d2 = ga2d_vec_sub(q2, p2), r = ga2d_vec_sub(p1, p2);
+    ga2d_real a = ga2d_dot(d1, d1), e = ga2d_dot(d2, d2), f = ga2d_dot(d2, r), c = ga2d_dot(d1, r);
+    ga2d_real b = ga2d_dot(d1, d2), den = a * e - b * b;
+    ga2d_real ss = 0, tt;
+    if (den > 0) ss = (b * f - c * e) / den;
+    ss = ss < 0 ? 0 : (ss > 1 ? 1 : ss);
+    tt = (b * ss + f) / e;
+    if (tt < 0) {
+        tt = 0;
+        ss = -c / a;
+    } else if (tt > 1) {
+        tt = 1;
+        ss = (b - c) / a;
+    }
+    *s = ss < 0 ? 0 : (ss > 1 ? 1 : ss);
+    *t = tt;
+}
+
+static uint32_t ga2d__feature_id(int flip, int ia, int ib)
+{
+    return ((uint32_t)(flip != 0) << 16) | ((uint32_t)ia << 8) | (uint32_t)ib;
+}
+
+/* Sets point k of m from a point in A's frame (pa: on the reference side,
+   as A's frame sees it) with its separation and id. */
+static void ga2d__put_point(ga2d_manifold *m, ga2d_transform xa, ga2d_vec d_ab, ga2d_vec local, ga2d_real sep, uint32_t id)
+{
+    ga2d_manifold_point *mp = &m->points[m->count++];
+    memset(mp, 0, sizeof *mp);
+    mp->anchor_a = ga2d_rotate(xa.q, local);
+    mp->anchor_b = ga2d_vec_sub(mp->anchor_a, d_ab);
+    mp->point = ga2d_vec_add(xa.p, mp->anchor_a);
+    mp->separation = sep;
+    mp->id = id;
+}
+
+/* The manifold, computed in A's frame: B's vertices are brought into it
+   by xa^-1 xb, which subtracts the two positions once (exactly, when they
+   are close), so nothing below depends on the distance from the origin.
+   Steps: SAT over both sets of normals; B's face becomes the reference only
+   when its separation beats A's by 0.1 slop (so the choice does not flicker
+   between nearly equal axes); the incident edge is the other polygon's
+   edge most against the reference normal; when the polygons are apart by
+   more than 0.1 slop and the closest features are two vertices, the true
+   distance and its direction are used (one point); otherwise the incident
+   edge is clipped to the reference face's side planes and each end within
+   the margin becomes a point, placed midway between the surfaces. */
+static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_polygon *pb, ga2d_transform xb,
+                         ga2d_real slop, ga2d_real margin, ga2d_manifold *m)
+{
+    ga2d__hull A, B;
+    const ga2d__hull *ref, *inc;
+    ga2d_transform xf = ga2d_transform_inv_mul(xa, xb);
+    ga2d_vec d_ab = ga2d_vec_sub(xb.p, xa.p), n, t, r1, r2, v21, v22;
+    ga2d_real sep_a, sep_b, sep, lo_dot;
+    int edge_a, edge_b, flip, i11, i12, i21, i22, j;
+
+    m->count = 0;
+    A.count = pa->count;
+    B.count = pb->count;
+    for (j = 0; j < pa->count; ++j) {
+        A.v[j] = pa->vertices[j];
+        A.n[j] = pa->normals[j];
+    }
+    for (j = 0; j < pb->count; ++j) {
+        B.v[j] = ga2d_transform_apply(xf, pb->vertices[j]);
+        B.n[j] = ga2d_rotate(xf.q, pb->normals[j]);
+    }
+    sep_a = ga2d__max_separation(&A, &B, &edge_a);
+    sep_b = ga2d__max_separation(&B, &A, &edge_b);
+    m->normal = ga2d_rotate(xa.q, A.n[edge_a]);
+    if (sep_a > margin || sep_b > margin) return 0;
+
+    flip = sep_b > sep_a + GA2D__R(0.1) * slop;
+    ref = flip ? &B : &A;
+    inc = flip ? &A : &B;
+    i11 = flip ? edge_b : edge_a;
+    sep = flip ? sep_b : sep_a;
+    i12 = i11 + 1 < ref->count ? i11 + 1 : 0;
+    n = ref->n[i11];
+    r1 = ref->v[i11];
+    r2 = ref->v[i12];
+    /* incident edge: the most anti-parallel normal */
+    i21 = 0;
+    lo_dot = GA2D__MAX;
+    for (j = 0; j < inc->count; ++j) {
+        ga2d_real d = ga2d_dot(n, inc->n[j]);
+        if (d < lo_dot) { lo_dot = d; i21 = j; }
+    }
+    i22 = i21 + 1 < inc->count ? i21 + 1 : 0;
+    v21 = inc->v[i21];
+    v22 = inc->v[i22];
+
+    if (sep > GA2D__R(0.1) * slop) {
+        ga2d_real f1, f2;
+        ga2d__segment_closest(r1, r2, v21, v22, &f1, &f2);
+        if ((f1 == 0 || f1 == 1) && (f2 == 0 || f2 == 1)) {
+            /* the closest points are two vertices.  If the incident vertex
+               also lies outside the reference face's slab (by 0.1 slop:
+               parallel faces put the closest points on endpoints too), the
+               gap along the face normal understates the distance: use the
+               true distance and direction */
+            int ir = f1 == 0 ? i11 : i12, ii = f2 == 0 ? i21 : i22;
+            ga2d_vec vr = ref->v[ir], vi = inc->v[ii], dir;
+            ga2d_real along = ga2d_dot(ga2d_vec_sub(vi, vr), ga2d_vec_perp(n));
+            ga2d_real dist = ga2d_vec_normalize(ga2d_vec_sub(vi, vr), &dir);
+            int outside = ir == i11 ? along < -GA2D__R(0.1) * slop : along > GA2D__R(0.1) * slop;
+            if (outside && dist > margin) return 0;
+            if (outside && dist > 0) {
+                m->normal = ga2d_rotate(xa.q, flip ? ga2d_vec_neg(dir) : dir);
+                ga2d__put_point(m, xa, d_ab, ga2d_vec_scale(ga2d_vec_add(vr, vi), GA2D__R(0.5)), dist,
+                                flip ? ga2d__feature_id(1, ii, ir) : ga2d__feature_id(0, ir, ii));
+                return 1;
+            }
+        }
+    }
+
+    /* clip the incident edge (v21 -> v22 runs against r1 -> r2) to the
+       reference face's extent [0, |r2 - r1|] along its tangent t */
+    t = ga2d_vec_perp(n); /* n turned +90 degrees: the edge direction */
+    {
+        ga2d_real upper1 = ga2d_dot(ga2d_vec_sub(r2, r1), t);
+        ga2d_real upper2 = ga2d_dot(ga2d_vec_sub(v21, r1), t), lower2 = ga2d_dot(ga2d_vec_sub(v22, r1), t);
+        ga2d_real span = upper2 - lower2, s_lo, s_hi;
+        ga2d_vec v_lo = v22, v_hi = v21;
+        if (span > 0) {
+            if (lower2 < 0) v_lo = ga2d_vec_add(v22, ga2d_vec_scale(ga2d_vec_sub(v21, v22), (0 - lower2) / span));
+            if (upper2 > upper1) v_hi = ga2d_vec_add(v22, ga2d_vec_scale(ga2d_vec_sub(v21, v22), (upper1 - lower2) / span));
+        }
+        s_lo = ga2d_dot(ga2d_vec_sub(v_lo, r1), n);
+        s_hi = ga2d_dot(ga2d_vec_sub(v_hi, r1), n);
+        m->normal = ga2d_rotate(xa.q, flip ? ga2d_vec_neg(n) : n);
+        /* the low end lies by r1 and came from v22; the high end by r2 and v21 */
+        if (s_lo <= margin)
+            ga2d__put_point(m, xa, d_ab, ga2d_vec_sub(v_lo, ga2d_vec_scale(n, s_lo / 2)), s_lo,
+                            flip ? ga2d__feature_id(1, i22, i11) : ga2d__feature_id(0, i11, i22));
+        if (s_hi <= margin)
+            ga2d__put_point(m, xa, d_ab, ga2d_vec_sub(v_hi, ga2d_vec_scale(n, s_hi / 2)), s_hi,
+                            flip ? ga2d__feature_id(1, i21, i12) : ga2d__feature_id(0, i12, i21));
+    }
+    return m->count;
+}
+
+static int ga2d__polygon_ok(const ga2d_polygon *p) { return p && p->count >= 3 && p->count <= GA2D_MAX_POLYGON_VERTICES; }
+static int ga2d__transform_ok(ga2d_transform x)
+{
+    return ga2d__finite_vec(x.p) && ga2d__finite(x.q.c) && ga2d__finite(x.q.s);
+}
+
+GA2D_API int ga2d_collide_polygons_scaled(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
+                                          ga2d_transform xb, ga2d_real units, ga2d_manifold *out)
+{
+    ga2d_manifold m;
+    if (!out || !ga2d__polygon_ok(a) || !ga2d__polygon_ok(b)) return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__transform_ok(xa) || !ga2d__transform_ok(xb) || !ga2d__finite(units)) return -(int)GA2D_ERR_NOT_FINITE;
+    if (!(units > 0)) return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    memset(&m, 0, sizeof m);
+    ga2d__collide(a, xa, b, xb, GA2D__R(GA2D_LINEAR_SLOP) * units, GA2D__R(GA2D_SPECULATIVE_DISTANCE) * units, &m);
+    *out = m;
+    return m.count;
+}
+
+GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
+                                   ga2d_transform xb, ga2d_manifold *out)
+{
+    return ga2d_collide_polygons_scaled(a, xa, b, xb, 1, out);
+}
+
 /* ======================================================== world and bodies */
 /* A body slot.  State is kept at the centre of mass (position `center`,
    orientation `q`, velocity `v`, angular velocity `w` of Omega = w e12);
@@ -1160,7 +1434,6 @@ static int ga2d__grow(const ga2d_allocator *a, void **arr, int *cap, int need, s
     return 1;
 }
 
-static int ga2d__finite_vec(ga2d_vec v) { return ga2d__finite(v.x) && ga2d__finite(v.y); }
 
 GA2D_API ga2d_body_id ga2d_body_id_null(void) { ga2d_body_id id; id.index1 = 0; id.generation = 0; return id; }
 GA2D_API int ga2d_body_id_is_null(ga2d_body_id id) { return id.index1 == 0; }

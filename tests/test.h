@@ -49,6 +49,8 @@ void suite_mass(void);
 void suite_config(void);
 void suite_world(void);
 void suite_motion(void);
+void suite_collide(void);
+void suite_contacts(void);
 
 #ifdef __cplusplus
 }

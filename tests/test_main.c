@@ -68,6 +68,8 @@ int main(void)
     suite_mass();
     suite_world();
     suite_motion();
+    suite_collide();
+    suite_contacts();
     printf("%d passed, %d failed\n", g_passed, g_failed);
     return g_failed ? 1 : 0;
 }
