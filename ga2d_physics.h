@@ -424,6 +424,14 @@ typedef struct ga2d_world_def {
     void *force_context;
 } ga2d_world_def;
 
+/* Collision filtering, per body.  Two bodies in the same nonzero group
+   always collide (positive group) or never do (negative group); otherwise
+   they collide when each one's category is in the other's mask. */
+typedef struct ga2d_filter {
+    uint32_t category_bits; /* default 1 */
+    uint32_t mask_bits;     /* default all */
+    int32_t group_index;    /* default 0 */
+} ga2d_filter;
 typedef struct ga2d_body_def {
     ga2d_body_type type;        /* default static */
     ga2d_vec position;          /* the body origin, in world coordinates */
@@ -440,6 +448,7 @@ typedef struct ga2d_body_def {
     int fixed_rotation;         /* never rotates (infinite inertia) */
     int is_awake;               /* default 1 */
     void *user_data;
+    ga2d_filter filter;         /* default: category 1, collides with all */
 } ga2d_body_def;
 
 /* What the last step did: for checking that a scene pays only for what it
@@ -451,6 +460,8 @@ typedef struct ga2d_world_counters {
     int force_evaluations;  /* force callback calls in the last step */
     int rotation_updates;   /* rotor updates in the last step */
     long long step_count;   /* steps taken */
+    int pair_count;         /* broadphase pairs (contacts, touching or not) */
+    int touching_count;     /* contacts with manifold points */
 } ga2d_world_counters;
 
 GA2D_API ga2d_world_def ga2d_default_world_def(void);
@@ -577,6 +588,43 @@ GA2D_API int ga2d_aabb_overlaps(ga2d_aabb a, ga2d_aabb b);   /* closed boxes */
 GA2D_API int ga2d_aabb_contains(ga2d_aabb outer, ga2d_aabb inner);
 GA2D_API ga2d_aabb ga2d_aabb_union(ga2d_aabb a, ga2d_aabb b);
 
+GA2D_API ga2d_filter ga2d_default_filter(void);
+GA2D_API int ga2d_should_collide(ga2d_filter a, ga2d_filter b);
+GA2D_API ga2d_result ga2d_body_set_filter(ga2d_world *w, ga2d_body_id id, ga2d_filter f);
+GA2D_API ga2d_filter ga2d_body_filter(const ga2d_world *w, ga2d_body_id id);
+/* The body's box in the broadphase: its AABB grown by GA2D_AABB_MARGIN (in
+   world length units), moved only when the body leaves it. */
+GA2D_API ga2d_aabb ga2d_body_fat_aabb(const ga2d_world *w, ga2d_body_id id);
+
+/* A contact between two bodies, A's slot before B's; the manifold's normal
+   points from A to B. */
+typedef struct ga2d_contact_data {
+    ga2d_body_id body_a, body_b;
+    ga2d_manifold manifold;
+} ga2d_contact_data;
+
+/* The bodies that began and ended touching in the last step (valid until
+   the next step or until the world is destroyed).  An end event carries
+   the last manifold that touched.  Destroying a body ends its contacts
+   without an event. */
+typedef struct ga2d_contact_events {
+    const ga2d_contact_data *begin;
+    int begin_count;
+    const ga2d_contact_data *end;
+    int end_count;
+} ga2d_contact_events;
+
+/* Broadphase pairs: bodies whose fat AABBs overlap, that may collide (at
+   least one dynamic; the filter allows it).  Each pair is a contact,
+   touching when its manifold has points.  Copies up to `capacity` pairs
+   (in the world's deterministic order) and returns how many there are. */
+GA2D_API int ga2d_world_get_pairs(const ga2d_world *w, ga2d_contact_data *out, int capacity);
+/* The same for touching contacts only. */
+GA2D_API int ga2d_world_get_contacts(const ga2d_world *w, ga2d_contact_data *out, int capacity);
+GA2D_API ga2d_contact_events ga2d_world_contact_events(const ga2d_world *w);
+/* Up to `capacity` of one body's touching contacts; returns how many. */
+GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_contact_data *out, int capacity);
+
 #ifdef __cplusplus
 }
 #endif
@@ -650,6 +698,43 @@ GA2D_API const char *ga2d_result_string(ga2d_result r)
 
 static int ga2d__finite(ga2d_real x) { return x - x == x - x; } /* false for NaN, Inf */
 static int ga2d__finite_vec(ga2d_vec v) { return ga2d__finite(v.x) && ga2d__finite(v.y); }
+
+/* The most slots a world holds: keeps every byte count far from overflow. */
+#define GA2D__MAX_BODIES (1 << 26)
+
+static void *ga2d__alloc(const ga2d_allocator *a, size_t size)
+{
+    return a->alloc ? a->alloc(size, a->ctx) : malloc(size);
+}
+
+static void ga2d__free(const ga2d_allocator *a, void *p, size_t size)
+{
+    if (!p) return;
+    if (a->free) a->free(p, size, a->ctx);
+    else free(p);
+}
+
+/* Grows *arr to hold `need` elements.  The new block is allocated before
+   the old one is released, so a failure (returns 0) changes nothing. */
+static int ga2d__grow(const ga2d_allocator *a, void **arr, int *cap, int need, size_t elem)
+{
+    int newcap = *cap ? *cap : 16;
+    void *p;
+    if (need <= *cap) return 1;
+    if (need > GA2D__MAX_BODIES) return 0;
+    while (newcap < need) newcap *= 2;
+    p = ga2d__alloc(a, (size_t)newcap * elem);
+    if (!p) return 0;
+    if (*arr) {
+        memcpy(p, *arr, (size_t)*cap * elem);
+        ga2d__free(a, *arr, (size_t)*cap * elem);
+    }
+    *arr = p;
+    *cap = newcap;
+    return 1;
+}
+
+
 
 /* ---------------------------------------------------------------- vectors */
 GA2D_API ga2d_vec ga2d_vec_make(ga2d_real x, ga2d_real y) { ga2d_vec v; v.x = x; v.y = y; return v; }
@@ -1126,6 +1211,237 @@ GA2D_API ga2d_mass ga2d_polygon_mass(const ga2d_polygon *p, ga2d_real density)
     return m;
 }
 
+/* ============================================================= broadphase */
+/* A dynamic AABB tree: leaves hold the fattened boxes of bodies, each inner
+   node the union of its two children.  Insertion descends toward the
+   cheapest sibling by the perimeter ("surface area") heuristic, and AVL
+   rotations keep it balanced, so a query visits O(log n + k) nodes.  The
+   world keeps two: static bodies in one, moving bodies in the other, so a
+   static-static pair can never be made. */
+typedef struct ga2d__node {
+    ga2d_aabb box;
+    int parent;           /* or the next free node */
+    int child1, child2;   /* -1 at a leaf */
+    int height;           /* 0 at a leaf, -1 when free */
+    int body;             /* a leaf's body slot */
+} ga2d__node;
+
+typedef struct ga2d__tree {
+    ga2d__node *nodes;
+    int capacity, used, root, free_list, leaves;
+} ga2d__tree;
+
+static ga2d_real ga2d__perimeter(ga2d_aabb b) { return 2 * ((b.upper.x - b.lower.x) + (b.upper.y - b.lower.y)); }
+
+/* Room for `more` new leaves (two nodes each), allocated up front so that
+   inserting never fails. */
+static int ga2d__tree_reserve(const ga2d_allocator *a, ga2d__tree *t, int more)
+{
+    int free_nodes = t->capacity - t->used, i;
+    for (i = t->free_list; i >= 0 && free_nodes < 2 * more; i = t->nodes[i].parent) ++free_nodes;
+    if (free_nodes >= 2 * more) return 1;
+    return ga2d__grow(a, (void **)&t->nodes, &t->capacity, t->used + 2 * more, sizeof *t->nodes);
+}
+
+static int ga2d__tree_alloc_node(ga2d__tree *t)
+{
+    int i;
+    if (t->free_list >= 0) {
+        i = t->free_list;
+        t->free_list = t->nodes[i].parent;
+    } else {
+        GA2D_ASSERT(t->used < t->capacity);
+        i = t->used++;
+    }
+    t->nodes[i].parent = t->nodes[i].child1 = t->nodes[i].child2 = -1;
+    t->nodes[i].height = 0;
+    t->nodes[i].body = -1;
+    return i;
+}
+
+static void ga2d__tree_free_node(ga2d__tree *t, int i)
+{
+    t->nodes[i].height = -1;
+    t->nodes[i].parent = t->free_list;
+    t->free_list = i;
+}
+
+/* One AVL rotation at node a if its subtrees' heights differ by more than
+   one; returns the node now at a's place. */
+static int ga2d__tree_balance(ga2d__tree *t, int ia)
+{
+    ga2d__node *n = t->nodes, *a = &n[ia];
+    int ib, ic, bal;
+    if (a->child1 < 0 || a->height < 2) return ia;
+    ib = a->child1;
+    ic = a->child2;
+    bal = n[ic].height - n[ib].height;
+    if (bal > 1 || bal < -1) {
+        /* promote the taller child (up), its taller child stays under it */
+        int iu = bal > 1 ? ic : ib, io = bal > 1 ? ib : ic; /* up, other */
+        ga2d__node *u = &n[iu];
+        int i1 = u->child1, i2 = u->child2, keep, move;
+        u->child1 = ia;
+        u->parent = a->parent;
+        a->parent = iu;
+        if (u->parent >= 0) {
+            if (n[u->parent].child1 == ia) n[u->parent].child1 = iu;
+            else n[u->parent].child2 = iu;
+        } else {
+            t->root = iu;
+        }
+        keep = n[i1].height > n[i2].height ? i1 : i2;
+        move = keep == i1 ? i2 : i1;
+        u->child2 = keep;
+        if (bal > 1) a->child2 = move;
+        else a->child1 = move;
+        n[move].parent = ia;
+        a->box = ga2d_aabb_union(n[io].box, n[move].box);
+        a->height = 1 + (n[io].height > n[move].height ? n[io].height : n[move].height);
+        u->box = ga2d_aabb_union(a->box, n[keep].box);
+        u->height = 1 + (a->height > n[keep].height ? a->height : n[keep].height);
+        return iu;
+    }
+    return ia;
+}
+
+/* Refits boxes and heights from node i up to the root, rotating as it goes. */
+static void ga2d__tree_refit(ga2d__tree *t, int i)
+{
+    while (i >= 0) {
+        ga2d__node *n;
+        int c1, c2;
+        i = ga2d__tree_balance(t, i);
+        n = &t->nodes[i];
+        c1 = n->child1;
+        c2 = n->child2;
+        n->height = 1 + (t->nodes[c1].height > t->nodes[c2].height ? t->nodes[c1].height : t->nodes[c2].height);
+        n->box = ga2d_aabb_union(t->nodes[c1].box, t->nodes[c2].box);
+        i = n->parent;
+    }
+}
+
+static void ga2d__tree_insert_leaf(ga2d__tree *t, int leaf)
+{
+    ga2d__node *n = t->nodes;
+    ga2d_aabb box = n[leaf].box;
+    int s, old_parent, parent;
+    ++t->leaves;
+    if (t->root < 0) {
+        t->root = leaf;
+        n[leaf].parent = -1;
+        return;
+    }
+    /* descend: stop where pairing with this node costs less than going
+       into either child (perimeter of the new parent plus the growth of
+       every box above it) */
+    s = t->root;
+    while (n[s].child1 >= 0) {
+        int c1 = n[s].child1, c2 = n[s].child2;
+        ga2d_real area = ga2d__perimeter(n[s].box);
+        ga2d_real combined = ga2d__perimeter(ga2d_aabb_union(n[s].box, box));
+        ga2d_real cost = 2 * combined, inherit = 2 * (combined - area), cost1, cost2;
+        cost1 = ga2d__perimeter(ga2d_aabb_union(box, n[c1].box)) + inherit;
+        if (n[c1].child1 >= 0) cost1 -= ga2d__perimeter(n[c1].box);
+        cost2 = ga2d__perimeter(ga2d_aabb_union(box, n[c2].box)) + inherit;
+        if (n[c2].child1 >= 0) cost2 -= ga2d__perimeter(n[c2].box);
+        if (cost < cost1 && cost < cost2) break;
+        s = cost1 < cost2 ? c1 : c2;
+    }
+    old_parent = n[s].parent;
+    parent = ga2d__tree_alloc_node(t);
+    n = t->nodes;
+    n[parent].parent = old_parent;
+    n[parent].box = ga2d_aabb_union(box, n[s].box);
+    n[parent].height = n[s].height + 1;
+    n[parent].child1 = s;
+    n[parent].child2 = leaf;
+    n[s].parent = parent;
+    n[leaf].parent = parent;
+    if (old_parent >= 0) {
+        if (n[old_parent].child1 == s) n[old_parent].child1 = parent;
+        else n[old_parent].child2 = parent;
+    } else {
+        t->root = parent;
+    }
+    ga2d__tree_refit(t, parent);
+}
+
+static void ga2d__tree_remove_leaf(ga2d__tree *t, int leaf)
+{
+    ga2d__node *n = t->nodes;
+    int parent, grand, sibling;
+    --t->leaves;
+    if (leaf == t->root) {
+        t->root = -1;
+        return;
+    }
+    parent = n[leaf].parent;
+    grand = n[parent].parent;
+    sibling = n[parent].child1 == leaf ? n[parent].child2 : n[parent].child1;
+    if (grand >= 0) {
+        if (n[grand].child1 == parent) n[grand].child1 = sibling;
+        else n[grand].child2 = sibling;
+        n[sibling].parent = grand;
+        ga2d__tree_free_node(t, parent);
+        ga2d__tree_refit(t, grand);
+    } else {
+        t->root = sibling;
+        n[sibling].parent = -1;
+        ga2d__tree_free_node(t, parent);
+    }
+}
+
+/* A new leaf for `body` with box `box`; capacity must have been reserved. */
+static int ga2d__tree_create(ga2d__tree *t, ga2d_aabb box, int body)
+{
+    int leaf = ga2d__tree_alloc_node(t);
+    t->nodes[leaf].box = box;
+    t->nodes[leaf].body = body;
+    ga2d__tree_insert_leaf(t, leaf);
+    return leaf;
+}
+
+static void ga2d__tree_destroy(ga2d__tree *t, int leaf)
+{
+    ga2d__tree_remove_leaf(t, leaf);
+    ga2d__tree_free_node(t, leaf);
+}
+
+static void ga2d__tree_move(ga2d__tree *t, int leaf, ga2d_aabb box)
+{
+    ga2d__tree_remove_leaf(t, leaf);
+    t->nodes[leaf].box = box;
+    ga2d__tree_insert_leaf(t, leaf);
+}
+
+/* Calls fn(ctx, body) for every leaf whose box overlaps q.  The stack
+   holds at most height + 1 entries; AVL balance keeps the height under
+   1.45 log2(leaves) + 2, far below 256 for any world that fits in memory. */
+typedef void ga2d__query_fn(void *ctx, int body);
+static void ga2d__tree_query(const ga2d__tree *t, ga2d_aabb q, ga2d__query_fn *fn, void *ctx)
+{
+    int stack[256], top = 0;
+    if (t->root < 0) return;
+    stack[top++] = t->root;
+    while (top > 0) {
+        const ga2d__node *nd = &t->nodes[stack[--top]];
+        if (!ga2d_aabb_overlaps(nd->box, q)) continue;
+        if (nd->child1 < 0) {
+            fn(ctx, nd->body);
+        } else {
+            GA2D_ASSERT(top + 2 <= 256);
+            stack[top++] = nd->child2;
+            stack[top++] = nd->child1;
+        }
+    }
+}
+
+static void ga2d__tree_release(const ga2d_allocator *a, ga2d__tree *t)
+{
+    ga2d__free(a, t->nodes, (size_t)t->capacity * sizeof *t->nodes);
+}
+
 /* ============================================================ narrowphase */
 GA2D_API int ga2d_aabb_overlaps(ga2d_aabb a, ga2d_aabb b)
 {
@@ -1348,6 +1664,31 @@ GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, con
     return ga2d_collide_polygons_scaled(a, xa, b, xb, 1, out);
 }
 
+/* ============================================================== contacts */
+/* A contact joins two bodies whose fat boxes overlap.  Contacts live in a
+   pool (stable index, free list) and on both bodies' lists: link value
+   2 * contact + side, side 0 on body a's list and 1 on body b's. */
+typedef struct ga2d__contact {
+    int a, b;                /* body slots, a < b */
+    int prev[2], next[2];    /* the bodies' list links, -1 at the ends */
+    ga2d_manifold manifold;
+    ga2d_real friction, restitution;
+    int touching;
+    int next_free;           /* -2 while in use */
+} ga2d__contact;
+
+static uint64_t ga2d__pair_key(int a, int b) { return ((uint64_t)(uint32_t)a << 32) | (uint32_t)b; }
+
+static uint32_t ga2d__hash(uint64_t k)
+{
+    k ^= k >> 33;
+    k *= 0xff51afd7ed558ccdull;
+    k ^= k >> 33;
+    k *= 0xc4ceb9fe1a85ec53ull;
+    k ^= k >> 33;
+    return (uint32_t)k;
+}
+
 /* ======================================================== world and bodies */
 /* A body slot.  State is kept at the centre of mass (position `center`,
    orientation `q`, velocity `v`, angular velocity `w` of Omega = w e12);
@@ -1375,6 +1716,10 @@ typedef struct ga2d__body {
     int move_index;              /* index in world->moving, or -1 */
     int fixed_rotation;
     int awake;
+    ga2d_filter filter;
+    int proxy;                   /* leaf in trees[type != static] */
+    int in_move;                 /* queued for pair finding */
+    int contact_head;            /* first link of its contact list, or -1 */
 } ga2d__body;
 
 /* RK4's per-body scratch for one substep: the start state, the derivative
@@ -1397,43 +1742,23 @@ struct ga2d_world {
     int locked;                  /* inside ga2d_world_step */
     int in_callback;             /* inside the force callback */
     ga2d_world_counters counters;
+    /* broadphase: trees[0] static bodies, trees[1] moving ones */
+    ga2d__tree trees[2];
+    int *move_buf;               /* slots queued for pair finding */
+    int move_count, move_capacity;
+    uint64_t *new_pairs;
+    int new_pair_count, new_pair_capacity;
+    /* contacts: a pool, and the set of pairs that have one */
+    ga2d__contact *contacts;
+    int contact_capacity, contact_used, contact_free, contact_count;
+    uint64_t *pair_keys;
+    int *pair_vals;
+    int pair_capacity, pair_count;
+    ga2d_contact_data *begin_events, *end_events;
+    int begin_count, end_count, begin_capacity, end_capacity;
+    ga2d_real slop, speculative, aabb_margin; /* scaled by length units */
+    ga2d_result step_error;      /* what the step will report */
 };
-
-/* The most slots a world holds: keeps every byte count far from overflow. */
-#define GA2D__MAX_BODIES (1 << 26)
-
-static void *ga2d__alloc(const ga2d_allocator *a, size_t size)
-{
-    return a->alloc ? a->alloc(size, a->ctx) : malloc(size);
-}
-
-static void ga2d__free(const ga2d_allocator *a, void *p, size_t size)
-{
-    if (!p) return;
-    if (a->free) a->free(p, size, a->ctx);
-    else free(p);
-}
-
-/* Grows *arr to hold `need` elements.  The new block is allocated before
-   the old one is released, so a failure (returns 0) changes nothing. */
-static int ga2d__grow(const ga2d_allocator *a, void **arr, int *cap, int need, size_t elem)
-{
-    int newcap = *cap ? *cap : 16;
-    void *p;
-    if (need <= *cap) return 1;
-    if (need > GA2D__MAX_BODIES) return 0;
-    while (newcap < need) newcap *= 2;
-    p = ga2d__alloc(a, (size_t)newcap * elem);
-    if (!p) return 0;
-    if (*arr) {
-        memcpy(p, *arr, (size_t)*cap * elem);
-        ga2d__free(a, *arr, (size_t)*cap * elem);
-    }
-    *arr = p;
-    *cap = newcap;
-    return 1;
-}
-
 
 GA2D_API ga2d_body_id ga2d_body_id_null(void) { ga2d_body_id id; id.index1 = 0; id.generation = 0; return id; }
 GA2D_API int ga2d_body_id_is_null(ga2d_body_id id) { return id.index1 == 0; }
@@ -1457,6 +1782,413 @@ static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__bo
     if (w->locked) return GA2D_ERR_LOCKED;
     *out = ga2d__lookup(w, id);
     return *out ? GA2D_OK : GA2D_ERR_STALE_ID;
+}
+
+/* ------------------------------------------------------------- pair set */
+/* Which body pairs have a contact: open addressing, linear probing, kept
+   at most half full; key 0 marks an empty slot (a real key has a < b). */
+static int ga2d__pairs_find(const ga2d_world *w, uint64_t key)
+{
+    uint32_t mask, i;
+    if (!w->pair_capacity) return -1;
+    mask = (uint32_t)w->pair_capacity - 1;
+    for (i = ga2d__hash(key) & mask; w->pair_keys[i]; i = (i + 1) & mask)
+        if (w->pair_keys[i] == key) return w->pair_vals[i];
+    return -1;
+}
+
+static void ga2d__pairs_put(uint64_t *keys, int *vals, int cap, uint64_t key, int val)
+{
+    uint32_t mask = (uint32_t)cap - 1, i;
+    for (i = ga2d__hash(key) & mask; keys[i]; i = (i + 1) & mask) {}
+    keys[i] = key;
+    vals[i] = val;
+}
+
+/* Room for one more pair; 0 when memory runs out (nothing changed). */
+static int ga2d__pairs_reserve(ga2d_world *w)
+{
+    int cap = w->pair_capacity ? w->pair_capacity : 64, i;
+    uint64_t *keys;
+    int *vals;
+    if (2 * (w->pair_count + 1) <= w->pair_capacity) return 1;
+    while (2 * (w->pair_count + 1) > cap) cap *= 2;
+    keys = (uint64_t *)ga2d__alloc(&w->def.allocator, (size_t)cap * sizeof *keys);
+    vals = keys ? (int *)ga2d__alloc(&w->def.allocator, (size_t)cap * sizeof *vals) : NULL;
+    if (!vals) {
+        ga2d__free(&w->def.allocator, keys, (size_t)cap * sizeof *keys);
+        return 0;
+    }
+    memset(keys, 0, (size_t)cap * sizeof *keys);
+    for (i = 0; i < w->pair_capacity; ++i)
+        if (w->pair_keys[i]) ga2d__pairs_put(keys, vals, cap, w->pair_keys[i], w->pair_vals[i]);
+    ga2d__free(&w->def.allocator, w->pair_keys, (size_t)w->pair_capacity * sizeof *keys);
+    ga2d__free(&w->def.allocator, w->pair_vals, (size_t)w->pair_capacity * sizeof *vals);
+    w->pair_keys = keys;
+    w->pair_vals = vals;
+    w->pair_capacity = cap;
+    return 1;
+}
+
+/* Deletion by backward shift keeps every probe chain unbroken. */
+static void ga2d__pairs_remove(ga2d_world *w, uint64_t key)
+{
+    uint32_t mask = (uint32_t)w->pair_capacity - 1, i, j;
+    for (i = ga2d__hash(key) & mask; w->pair_keys[i] != key; i = (i + 1) & mask) GA2D_ASSERT(w->pair_keys[i]);
+    for (j = (i + 1) & mask; w->pair_keys[j]; j = (j + 1) & mask) {
+        uint32_t home = ga2d__hash(w->pair_keys[j]) & mask;
+        /* move j back to i unless its home lies cyclically in (i, j] */
+        if (((j - home) & mask) >= ((j - i) & mask)) {
+            w->pair_keys[i] = w->pair_keys[j];
+            w->pair_vals[i] = w->pair_vals[j];
+            i = j;
+        }
+    }
+    w->pair_keys[i] = 0;
+    --w->pair_count;
+}
+
+/* ------------------------------------------------------ contact lifetime */
+static void ga2d__link_contact(ga2d_world *w, int ci, int side)
+{
+    ga2d__contact *c = &w->contacts[ci];
+    ga2d__body *b = &w->bodies[side ? c->b : c->a];
+    c->prev[side] = -1;
+    c->next[side] = b->contact_head;
+    if (b->contact_head >= 0) w->contacts[b->contact_head >> 1].prev[b->contact_head & 1] = 2 * ci + side;
+    b->contact_head = 2 * ci + side;
+}
+
+static void ga2d__unlink_contact(ga2d_world *w, int ci, int side)
+{
+    ga2d__contact *c = &w->contacts[ci];
+    ga2d__body *b = &w->bodies[side ? c->b : c->a];
+    if (c->prev[side] >= 0) w->contacts[c->prev[side] >> 1].next[c->prev[side] & 1] = c->next[side];
+    else b->contact_head = c->next[side];
+    if (c->next[side] >= 0) w->contacts[c->next[side] >> 1].prev[c->next[side] & 1] = c->prev[side];
+}
+
+/* Friction mixes as sqrt(mu_a mu_b), restitution as max(e_a, e_b). */
+static int ga2d__create_contact(ga2d_world *w, int a, int b)
+{
+    ga2d__contact *c;
+    int ci;
+    if (!ga2d__pairs_reserve(w)) return 0;
+    if (w->contact_free >= 0) {
+        ci = w->contact_free;
+        w->contact_free = w->contacts[ci].next_free;
+    } else {
+        if (!ga2d__grow(&w->def.allocator, (void **)&w->contacts, &w->contact_capacity, w->contact_used + 1,
+                        sizeof *w->contacts))
+            return 0;
+        ci = w->contact_used++;
+    }
+    c = &w->contacts[ci];
+    memset(c, 0, sizeof *c);
+    c->a = a;
+    c->b = b;
+    c->next_free = -2;
+    c->friction = GA2D__SQRT(w->bodies[a].friction * w->bodies[b].friction);
+    c->restitution = w->bodies[a].restitution > w->bodies[b].restitution ? w->bodies[a].restitution : w->bodies[b].restitution;
+    ga2d__link_contact(w, ci, 0);
+    ga2d__link_contact(w, ci, 1);
+    ga2d__pairs_put(w->pair_keys, w->pair_vals, w->pair_capacity, ga2d__pair_key(a, b), ci);
+    ++w->pair_count;
+    ++w->contact_count;
+    return 1;
+}
+
+static void ga2d__destroy_contact(ga2d_world *w, int ci)
+{
+    ga2d__contact *c = &w->contacts[ci];
+    ga2d__unlink_contact(w, ci, 0);
+    ga2d__unlink_contact(w, ci, 1);
+    ga2d__pairs_remove(w, ga2d__pair_key(c->a, c->b));
+    c->next_free = w->contact_free;
+    w->contact_free = ci;
+    --w->contact_count;
+}
+
+static ga2d_body_id ga2d__id_of(const ga2d_world *w, int slot)
+{
+    ga2d_body_id id;
+    id.index1 = (uint32_t)slot + 1;
+    id.generation = w->bodies[slot].generation;
+    return id;
+}
+
+static void ga2d__contact_data(const ga2d_world *w, const ga2d__contact *c, ga2d_contact_data *out)
+{
+    out->body_a = ga2d__id_of(w, c->a);
+    out->body_b = ga2d__id_of(w, c->b);
+    out->manifold = c->manifold;
+}
+
+/* Appends an event; on failure the step reports OUT_OF_MEMORY. */
+static void ga2d__push_event(ga2d_world *w, int end, const ga2d__contact *c)
+{
+    ga2d_contact_data **arr = end ? &w->end_events : &w->begin_events;
+    int *count = end ? &w->end_count : &w->begin_count, *cap = end ? &w->end_capacity : &w->begin_capacity;
+    if (!ga2d__grow(&w->def.allocator, (void **)arr, cap, *count + 1, sizeof **arr)) {
+        w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    ga2d__contact_data(w, c, &(*arr)[(*count)++]);
+}
+
+/* ------------------------------------------------------------- filtering */
+GA2D_API ga2d_filter ga2d_default_filter(void)
+{
+    ga2d_filter f;
+    f.category_bits = 1;
+    f.mask_bits = 0xFFFFFFFFu;
+    f.group_index = 0;
+    return f;
+}
+
+GA2D_API int ga2d_should_collide(ga2d_filter a, ga2d_filter b)
+{
+    if (a.group_index == b.group_index && a.group_index != 0) return a.group_index > 0;
+    return (a.category_bits & b.mask_bits) != 0 && (b.category_bits & a.mask_bits) != 0;
+}
+
+/* A pair gets a contact when the filter allows it and a dynamic body is in
+   it: static and kinematic bodies do not push each other. */
+static int ga2d__pair_wanted(const ga2d_world *w, int i, int j)
+{
+    const ga2d__body *a = &w->bodies[i], *b = &w->bodies[j];
+    if (a->type != GA2D_BODY_DYNAMIC && b->type != GA2D_BODY_DYNAMIC) return 0;
+    return ga2d_should_collide(a->filter, b->filter);
+}
+
+/* ---------------------------------------------------------- proxies */
+static ga2d_aabb ga2d__fatten(ga2d_aabb b, ga2d_real m)
+{
+    b.lower.x -= m;
+    b.lower.y -= m;
+    b.upper.x += m;
+    b.upper.y += m;
+    return b;
+}
+
+static ga2d_transform ga2d__body_xf(const ga2d__body *b)
+{
+    return ga2d_transform_make(ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)), b->q);
+}
+
+static ga2d__tree *ga2d__tree_of(ga2d_world *w, const ga2d__body *b) { return &w->trees[b->type != GA2D_BODY_STATIC]; }
+
+/* Queue a body for pair finding (capacity is kept >= the body slots). */
+static void ga2d__buffer_move(ga2d_world *w, int slot)
+{
+    if (w->bodies[slot].in_move) return;
+    w->bodies[slot].in_move = 1;
+    GA2D_ASSERT(w->move_count < w->move_capacity);
+    w->move_buf[w->move_count++] = slot;
+}
+
+/* Re-fit a body's fat box if it left it, and queue it for pair finding. */
+static void ga2d__update_proxy(ga2d_world *w, int slot)
+{
+    ga2d__body *b = &w->bodies[slot];
+    ga2d__tree *t = ga2d__tree_of(w, b);
+    ga2d_aabb box = ga2d_polygon_aabb(&b->polygon, ga2d__body_xf(b));
+    if (ga2d_aabb_contains(t->nodes[b->proxy].box, box)) return;
+    ga2d__tree_move(t, b->proxy, ga2d__fatten(box, w->aabb_margin));
+    ga2d__buffer_move(w, slot);
+}
+
+/* Pair finding for one queued body: the query callback's context. */
+typedef struct ga2d__pair_query { ga2d_world *w; int self; } ga2d__pair_query;
+
+static void ga2d__pair_found(void *ctx, int other)
+{
+    ga2d__pair_query *q = (ga2d__pair_query *)ctx;
+    ga2d_world *w = q->w;
+    int a = q->self < other ? q->self : other, b = q->self < other ? other : q->self;
+    if (other == q->self) return;
+    /* both queued: the one queued first (smaller slot) finds the pair */
+    if (w->bodies[other].in_move && other < q->self) return;
+    if (!ga2d__pair_wanted(w, a, b) || ga2d__pairs_find(w, ga2d__pair_key(a, b)) >= 0) return;
+    if (!ga2d__grow(&w->def.allocator, (void **)&w->new_pairs, &w->new_pair_capacity, w->new_pair_count + 1,
+                    sizeof *w->new_pairs)) {
+        w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    w->new_pairs[w->new_pair_count++] = ga2d__pair_key(a, b);
+}
+
+static int ga2d__cmp_int(const void *x, const void *y) { int a = *(const int *)x, b = *(const int *)y; return (a > b) - (a < b); }
+static int ga2d__cmp_u64(const void *x, const void *y)
+{
+    uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
+    return (a > b) - (a < b);
+}
+
+/* The broadphase part of a step: fat boxes follow the moving bodies, then
+   every queued body (moved out of its box, created, teleported, refiltered)
+   is queried against the moving tree (and, if it moves, the static tree);
+   new pairs are created in key order, so the result is a function of the
+   world's state alone. */
+static void ga2d__update_pairs(ga2d_world *w)
+{
+    int k, n;
+    for (k = 0; k < w->moving_count; ++k) ga2d__update_proxy(w, w->moving[k]);
+    if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
+    /* drop destroyed bodies and repeats (a slot destroyed and reused) */
+    for (k = 0, n = 0; k < w->move_count; ++k) {
+        int slot = w->move_buf[k];
+        if (w->bodies[slot].type >= 0 && w->bodies[slot].in_move && (n == 0 || w->move_buf[n - 1] != slot))
+            w->move_buf[n++] = slot;
+    }
+    w->move_count = n;
+    w->new_pair_count = 0;
+    for (k = 0; k < w->move_count; ++k) {
+        int slot = w->move_buf[k];
+        ga2d__pair_query q;
+        ga2d_aabb box;
+        q.w = w;
+        q.self = slot;
+        box = ga2d__tree_of(w, &w->bodies[slot])->nodes[w->bodies[slot].proxy].box;
+        ga2d__tree_query(&w->trees[1], box, ga2d__pair_found, &q);
+        if (w->bodies[slot].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
+    }
+    if (w->new_pair_count > 1) qsort(w->new_pairs, (size_t)w->new_pair_count, sizeof *w->new_pairs, ga2d__cmp_u64);
+    for (k = 0, n = w->new_pair_count; k < n; ++k) {
+        uint64_t key = w->new_pairs[k];
+        if (k > 0 && w->new_pairs[k - 1] == key) continue;
+        if (!ga2d__create_contact(w, (int)(key >> 32), (int)(uint32_t)key)) w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+    }
+    /* out of memory: some pairs were not made, so every queued body stays
+       queued and is searched again next step (pairs already made are kept) */
+    if (w->step_error == GA2D_ERR_OUT_OF_MEMORY) return;
+    for (k = 0; k < w->move_count; ++k) w->bodies[w->move_buf[k]].in_move = 0;
+    w->move_count = 0;
+}
+
+/* The narrowphase part: each contact whose fat boxes still overlap gets a
+   new manifold, whose points take over the impulses of the old points
+   with the same id (warm starting); touching begins and ends become
+   events.  A contact whose boxes parted is destroyed. */
+static void ga2d__update_contacts(ga2d_world *w)
+{
+    int ci;
+    w->begin_count = w->end_count = 0;
+    for (ci = 0; ci < w->contact_used; ++ci) {
+        ga2d__contact *c = &w->contacts[ci];
+        const ga2d__body *a, *b;
+        ga2d_manifold m;
+        int i, j, touching;
+        if (c->next_free != -2) continue;
+        a = &w->bodies[c->a];
+        b = &w->bodies[c->b];
+        if (!ga2d_aabb_overlaps(ga2d__tree_of(w, a)->nodes[a->proxy].box, ga2d__tree_of(w, b)->nodes[b->proxy].box)) {
+            if (c->touching) ga2d__push_event(w, 1, c);
+            ga2d__destroy_contact(w, ci);
+            continue;
+        }
+        ga2d__collide(&a->polygon, ga2d__body_xf(a), &b->polygon, ga2d__body_xf(b), w->slop, w->speculative, &m);
+        for (i = 0; i < m.count; ++i)
+            for (j = 0; j < c->manifold.count; ++j)
+                if (c->manifold.points[j].id == m.points[i].id) {
+                    m.points[i].normal_impulse = c->manifold.points[j].normal_impulse;
+                    m.points[i].tangent_impulse = c->manifold.points[j].tangent_impulse;
+                    m.points[i].persisted = 1;
+                }
+        touching = m.count > 0;
+        if (!touching && c->touching) ga2d__push_event(w, 1, c); /* with its last touching manifold */
+        c->manifold = m;
+        if (touching && !c->touching) ga2d__push_event(w, 0, c);
+        c->touching = touching;
+    }
+}
+
+/* Ends every contact of a body (it is being destroyed or refiltered). */
+static void ga2d__destroy_body_contacts(ga2d_world *w, int slot, int only_unwanted)
+{
+    int link = w->bodies[slot].contact_head;
+    while (link >= 0) {
+        int ci = link >> 1, side = link & 1, next = w->contacts[ci].next[side];
+        if (!only_unwanted || !ga2d__pair_wanted(w, w->contacts[ci].a, w->contacts[ci].b)) ga2d__destroy_contact(w, ci);
+        link = next;
+    }
+}
+
+/* ------------------------------------------------------------- queries */
+GA2D_API ga2d_result ga2d_body_set_filter(ga2d_world *w, ga2d_body_id id, ga2d_filter f)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    if (r != GA2D_OK) return r;
+    b->filter = f;
+    ga2d__destroy_body_contacts(w, (int)id.index1 - 1, 1);
+    ga2d__buffer_move(w, (int)id.index1 - 1); /* pairs it may now make */
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_filter ga2d_body_filter(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    ga2d_filter f;
+    memset(&f, 0, sizeof f);
+    return b ? b->filter : f;
+}
+
+GA2D_API ga2d_aabb ga2d_body_fat_aabb(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    ga2d_aabb box;
+    memset(&box, 0, sizeof box);
+    return b ? w->trees[b->type != GA2D_BODY_STATIC].nodes[b->proxy].box : box;
+}
+
+static int ga2d__list_contacts(const ga2d_world *w, ga2d_contact_data *out, int capacity, int touching_only)
+{
+    int ci, n = 0;
+    if (!w) return 0;
+    for (ci = 0; ci < w->contact_used; ++ci) {
+        const ga2d__contact *c = &w->contacts[ci];
+        if (c->next_free != -2 || (touching_only && !c->touching)) continue;
+        if (out && n < capacity) ga2d__contact_data(w, c, &out[n]);
+        ++n;
+    }
+    return n;
+}
+
+GA2D_API int ga2d_world_get_pairs(const ga2d_world *w, ga2d_contact_data *out, int capacity)
+{
+    return ga2d__list_contacts(w, out, capacity, 0);
+}
+
+GA2D_API int ga2d_world_get_contacts(const ga2d_world *w, ga2d_contact_data *out, int capacity)
+{
+    return ga2d__list_contacts(w, out, capacity, 1);
+}
+
+GA2D_API ga2d_contact_events ga2d_world_contact_events(const ga2d_world *w)
+{
+    ga2d_contact_events e;
+    memset(&e, 0, sizeof e);
+    if (!w) return e;
+    e.begin = w->begin_events;
+    e.begin_count = w->begin_count;
+    e.end = w->end_events;
+    e.end_count = w->end_count;
+    return e;
+}
+
+GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_contact_data *out, int capacity)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    int link, n = 0;
+    if (!b) return 0;
+    for (link = b->contact_head; link >= 0; link = w->contacts[link >> 1].next[link & 1]) {
+        const ga2d__contact *c = &w->contacts[link >> 1];
+        if (!c->touching) continue;
+        if (out && n < capacity) ga2d__contact_data(w, c, &out[n]);
+        ++n;
+    }
+    return n;
 }
 
 /* ---------------------------------------------------------------- world */
@@ -1496,6 +2228,12 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     memset(w, 0, sizeof *w);
     w->def = d;
     w->free_head = -1;
+    w->trees[0].root = w->trees[0].free_list = -1;
+    w->trees[1].root = w->trees[1].free_list = -1;
+    w->contact_free = -1;
+    w->slop = GA2D__R(GA2D_LINEAR_SLOP) * d.length_units_per_meter;
+    w->speculative = GA2D__R(GA2D_SPECULATIVE_DISTANCE) * d.length_units_per_meter;
+    w->aabb_margin = GA2D__R(GA2D_AABB_MARGIN) * d.length_units_per_meter;
     return w;
 }
 
@@ -1507,6 +2245,15 @@ GA2D_API void ga2d_world_destroy(ga2d_world *w)
     ga2d__free(&a, w->bodies, (size_t)w->body_capacity * sizeof *w->bodies);
     ga2d__free(&a, w->moving, (size_t)w->moving_capacity * sizeof *w->moving);
     ga2d__free(&a, w->rk4, (size_t)w->rk4_capacity * sizeof *w->rk4);
+    ga2d__tree_release(&a, &w->trees[0]);
+    ga2d__tree_release(&a, &w->trees[1]);
+    ga2d__free(&a, w->move_buf, (size_t)w->move_capacity * sizeof *w->move_buf);
+    ga2d__free(&a, w->new_pairs, (size_t)w->new_pair_capacity * sizeof *w->new_pairs);
+    ga2d__free(&a, w->contacts, (size_t)w->contact_capacity * sizeof *w->contacts);
+    ga2d__free(&a, w->pair_keys, (size_t)w->pair_capacity * sizeof *w->pair_keys);
+    ga2d__free(&a, w->pair_vals, (size_t)w->pair_capacity * sizeof *w->pair_vals);
+    ga2d__free(&a, w->begin_events, (size_t)w->begin_capacity * sizeof *w->begin_events);
+    ga2d__free(&a, w->end_events, (size_t)w->end_capacity * sizeof *w->end_events);
     ga2d__free(&a, w, sizeof *w);
 }
 
@@ -1524,6 +2271,8 @@ GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w)
     c = w->counters;
     c.body_count = w->body_count;
     c.moving_body_count = w->moving_count;
+    c.pair_count = w->contact_count;
+    c.touching_count = ga2d_world_get_contacts(w, NULL, 0);
     return c;
 }
 
@@ -1604,6 +2353,7 @@ GA2D_API ga2d_body_def ga2d_default_body_def(void)
     d.friction = GA2D__R(0.6);
     d.gravity_scale = 1;
     d.is_awake = 1;
+    d.filter = ga2d_default_filter();
     return d;
 }
 
@@ -1671,6 +2421,9 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
     /* every allocation first: a failure leaves the world as it was */
     slot = w->free_head >= 0 ? w->free_head : w->body_used;
     if (!ga2d__grow(&w->def.allocator, (void **)&w->bodies, &w->body_capacity, slot + 1, sizeof *w->bodies)) return id;
+    if (!ga2d__grow(&w->def.allocator, (void **)&w->move_buf, &w->move_capacity, w->body_used + 1, sizeof *w->move_buf))
+        return id;
+    if (!ga2d__tree_reserve(&w->def.allocator, &w->trees[moves], 1)) return id;
     if (moves) {
         if (!ga2d__grow(&w->def.allocator, (void **)&w->moving, &w->moving_capacity, w->moving_count + 1, sizeof *w->moving))
             return id;
@@ -1720,6 +2473,10 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
         b->w = (b->fixed_rotation && def->type == GA2D_BODY_DYNAMIC) ? 0 : def->angular_velocity;
         ga2d__moving_add(w, slot);
     }
+    b->filter = def->filter;
+    b->contact_head = -1;
+    b->proxy = ga2d__tree_create(&w->trees[moves], ga2d__fatten(ga2d_polygon_aabb(&poly, ga2d__body_xf(b)), w->aabb_margin), slot);
+    ga2d__buffer_move(w, slot);
     ++w->body_count;
     id.index1 = (uint32_t)slot + 1;
     id.generation = b->generation;
@@ -1733,7 +2490,10 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
     int slot;
     if (r != GA2D_OK) return r;
     slot = (int)id.index1 - 1;
+    ga2d__destroy_body_contacts(w, slot, 0);
+    ga2d__tree_destroy(ga2d__tree_of(w, b), b->proxy);
     ga2d__moving_remove(w, slot);
+    b->in_move = 0;
     b->type = -1;
     b->generation = b->generation + 1 ? b->generation + 1 : 1;
     b->next_free = w->free_head;
@@ -1842,6 +2602,7 @@ GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2
     }
     b->center = ga2d_vec_add(position, ga2d_rotate(b->q, b->local_center));
     b->field_valid = 0;
+    ga2d__update_proxy(w, (int)id.index1 - 1);
     return GA2D_OK;
 }
 
@@ -2257,6 +3018,9 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     h = dt / (ga2d_real)w->def.substeps;
     if (!(h > 0)) return GA2D_ERR_INVALID_ARGUMENT; /* dt underflows when split */
     w->locked = 1;
+    w->step_error = GA2D_OK;
+    ga2d__update_pairs(w);
+    ga2d__update_contacts(w);
     w->counters.integrated_bodies = 0;
     w->counters.force_evaluations = 0;
     w->counters.rotation_updates = 0;
@@ -2277,7 +3041,7 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     }
     ++w->counters.step_count;
     w->locked = 0;
-    return GA2D_OK;
+    return w->step_error;
 }
 
 #ifdef __cplusplus

@@ -1,2 +1,385 @@
+/* The broadphase and the world's contacts: the pair set against an O(n^2)
+   check every step, filtering, pair rules (no static-static or
+   kinematic-only pairs), begin/end events against the manifolds, contacts
+   of destroyed and refiltered bodies, and running out of memory in a step.
+   No contact solver yet: bodies pass through each other, which is what a
+   broadphase test wants (pairs come and go all the time). */
 #include "test.h"
-void suite_contacts(void) {}
+
+typedef struct scene {
+    ga2d_world *w;
+    ga2d_body_id *ids;
+    int n;
+} scene;
+
+/* A sorted list of pairs as (slot a, slot b) keys. */
+static int cmp_u64(const void *x, const void *y)
+{
+    uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
+    return (a > b) - (a < b);
+}
+
+static uint64_t key_of(ga2d_body_id a, ga2d_body_id b)
+{
+    uint32_t i = a.index1, j = b.index1;
+    return i < j ? ((uint64_t)i << 32) | j : ((uint64_t)j << 32) | i;
+}
+
+static int aabb_overlap(ga2d_aabb a, ga2d_aabb b)
+{
+    return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y && b.lower.y <= a.upper.y;
+}
+
+/* The independent reference: every pair of live bodies with at least one
+   dynamic body, a filter that allows it, and overlapping fat boxes. */
+static int brute_pairs(const scene *s, uint64_t *out)
+{
+    int i, j, n = 0;
+    for (i = 0; i < s->n; ++i) {
+        ga2d_aabb bi;
+        if (!ga2d_body_is_valid(s->w, s->ids[i])) continue;
+        bi = ga2d_body_fat_aabb(s->w, s->ids[i]);
+        for (j = i + 1; j < s->n; ++j) {
+            ga2d_body_type ti = ga2d_body_get_type(s->w, s->ids[i]), tj;
+            ga2d_filter fi = ga2d_body_filter(s->w, s->ids[i]), fj;
+            if (!ga2d_body_is_valid(s->w, s->ids[j])) continue;
+            tj = ga2d_body_get_type(s->w, s->ids[j]);
+            fj = ga2d_body_filter(s->w, s->ids[j]);
+            if (ti != GA2D_BODY_DYNAMIC && tj != GA2D_BODY_DYNAMIC) continue;
+            /* the filter rule, written out independently */
+            if (fi.group_index == fj.group_index && fi.group_index != 0) {
+                if (fi.group_index < 0) continue;
+            } else if (!(fi.category_bits & fj.mask_bits) || !(fj.category_bits & fi.mask_bits)) {
+                continue;
+            }
+            if (aabb_overlap(bi, ga2d_body_fat_aabb(s->w, s->ids[j]))) out[n++] = key_of(s->ids[i], s->ids[j]);
+        }
+    }
+    qsort(out, (size_t)n, sizeof *out, cmp_u64);
+    return n;
+}
+
+static int world_pairs(const scene *s, uint64_t *out, ga2d_contact_data *buf, int cap)
+{
+    int n = ga2d_world_get_pairs(s->w, buf, cap), i;
+    for (i = 0; i < n && i < cap; ++i) out[i] = key_of(buf[i].body_a, buf[i].body_b);
+    if (n > 1) qsort(out, (size_t)n, sizeof *out, cmp_u64);
+    return n;
+}
+
+/* 1000 bodies of mixed types and shapes wandering in a 120 m square,
+   wrapped around by teleporting; a fifth filtered by category, mask or
+   group.  Every step the world's pair set must equal the brute-force set,
+   the fat box must contain the body's box, and a pair's body A has the
+   smaller slot. */
+static void pairs_match_brute_force(void)
+{
+    const int n = 1000, steps = 200, cap = 200000;
+    test_rng rng = {51};
+    scene s;
+    uint64_t *mine = (uint64_t *)malloc(sizeof(uint64_t) * cap), *ref = (uint64_t *)malloc(sizeof(uint64_t) * cap);
+    ga2d_contact_data *buf = (ga2d_contact_data *)malloc(sizeof(ga2d_contact_data) * cap);
+    ga2d_world_def wd = ga2d_default_world_def();
+    int i, step, max_pairs = 0, changes = 0, prev = -1;
+    s.ids = (ga2d_body_id *)malloc(sizeof(ga2d_body_id) * n);
+    if (!mine || !ref || !buf || !s.ids) { CHECK(!"out of memory"); goto done; }
+    wd.gravity = ga2d_vec_make(0, 0);
+    s.w = ga2d_world_create(&wd);
+    s.n = n;
+    for (i = 0; i < n; ++i) {
+        ga2d_body_def d = ga2d_default_body_def();
+        int kind = rng_int(&rng, 0, 19);
+        d.type = kind == 0 ? GA2D_BODY_STATIC : kind == 1 ? GA2D_BODY_KINEMATIC : GA2D_BODY_DYNAMIC;
+        d.position = ga2d_vec_make((ga2d_real)rng_uniform(&rng, -60, 60), (ga2d_real)rng_uniform(&rng, -60, 60));
+        d.rotor = ga2d_rotor_from_angle((ga2d_real)rng_uniform(&rng, -3, 3));
+        d.velocity = ga2d_vec_make((ga2d_real)rng_uniform(&rng, -8, 8), (ga2d_real)rng_uniform(&rng, -8, 8));
+        d.angular_velocity = (ga2d_real)rng_uniform(&rng, -3, 3);
+        d.polygon = rng_int(&rng, 0, 1) ? ga2d_polygon_box((ga2d_real)rng_uniform(&rng, 0.2, 1.5), (ga2d_real)rng_uniform(&rng, 0.2, 1.5))
+                                        : ga2d_polygon_regular(rng_int(&rng, 3, GA2D_MAX_POLYGON_VERTICES), (ga2d_real)rng_uniform(&rng, 0.3, 1.5));
+        switch (rng_int(&rng, 0, 9)) {
+        case 0: d.filter.category_bits = 2; d.filter.mask_bits = 0xFFFFFFFDu; break; /* not with its own kind */
+        case 1: d.filter.group_index = -1; break;                                   /* never with group -1 */
+        case 2: d.filter.group_index = 3; d.filter.mask_bits = 0; break;            /* only with group 3 */
+        default: break;
+        }
+        s.ids[i] = ga2d_body_create(s.w, &d);
+        CHECK(!ga2d_body_id_is_null(s.ids[i]));
+    }
+    for (step = 0; step < steps; ++step) {
+        int nm, nr;
+        CHECK_RESULT(ga2d_world_step(s.w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+        nm = world_pairs(&s, mine, buf, cap);
+        nr = brute_pairs(&s, ref);
+        CHECK(nm == nr);
+        CHECK(nm <= cap && memcmp(mine, ref, sizeof(uint64_t) * (size_t)(nm < nr ? nm : nr)) == 0);
+        for (i = 0; i < nm && i < cap; ++i) CHECK(buf[i].body_a.index1 < buf[i].body_b.index1);
+        max_pairs = nm > max_pairs ? nm : max_pairs;
+        changes += prev >= 0 && prev != nm;
+        prev = nm;
+        /* wrap bodies that left the square around to the other side */
+        for (i = 0; i < n; ++i) {
+            ga2d_vec p = ga2d_body_position(s.w, s.ids[i]);
+            if (ga2d_body_get_type(s.w, s.ids[i]) == GA2D_BODY_STATIC) continue;
+            if (p.x > 60 || p.x < -60 || p.y > 60 || p.y < -60) {
+                p.x = p.x > 60 ? p.x - 120 : p.x < -60 ? p.x + 120 : p.x;
+                p.y = p.y > 60 ? p.y - 120 : p.y < -60 ? p.y + 120 : p.y;
+                CHECK_RESULT(ga2d_body_set_transform(s.w, s.ids[i], p, ga2d_body_rotor(s.w, s.ids[i])), GA2D_OK);
+            }
+        }
+        /* destroy and recreate a few bodies along the way */
+        if (step % 20 == 10) {
+            ga2d_body_def d = ga2d_default_body_def();
+            int k = rng_int(&rng, 0, n - 1);
+            CHECK_RESULT(ga2d_body_destroy(s.w, s.ids[k]), GA2D_OK);
+            d.type = GA2D_BODY_DYNAMIC;
+            d.position = ga2d_vec_make((ga2d_real)rng_uniform(&rng, -60, 60), (ga2d_real)rng_uniform(&rng, -60, 60));
+            s.ids[k] = ga2d_body_create(s.w, &d);
+        }
+    }
+    /* the scene is busy enough to test something */
+    CHECK(max_pairs > 100);
+    CHECK(changes > steps / 2);
+    ga2d_world_destroy(s.w);
+done:
+    free(mine);
+    free(ref);
+    free(buf);
+    free(s.ids);
+}
+
+/* The fat box always contains the body's box where the broadphase last
+   looked: at a step's start, and at once after set_transform.  Setting the
+   transform a body already has makes it look now.  A refitted box is the
+   body's box grown by the margin on every side, so at least 2 margins
+   wider than the body; a falling, spinning body leaves it again and again. */
+static void fat_box_contains_body(void)
+{
+    ga2d_world *w = ga2d_world_create(NULL);
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_body_id b;
+    int step, refits = 0;
+    ga2d_aabb last;
+    d.type = GA2D_BODY_DYNAMIC;
+    d.angular_velocity = 3;
+    b = ga2d_body_create(w, &d);
+    last = ga2d_body_fat_aabb(w, b);
+    for (step = 0; step < 300; ++step) {
+        ga2d_aabb fat, tight;
+        ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+        CHECK_RESULT(ga2d_body_set_transform(w, b, ga2d_body_position(w, b), ga2d_body_rotor(w, b)), GA2D_OK);
+        fat = ga2d_body_fat_aabb(w, b);
+        tight = ga2d_polygon_aabb(ga2d_body_polygon(w, b), ga2d_body_transform(w, b));
+        CHECK(ga2d_aabb_contains(fat, tight));
+        refits += memcmp(&fat, &last, sizeof fat) != 0;
+        last = fat;
+        CHECK((double)(fat.upper.x - fat.lower.x) >= 2 * GA2D_AABB_MARGIN);
+        CHECK((double)(fat.upper.y - fat.lower.y) >= 2 * GA2D_AABB_MARGIN);
+    }
+    CHECK(refits > 10);
+    ga2d_world_destroy(w);
+}
+
+/* Begin and end events follow the manifolds: a box falls through another
+   (no solver yet), so the pair touches for a while and then stops. */
+static void begin_and_end_events(void)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_world *w;
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_body_id ground, box;
+    int step, began = 0, ended = 0, touching = 0, was = 0;
+    wd.gravity = ga2d_vec_make(0, -10);
+    w = ga2d_world_create(&wd);
+    ground = ga2d_body_create(w, &d); /* static 1 m box at the origin */
+    d.type = GA2D_BODY_DYNAMIC;
+    d.position = ga2d_vec_make(0.25, 3);
+    box = ga2d_body_create(w, &d);
+    for (step = 0; step < 200; ++step) {
+        ga2d_contact_events e;
+        ga2d_contact_data cd[4];
+        int i, n;
+        CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+        e = ga2d_world_contact_events(w);
+        n = ga2d_world_get_contacts(w, cd, 4);
+        touching = n > 0;
+        /* an event exactly when the touching state changes */
+        CHECK(e.begin_count == (touching && !was));
+        CHECK(e.end_count == (!touching && was));
+        for (i = 0; i < e.begin_count; ++i) {
+            CHECK(ga2d_body_id_equal(e.begin[i].body_a, ground) && ga2d_body_id_equal(e.begin[i].body_b, box));
+            CHECK(e.begin[i].manifold.count > 0);
+            ++began;
+        }
+        for (i = 0; i < e.end_count; ++i) {
+            CHECK(e.end[i].manifold.count > 0); /* the last touching manifold */
+            ++ended;
+        }
+        if (touching) {
+            /* ground is A (smaller slot): the normal points up toward the
+               box while the vertical overlap 1 - y is the smaller one
+               (the horizontal overlap is 1 - 0.25 = 0.75): y > 0.25 */
+            if ((double)ga2d_body_center(w, box).y > 0.3) CHECK((double)cd[0].manifold.normal.y > 0.9);
+            CHECK(ga2d_body_get_contacts(w, box, NULL, 0) == 1 && ga2d_body_get_contacts(w, ground, NULL, 0) == 1);
+        }
+        was = touching;
+    }
+    CHECK(began == 1 && ended == 1);
+    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 0); /* it fell far below */
+    ga2d_world_destroy(w);
+}
+
+/* Static-static and kinematic-only pairs never get contacts, however much
+   they overlap; a dynamic body in the same place does. */
+static void pair_rules(void)
+{
+    ga2d_world *w = ga2d_world_create(NULL);
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_body_id dyn;
+    int i;
+    for (i = 0; i < 3; ++i) ga2d_body_create(w, &d); /* 3 static boxes at one place */
+    d.type = GA2D_BODY_KINEMATIC;
+    for (i = 0; i < 3; ++i) ga2d_body_create(w, &d);
+    ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 0);
+    CHECK(ga2d_world_get_counters(w).pair_count == 0);
+    d.type = GA2D_BODY_DYNAMIC;
+    dyn = ga2d_body_create(w, &d);
+    ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 6);
+    CHECK(ga2d_world_get_contacts(w, NULL, 0) == 6);
+    CHECK(ga2d_body_get_contacts(w, dyn, NULL, 0) == 6);
+    CHECK(ga2d_world_get_counters(w).touching_count == 6);
+    ga2d_world_destroy(w);
+}
+
+/* Destroying a body ends its contacts at once; refiltering ends the ones
+   the new filter forbids and, at the next step, makes the ones it allows. */
+static void destroy_and_refilter(void)
+{
+    ga2d_world *w = ga2d_world_create(NULL);
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_body_id a, b, c;
+    ga2d_filter f;
+    d.type = GA2D_BODY_DYNAMIC;
+    a = ga2d_body_create(w, &d);
+    d.position = ga2d_vec_make(0.5, 0);
+    b = ga2d_body_create(w, &d);
+    d.position = ga2d_vec_make(-0.5, 0);
+    c = ga2d_body_create(w, &d);
+    ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 3);
+    CHECK_RESULT(ga2d_body_destroy(w, c), GA2D_OK);
+    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 1);
+    CHECK(ga2d_body_get_contacts(w, a, NULL, 0) == 1);
+    f = ga2d_default_filter();
+    f.group_index = -7;
+    CHECK_RESULT(ga2d_body_set_filter(w, a, f), GA2D_OK);
+    CHECK_RESULT(ga2d_body_set_filter(w, b, f), GA2D_OK);
+    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 0); /* same negative group */
+    f.group_index = 0;
+    CHECK_RESULT(ga2d_body_set_filter(w, b, f), GA2D_OK);
+    ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 1); /* found again */
+    CHECK(ga2d_should_collide(ga2d_default_filter(), ga2d_default_filter()));
+    ga2d_world_destroy(w);
+}
+
+/* A static body created under a resting body finds it (new bodies are
+   queried however still the others are), and a teleport away ends the
+   pair at the next step. */
+static void teleport_and_new_static(void)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_world *w;
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_body_id box;
+    wd.gravity = ga2d_vec_make(0, 0);
+    w = ga2d_world_create(&wd);
+    d.type = GA2D_BODY_DYNAMIC;
+    d.position = ga2d_vec_make(10, 10);
+    box = ga2d_body_create(w, &d);
+    ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    /* a static body created later, right under the resting box */
+    d.type = GA2D_BODY_STATIC;
+    d.position = ga2d_vec_make(10, 9.2);
+    ga2d_body_create(w, &d);
+    ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 1);
+    /* teleport far away: the pair ends at the next step */
+    CHECK_RESULT(ga2d_body_set_transform(w, box, ga2d_vec_make(-50, 0), ga2d_rotor_identity()), GA2D_OK);
+    ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 0);
+    ga2d_world_destroy(w);
+}
+
+/* An allocator that fails from the k-th call on. */
+typedef struct failing { long calls, fail_from, live; } failing;
+static void *fail_alloc(size_t size, void *ctx)
+{
+    failing *f = (failing *)ctx;
+    void *p;
+    if (++f->calls >= f->fail_from) return NULL;
+    p = malloc(size);
+    if (p) ++f->live;
+    return p;
+}
+static void fail_free(void *p, size_t size, void *ctx)
+{
+    (void)size;
+    if (p) --((failing *)ctx)->live;
+    free(p);
+}
+
+/* Contacts grow during a step, so a step can run out of memory: it says so
+   (OUT_OF_MEMORY), the world stays usable and, once memory is back, the
+   missing pairs are found.  Every allocation of the scenario is failed in
+   turn. */
+static void step_out_of_memory(void)
+{
+    long k;
+    for (k = 1; k < 400; ++k) {
+        failing f = {0, 0, 0};
+        ga2d_world_def wd = ga2d_default_world_def();
+        ga2d_world *w;
+        ga2d_body_def d = ga2d_default_body_def();
+        int i, stepped = 0, oom = 0;
+        f.fail_from = 1000000;
+        wd.allocator.alloc = fail_alloc;
+        wd.allocator.free = fail_free;
+        wd.allocator.ctx = &f;
+        w = ga2d_world_create(&wd);
+        if (!w) { CHECK(!"world"); continue; }
+        d.type = GA2D_BODY_DYNAMIC;
+        for (i = 0; i < 60; ++i) {
+            d.position = ga2d_vec_make((ga2d_real)(0.3 * (i % 10)), (ga2d_real)(0.3 * (i / 10)));
+            ga2d_body_create(w, &d);
+        }
+        f.fail_from = f.calls + k; /* fail the k-th allocation from here on */
+        for (i = 0; i < 3; ++i) {
+            ga2d_result r = ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+            CHECK(r == GA2D_OK || r == GA2D_ERR_OUT_OF_MEMORY);
+            oom |= r == GA2D_ERR_OUT_OF_MEMORY;
+            stepped += r == GA2D_OK;
+        }
+        f.fail_from = 1000000;
+        CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+        /* all 60 overlapping boxes: every pair whose fat boxes overlap */
+        CHECK(ga2d_world_get_pairs(w, NULL, 0) > 60);
+        CHECK(stepped + oom > 0);
+        ga2d_world_destroy(w);
+        CHECK(f.live == 0);
+        if (!oom) break; /* k is past the scenario's last allocation */
+    }
+    CHECK(k > 3 && k < 400);
+}
+
+void suite_contacts(void)
+{
+    test_run("contacts: pair set equals O(n^2) check, 1000 bodies x 200 steps", pairs_match_brute_force);
+    test_run("contacts: fat boxes follow the body", fat_box_contains_body);
+    test_run("contacts: begin and end events follow the manifolds", begin_and_end_events);
+    test_run("contacts: no static-static or kinematic-only pairs", pair_rules);
+    test_run("contacts: destroy and refilter end contacts", destroy_and_refilter);
+    test_run("contacts: late static bodies and teleports", teleport_and_new_static);
+    test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory);
+}
