@@ -2,6 +2,7 @@
 #   make          build the examples
 #   make demo     build and run the demo (the README's main job)
 #   make test     the test suite in every configuration (the README's test command)
+#   make bench    benchmarks (tests/bench/): speed is measured here, never in tests
 #   make clean
 # Test configurations are built in parallel; the README quick start is built
 # from README.md itself.
@@ -21,7 +22,7 @@ TEST_SRC := $(sort $(wildcard tests/test_*.c))
 TEST_DEP := $(TEST_SRC) tests/test.h $(HEADER)
 EXAMPLES := $(patsubst examples/%.c,$(BUILD)/examples/%,$(wildcard examples/*.c))
 
-.PHONY: all examples demo test test-build clean
+.PHONY: all examples demo test test-build bench clean
 
 all: examples
 examples: $(EXAMPLES)
@@ -76,6 +77,17 @@ test:
 	@$(MAKE) --no-print-directory -j$(NPROC) test-build
 	@echo "README quick start:" && ./$(BUILD)/readme/quickstart && ./$(BUILD)/readme/quickstart-cxx >/dev/null
 	@sh tests/run_all.sh $(TEST_BINS)
+
+# --- benchmarks: tests/bench/bench_*.c, each given a CSV path under build/bench
+BENCH_SRC  := $(wildcard tests/bench/bench_*.c)
+BENCH_BINS := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
+
+$(BUILD)/bench/%: tests/bench/%.c $(HEADER)
+	@mkdir -p $(dir $@)
+	gcc -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
+
+bench: $(BENCH_BINS)
+	@for b in $(BENCH_BINS); do echo "== $$b"; ./$$b $(BUILD)/bench/$$(basename $$b).csv || exit 1; done
 
 clean:
 	rm -rf $(BUILD)

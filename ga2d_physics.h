@@ -1,4 +1,4 @@
-/* ga2d_physics.h - v0.2.0 - 2D rigid-body physics of convex polygons,
+/* ga2d_physics.h - v0.3.0 - 2D rigid-body physics of convex polygons,
    written in the geometric algebra of the plane.   MIT / public domain.
 
    ==========================================================================
@@ -15,7 +15,11 @@
        inertia), precise even far from the origin;
      - a world of static, kinematic and dynamic bodies moving under
        gravity, forces, torques, impulses and a user force field, with a
-       choice of integrator and rotor update (contacts come next).
+       choice of integrator and rotor update;
+     - collision detection: SAT contact manifolds (usable alone, without a
+       world) and a broadphase of dynamic AABB trees that keeps the world's
+       contact list, with begin/end events and filtering.  (The contact
+       solver comes next: bodies do not push each other yet.)
 
    ==========================================================================
    HOW TO USE IT
@@ -147,6 +151,33 @@
      }
 
    ==========================================================================
+   COLLISION
+   ==========================================================================
+     ga2d_manifold m;
+     int n = ga2d_collide_polygons(&poly_a, xa, &poly_b, xb, &m);
+     // n points (0, 1 or 2); m.normal is unit, from A to B;
+     // m.points[i].separation < 0 is penetration, .point is in world space
+
+   The separating-axis test runs over both polygons' edge normals in A's
+   own frame (so far from the origin it is as precise as near it).  The
+   reference face is B's only when B's axis beats A's by 0.1 linear slop,
+   so the choice does not flicker; the incident edge is clipped to the
+   reference face; points up to the speculative distance (4 slop) apart
+   are kept, so fast bodies are caught before they overlap; two polygons
+   apart corner to corner get their true distance.  Each point's id names
+   the features that made it and survives small motion.
+
+   In a world, every body has a fat AABB (its box grown by
+   GA2D_AABB_MARGIN) in one of two dynamic AABB trees, static or moving; a
+   body that leaves its fat box is re-inserted and its new pairs found.
+   Pairs need a dynamic body and a filter that allows them (ga2d_filter:
+   category and mask bits, group index).  Each pair is a contact whose
+   manifold is recomputed every step; ga2d_world_get_contacts lists the
+   touching ones and ga2d_world_contact_events which began and ended
+   touching in the last step.  All tolerances scale with
+   ga2d_world_def.length_units_per_meter.
+
+   ==========================================================================
    ERRORS
    ==========================================================================
    Functions that can fail return a ga2d_result (GA2D_OK = 0) and leave
@@ -157,6 +188,8 @@
    ==========================================================================
    VERSION HISTORY
    ==========================================================================
+   0.3.0  SAT narrowphase, dynamic AABB tree broadphase, contacts, events,
+          filtering.
    0.2.0  world and bodies; symplectic Euler, Verlet and RK4 integrators;
           exact and first-order rotor updates; force callback; counters.
    0.1.0  algebra, polygons, hull, exact mass properties.
@@ -170,7 +203,7 @@
 #include <stdint.h>
 
 #define GA2D_VERSION_MAJOR 0
-#define GA2D_VERSION_MINOR 2
+#define GA2D_VERSION_MINOR 3
 #define GA2D_VERSION_PATCH 0
 
 #ifndef GA2D_MAX_POLYGON_VERTICES
@@ -1492,26 +1525,64 @@ static ga2d_real ga2d__max_separation(const ga2d__hull *p1, const ga2d__hull *p2
     return best;
 }
 
-/* Closest points of segments p1q1 and p2q2: fractions s, t in [0, 1]
-   along each (the textbook clamp-and-reclamp solution). */
-static void ga2d__segment_closest(ga2d_vec p1, ga2d_vec q1, ga2d_vec p2, ga2d_vec q2, ga2d_real *s, ga2d_real *t)
+/* The nearest an edge of polygon pe comes to a vertex of polygon pv (both
+   in one frame): the distance, the edge, the vertex, the point on the
+   edge, and whether that point is one of the edge's ends (then `end` is
+   that vertex of pe, else -1). */
+typedef struct ga2d__closest {
+    ga2d_real dist;
+    int edge, vertex, end;
+    ga2d_vec on_edge;
+} ga2d__closest;
+
+static ga2d__closest ga2d__closest_to_edges(const ga2d__hull *pv, const ga2d__hull *pe, ga2d_real tie)
 {
-    ga2d_vec d1 = ga2d_vec_sub(q1, p1), d2 = ga2d_vec_sub(q2, p2), r = ga2d_vec_sub(p1, p2);
-    ga2d_real a = ga2d_dot(d1, d1), e = ga2d_dot(d2, d2), f = ga2d_dot(d2, r), c = ga2d_dot(d1, r);
-    ga2d_real b = ga2d_dot(d1, d2), den = a * e - b * b;
-    ga2d_real ss = 0, tt;
-    if (den > 0) ss = (b * f - c * e) / den;
-    ss = ss < 0 ? 0 : (ss > 1 ? 1 : ss);
-    tt = (b * ss + f) / e;
-    if (tt < 0) {
-        tt = 0;
-        ss = -c / a;
-    } else if (tt > 1) {
-        tt = 1;
-        ss = (b - c) / a;
+    ga2d__closest c;
+    ga2d_real facing = -2;
+    int i, j;
+    c.dist = GA2D__MAX;
+    c.edge = c.vertex = 0;
+    c.end = -1;
+    c.on_edge = pe->v[0];
+    for (j = 0; j < pe->count; ++j) {
+        int j2 = j + 1 < pe->count ? j + 1 : 0;
+        ga2d_vec e = ga2d_vec_sub(pe->v[j2], pe->v[j]);
+        ga2d_real ee = ga2d_dot(e, e);
+        for (i = 0; i < pv->count; ++i) {
+            ga2d_real t = ga2d_dot(ga2d_vec_sub(pv->v[i], pe->v[j]), e) / ee, d;
+            int end = -1;
+            ga2d_vec q;
+            if (t <= 0) { t = 0; end = j; }
+            else if (t >= 1) { t = 1; end = j2; }
+            q = ga2d_vec_add(pe->v[j], ga2d_vec_scale(e, t));
+            d = ga2d_vec_length(ga2d_vec_sub(pv->v[i], q));
+            /* nearer by more than `tie` wins; within it, the edge that
+               faces the vertex best (a corner is as near to both of its
+               edges, and only one of them faces the gap) */
+            if (d < c.dist - tie || (d <= c.dist + tie && ga2d_dot(pe->n[j], ga2d_vec_sub(pv->v[i], q)) > facing * d)) {
+                facing = d > 0 ? ga2d_dot(pe->n[j], ga2d_vec_sub(pv->v[i], q)) / d : 1;
+                c.dist = d;
+                c.edge = j;
+                c.vertex = i;
+                c.end = end;
+                c.on_edge = q;
+            }
+        }
     }
-    *s = ss < 0 ? 0 : (ss > 1 ? 1 : ss);
-    *t = tt;
+    return c;
+}
+
+/* How far the other polygon lies above face i's line (its SAT gap):
+   negative when some vertex of it is below, even past the face's ends. */
+static ga2d_real ga2d__face_gap(const ga2d__hull *p, int i, const ga2d__hull *other)
+{
+    ga2d_real lo = GA2D__MAX;
+    int j;
+    for (j = 0; j < other->count; ++j) {
+        ga2d_real g = ga2d_dot(p->n[i], ga2d_vec_sub(other->v[j], p->v[i]));
+        lo = g < lo ? g : lo;
+    }
+    return lo;
 }
 
 static uint32_t ga2d__feature_id(int flip, int ia, int ib)
@@ -1538,11 +1609,13 @@ static void ga2d__put_point(ga2d_manifold *m, ga2d_transform xa, ga2d_vec d_ab, 
    Steps: SAT over both sets of normals; B's face becomes the reference only
    when its separation beats A's by 0.1 slop (so the choice does not flicker
    between nearly equal axes); the incident edge is the other polygon's
-   edge most against the reference normal; when the polygons are apart by
-   more than 0.1 slop and the closest features are two vertices, the true
-   distance and its direction are used (one point); otherwise the incident
-   edge is clipped to the reference face's side planes and each end within
-   the margin becomes a point, placed midway between the surfaces. */
+   edge most against the reference normal.  When the polygons are apart by
+   more than 0.1 slop the closest features are found exactly instead: two
+   vertices give one point at the true distance and direction, a vertex
+   facing an edge makes that edge the reference (A's again, unless B's is
+   nearer by 0.1 slop).  The incident edge is clipped to the reference
+   face's side planes and each end within the margin becomes a point,
+   placed midway between the surfaces. */
 static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_polygon *pb, ga2d_transform xb,
                          ga2d_real slop, ga2d_real margin, ga2d_manifold *m)
 {
@@ -1590,27 +1663,69 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
     v22 = inc->v[i22];
 
     if (sep > GA2D__R(0.1) * slop) {
-        ga2d_real f1, f2;
-        ga2d__segment_closest(r1, r2, v21, v22, &f1, &f2);
-        if ((f1 == 0 || f1 == 1) && (f2 == 0 || f2 == 1)) {
-            /* the closest points are two vertices.  If the incident vertex
-               also lies outside the reference face's slab (by 0.1 slop:
-               parallel faces put the closest points on endpoints too), the
-               gap along the face normal understates the distance: use the
-               true distance and direction */
-            int ir = f1 == 0 ? i11 : i12, ii = f2 == 0 ? i21 : i22;
-            ga2d_vec vr = ref->v[ir], vi = inc->v[ii], dir;
-            ga2d_real along = ga2d_dot(ga2d_vec_sub(vi, vr), ga2d_vec_perp(n));
-            ga2d_real dist = ga2d_vec_normalize(ga2d_vec_sub(vi, vr), &dir);
-            int outside = ir == i11 ? along < -GA2D__R(0.1) * slop : along > GA2D__R(0.1) * slop;
-            if (outside && dist > margin) return 0;
-            if (outside && dist > 0) {
-                m->normal = ga2d_rotate(xa.q, flip ? ga2d_vec_neg(dir) : dir);
-                ga2d__put_point(m, xa, d_ab, ga2d_vec_scale(ga2d_vec_add(vr, vi), GA2D__R(0.5)), dist,
-                                flip ? ga2d__feature_id(1, ii, ir) : ga2d__feature_id(0, ir, ii));
-                return 1;
+        /* Apart: the closest features are found exactly, as the nearest
+           approach of B's vertices to A's edges (ca) and of A's vertices
+           to B's edges (cb); the distance is the smaller.  A face whose
+           approach is within 0.1 slop of the distance and which faces the
+           gap can be the reference: the SAT's choice above if it does (a
+           box landing flat keeps one reference), else the other.  If
+           neither face does, two vertices meet: one point at the true
+           distance along the true direction. */
+        ga2d__closest ca = ga2d__closest_to_edges(&B, &A, GA2D__R(0.1) * slop);
+        ga2d__closest cb = ga2d__closest_to_edges(&A, &B, GA2D__R(0.1) * slop);
+        const ga2d__closest *c;
+        ga2d_real dist = ca.dist < cb.dist ? ca.dist : cb.dist, tol = GA2D__R(0.1) * slop;
+        ga2d_vec fn;
+        /* a side is a face contact when it comes within tol of the
+           distance, its edge faces the gap (the vertex overhangs the
+           edge's end by <= tol), and no vertex of the other lies below
+           the face's line (its gap is the distance, within tol) */
+        int face_a = ca.dist <= dist + tol &&
+                     GA2D__FABS(ga2d_wedge(A.n[ca.edge], ga2d_vec_sub(B.v[ca.vertex], ca.on_edge))) <= tol &&
+                     ga2d__face_gap(&A, ca.edge, &B) >= dist - tol;
+        int face_b = cb.dist <= dist + tol &&
+                     GA2D__FABS(ga2d_wedge(B.n[cb.edge], ga2d_vec_sub(A.v[cb.vertex], cb.on_edge))) <= tol &&
+                     ga2d__face_gap(&B, cb.edge, &A) >= dist - tol;
+        if (dist > margin) return 0;
+        if (!face_a && !face_b) {
+            /* two vertices meet: one point, the true distance and direction */
+            ga2d_vec u, qa, qb;
+            int ia, ib;
+            if (ca.dist <= cb.dist) {
+                qa = ca.on_edge; qb = B.v[ca.vertex]; ia = ca.end; ib = ca.vertex;
+            } else {
+                qa = A.v[cb.vertex]; qb = cb.on_edge; ia = cb.vertex; ib = cb.end;
             }
+            ga2d_vec_normalize(ga2d_vec_sub(qb, qa), &u);
+            m->normal = ga2d_rotate(xa.q, u);
+            /* no face is the reference: the flip bit is 0 (both searches
+               find the same two vertices at one distance, so which of
+               them reports it is rounding, and must not show in the id) */
+            ga2d__put_point(m, xa, d_ab, ga2d_vec_scale(ga2d_vec_add(qa, qb), GA2D__R(0.5)), dist,
+                            ga2d__feature_id(0, ia < 0 ? 0 : ia, ib < 0 ? 0 : ib));
+            return 1;
         }
+        /* the SAT's choice (with its hysteresis, above) when that face
+           faces the gap, so both argument orders agree; else the other */
+        if (flip ? !face_b : !face_a) flip = !flip;
+        c = flip ? &cb : &ca;
+        ref = flip ? &B : &A;
+        inc = flip ? &A : &B;
+        fn = ref->n[c->edge];
+        i11 = c->edge;
+        i12 = i11 + 1 < ref->count ? i11 + 1 : 0;
+        n = fn;
+        r1 = ref->v[i11];
+        r2 = ref->v[i12];
+        i21 = 0;
+        lo_dot = GA2D__MAX;
+        for (j = 0; j < inc->count; ++j) {
+            ga2d_real d = ga2d_dot(n, inc->n[j]);
+            if (d < lo_dot) { lo_dot = d; i21 = j; }
+        }
+        i22 = i21 + 1 < inc->count ? i21 + 1 : 0;
+        v21 = inc->v[i21];
+        v22 = inc->v[i22];
     }
 
     /* clip the incident edge (v21 -> v22 runs against r1 -> r2) to the
@@ -1621,9 +1736,14 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
         ga2d_real upper2 = ga2d_dot(ga2d_vec_sub(v21, r1), t), lower2 = ga2d_dot(ga2d_vec_sub(v22, r1), t);
         ga2d_real span = upper2 - lower2, s_lo, s_hi;
         ga2d_vec v_lo = v22, v_hi = v21;
+        /* fractions clamped to the edge: an incident edge lying wholly past
+           a side plane is not extended beyond its own ends */
         if (span > 0) {
-            if (lower2 < 0) v_lo = ga2d_vec_add(v22, ga2d_vec_scale(ga2d_vec_sub(v21, v22), (0 - lower2) / span));
-            if (upper2 > upper1) v_hi = ga2d_vec_add(v22, ga2d_vec_scale(ga2d_vec_sub(v21, v22), (upper1 - lower2) / span));
+            ga2d_real f_lo = (0 - lower2) / span, f_hi = (upper1 - lower2) / span;
+            f_lo = f_lo < 0 ? 0 : (f_lo > 1 ? 1 : f_lo);
+            f_hi = f_hi < 0 ? 0 : (f_hi > 1 ? 1 : f_hi);
+            if (lower2 < 0) v_lo = ga2d_vec_add(v22, ga2d_vec_scale(ga2d_vec_sub(v21, v22), f_lo));
+            if (upper2 > upper1) v_hi = ga2d_vec_add(v22, ga2d_vec_scale(ga2d_vec_sub(v21, v22), f_hi));
         }
         s_lo = ga2d_dot(ga2d_vec_sub(v_lo, r1), n);
         s_hi = ga2d_dot(ga2d_vec_sub(v_hi, r1), n);
