@@ -179,8 +179,8 @@ static void fat_box_contains_body(void)
     ga2d_world_destroy(w);
 }
 
-/* Begin and end events follow the manifolds: a box falls through another
-   (no solver yet), so the pair touches for a while and then stops. */
+/* Begin and end events follow the manifolds: a box falls onto the ground
+   and rests (one begin), then is thrown up and leaves (one end). */
 static void begin_and_end_events(void)
 {
     ga2d_world_def wd = ga2d_default_world_def();
@@ -189,6 +189,7 @@ static void begin_and_end_events(void)
     ga2d_body_id ground, box;
     int step, began = 0, ended = 0, touching = 0, was = 0;
     wd.gravity = ga2d_vec_make(0, -10);
+    wd.enable_sleep = 0;
     w = ga2d_world_create(&wd);
     ground = ga2d_body_create(w, &d); /* static 1 m box at the origin */
     d.type = GA2D_BODY_DYNAMIC;
@@ -198,6 +199,7 @@ static void begin_and_end_events(void)
         ga2d_contact_events e;
         ga2d_contact_data cd[4];
         int i, n;
+        if (step == 120) CHECK_RESULT(ga2d_body_set_velocity(w, box, ga2d_vec_make(0, 8)), GA2D_OK);
         CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
         e = ga2d_world_contact_events(w);
         n = ga2d_world_get_contacts(w, cd, 4);
@@ -215,16 +217,15 @@ static void begin_and_end_events(void)
             ++ended;
         }
         if (touching) {
-            /* ground is A (smaller slot): the normal points up toward the
-               box while the vertical overlap 1 - y is the smaller one
-               (the horizontal overlap is 1 - 0.25 = 0.75): y > 0.25 */
-            if ((double)ga2d_body_center(w, box).y > 0.3) CHECK((double)cd[0].manifold.normal.y > 0.9);
+            /* ground is A (smaller slot): the normal points up to the box */
+            CHECK((double)cd[0].manifold.normal.y > 0.99);
             CHECK(ga2d_body_get_contacts(w, box, NULL, 0) == 1 && ga2d_body_get_contacts(w, ground, NULL, 0) == 1);
         }
         was = touching;
     }
+    /* up at 8 m/s from step 120, it is in the air 2 v / g = 1.6 s = 96
+       steps: still flying at step 200 */
     CHECK(began == 1 && ended == 1);
-    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 0); /* it fell far below */
     ga2d_world_destroy(w);
 }
 
