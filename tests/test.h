@@ -51,6 +51,7 @@ void suite_world(void);
 void suite_motion(void);
 void suite_collide(void);
 void suite_contacts(void);
+void suite_solver(void);
 
 #ifdef __cplusplus
 }

@@ -70,6 +70,7 @@ int main(void)
     suite_motion();
     suite_collide();
     suite_contacts();
+    suite_solver();
     printf("%d passed, %d failed\n", g_passed, g_failed);
     return g_failed ? 1 : 0;
 }
