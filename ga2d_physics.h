@@ -480,7 +480,11 @@ typedef struct ga2d_world_def {
     ga2d_real contact_hertz;              /* soft contact stiffness, at most a quarter
                                              of the substep rate; 0 means 45 */
     ga2d_real contact_damping_ratio;      /* 0 means 10 */
-    ga2d_real contact_push_max_velocity;  /* m/s; 0 means 3 */
+    ga2d_real contact_push_max_velocity;  /* m/s per contact; 0 means 0.8 (pushes
+                                             add up along a stack: at 0.8 ten
+                                             boxes overlapped 25% part in 0.8 s,
+                                             none faster than 4.4 m/s; at 3,
+                                             Box2D's, the top one flies at 15) */
     ga2d_real restitution_threshold;      /* m/s of approach; 0 means 1 */
     int enable_sleep;                     /* islands at rest sleep (default 1) */
     int enable_warm_starting;             /* reuse last step's impulses (default 1) */
@@ -1867,8 +1871,7 @@ typedef struct ga2d__cpoint {
     ga2d_real separation;        /* at the step's start */
     ga2d_real normal_mass, tangent_mass;
     ga2d_real normal_impulse, tangent_impulse, max_normal_impulse;
-    ga2d_real approach;          /* normal velocity at the start (restitution) */
-    ga2d_real impact_speed;      /* the speed it will hit at (restitution) */
+    ga2d_real restitution_impulse; /* what the collision phase gave it */
 } ga2d__cpoint;
 
 typedef struct ga2d__constraint {
@@ -2434,7 +2437,7 @@ GA2D_API ga2d_world_def ga2d_default_world_def(void)
     d.position_iterations = 3;
     d.contact_hertz = 45;
     d.contact_damping_ratio = 10;
-    d.contact_push_max_velocity = 3;
+    d.contact_push_max_velocity = GA2D__R(0.8);
     d.restitution_threshold = 1;
     d.enable_sleep = 1;
     d.enable_warm_starting = 1;
@@ -2474,7 +2477,7 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     if (d.position_iterations == 0) d.position_iterations = 3;
     if (d.contact_hertz == 0) d.contact_hertz = 45;
     if (d.contact_damping_ratio == 0) d.contact_damping_ratio = 10;
-    if (d.contact_push_max_velocity == 0) d.contact_push_max_velocity = 3;
+    if (d.contact_push_max_velocity == 0) d.contact_push_max_velocity = GA2D__R(0.8);
     if (d.restitution_threshold == 0) d.restitution_threshold = 1;
     w = (ga2d_world *)ga2d__alloc(&d.allocator, sizeof *w);
     if (!w) return NULL;
@@ -3539,17 +3542,7 @@ static void ga2d__prepare_contacts(ga2d_world *w)
             p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
             p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
             p->max_normal_impulse = 0;
-            p->approach = ga2d_dot(ga2d__relative_velocity(a, b, p->ra, p->rb), c->normal);
-            /* Still apart by s > 0, the pair keeps closing under its
-               accelerations for the rest of the gap: it hits at
-               sqrt(v^2 + 2 a s), not at v (energy over the gap).  Using v
-               would lose the gravity of the last fraction of a step at
-               every bounce. */
-            p->impact_speed = -p->approach;
-            if (p->separation > 0 && p->approach < 0) {
-                ga2d_real closing = -ga2d_dot(ga2d_vec_sub(ga2d__free_accel(w, b), ga2d__free_accel(w, a)), c->normal);
-                if (closing > 0) p->impact_speed = GA2D__SQRT(p->approach * p->approach + 2 * closing * p->separation);
-            }
+            p->restitution_impulse = 0;
         }
     }
 }
@@ -3676,32 +3669,76 @@ static void ga2d__solve_positions(ga2d_world *w)
     }
 }
 
-/* After the substeps: points that approached faster than the threshold
-   and were pushed get the impulse that sends them apart at e times their
-   approach speed (restitution mixes as the larger of the two).  The two
-   points of a flat landing share a body, so one point's impulse changes
-   the other's speed: the pass is repeated until it settles (8 passes take
-   the error of a flat bounce far below 1%). */
-static void ga2d__restitute(ga2d_world *w)
+/* Restitution, as a collision phase before the substeps (sequential
+   impulses in the manner of Guendelman and Mirtich): every contact with a
+   point that will close its gap within this step (s + v dt - a dt^2/2 <=
+   slop)
+   while approaching faster than the threshold collides: its points get the
+   impulses that make each leave at e times its impact speed, solved
+   together as one block (a flat landing stays flat).  Passes repeat until
+   no contact is still colliding (at most 32), so a touching chain passes
+   an impact along contact by contact: Newton's cradle.  Energy over the
+   gap: a pair still apart by s hits at v_i = sqrt(v^2 + 2 a s) and,
+   turned around where it is, leaves at sqrt(e^2 v_i^2 - 2 a s), what it
+   would have at height s after a true bounce.  Restitution mixes as the
+   larger of the two. */
+static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
 {
     ga2d_real threshold = w->def.restitution_threshold * w->def.length_units_per_meter;
-    int i, k, pass;
-    for (pass = 0; pass < 8; ++pass)
-    for (i = 0; i < w->constraint_count; ++i) {
-        ga2d__constraint *c = &w->constraints[i];
-        ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
-        if (c->restitution == 0) continue;
-        for (k = 0; k < c->count; ++k) {
-            ga2d__cpoint *p = &c->p[k];
-            ga2d_real vn, lambda, total;
-            if (p->approach > -threshold || p->max_normal_impulse == 0) continue;
-            vn = ga2d_dot(ga2d__relative_velocity(a, b, p->ra, p->rb), c->normal);
-            lambda = -p->normal_mass * (vn - c->restitution * p->impact_speed);
-            total = p->normal_impulse + lambda;
-            total = total > 0 ? total : 0;
-            lambda = total - p->normal_impulse;
-            p->normal_impulse = total;
-            ga2d__apply_impulse(c, a, b, p->ra, p->rb, ga2d_vec_scale(c->normal, lambda));
+    int i, k, pass, busy = 1;
+    for (pass = 0; pass < 32 && busy; ++pass) {
+        busy = 0;
+        for (i = 0; i < w->constraint_count; ++i) {
+            ga2d__constraint *c = &w->constraints[i];
+            ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
+            ga2d_real closing, vn[2], want[2], lambda[2];
+            int hit = 0;
+            if (c->restitution == 0) continue;
+            closing = -ga2d_dot(ga2d_vec_sub(ga2d__free_accel(w, b), ga2d__free_accel(w, a)), c->normal);
+            closing = closing > 0 ? closing : 0;
+            for (k = 0; k < c->count; ++k) {
+                ga2d_real gap = c->p[k].separation > 0 ? c->p[k].separation : 0, vi2, leave2;
+                vn[k] = ga2d_dot(ga2d__relative_velocity(a, b, c->p[k].ra, c->p[k].rb), c->normal);
+                /* within slop of closing counts: the substeps' speculative
+                   points would close it, inelastically, if this did not */
+                if (vn[k] < -threshold && gap + vn[k] * dt - closing * dt * dt / 2 <= w->slop) hit = 1;
+                vi2 = vn[k] * vn[k] + 2 * closing * gap;
+                leave2 = c->restitution * c->restitution * vi2 - 2 * closing * gap;
+                want[k] = vn[k] < 0 ? (leave2 > 0 ? GA2D__SQRT(leave2) : 0) : vn[k]; /* leaving: as it is */
+            }
+            if (!hit) continue;
+            busy = 1;
+            lambda[0] = lambda[1] = 0;
+            if (c->count == 2) {
+                /* K lambda = want - vn, K_ij = 1/m_a + 1/m_b + (w_ai w_aj)/I_a + (w_bi w_bj)/I_b
+                   with w = r ^ n: the points' coupling through the bodies */
+                ga2d_real wa0 = ga2d_wedge(c->p[0].ra, c->normal), wa1 = ga2d_wedge(c->p[1].ra, c->normal);
+                ga2d_real wb0 = ga2d_wedge(c->p[0].rb, c->normal), wb1 = ga2d_wedge(c->p[1].rb, c->normal);
+                ga2d_real m = c->inv_ma + c->inv_mb;
+                ga2d_real k11 = m + c->inv_ia * wa0 * wa0 + c->inv_ib * wb0 * wb0;
+                ga2d_real k22 = m + c->inv_ia * wa1 * wa1 + c->inv_ib * wb1 * wb1;
+                ga2d_real k12 = m + c->inv_ia * wa0 * wa1 + c->inv_ib * wb0 * wb1;
+                ga2d_real det = k11 * k22 - k12 * k12, d0 = want[0] - vn[0], d1 = want[1] - vn[1];
+                if (det > GA2D__EPS * 1024 * k11 * k22) {
+                    lambda[0] = (k22 * d0 - k12 * d1) / det;
+                    lambda[1] = (k11 * d1 - k12 * d0) / det;
+                }
+                /* a pulling block falls back to the point that must push */
+                if (!(det > GA2D__EPS * 1024 * k11 * k22) || lambda[0] < 0 || lambda[1] < 0) {
+                    lambda[0] = d0 > 0 ? d0 * c->p[0].normal_mass : 0;
+                    lambda[1] = 0;
+                    if (d1 * c->p[1].normal_mass > lambda[0]) {
+                        lambda[1] = d1 * c->p[1].normal_mass;
+                        lambda[0] = 0;
+                    }
+                }
+            } else {
+                lambda[0] = want[0] > vn[0] ? (want[0] - vn[0]) * c->p[0].normal_mass : 0;
+            }
+            for (k = 0; k < c->count; ++k) {
+                c->p[k].restitution_impulse += lambda[k];
+                ga2d__apply_impulse(c, a, b, c->p[k].ra, c->p[k].rb, ga2d_vec_scale(c->normal, lambda[k]));
+            }
         }
     }
 }
@@ -3847,6 +3884,7 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     ga2d__update_contacts(w);
     ga2d__prepare_contacts(w);
     ga2d__remember_start(w);
+    if (w->def.enable_restitution) ga2d__restitute(w, dt);
     t0 = w->time;
     for (s = 0; s < w->def.substeps; ++s) {
         double t = t0 + (double)h * s; /* no drift from summing h */
@@ -3869,7 +3907,6 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
             break;
         }
     }
-    if (w->def.enable_restitution) ga2d__restitute(w);
     ga2d__store_impulses(w);
     w->counters.constraint_count = w->constraint_count;
     w->time = t0 + (double)dt;
