@@ -1,4 +1,4 @@
-/* ga2d_physics.h - v0.3.0 - 2D rigid-body physics of convex polygons,
+/* ga2d_physics.h - v0.4.0 - 2D rigid-body physics of convex polygons,
    written in the geometric algebra of the plane.   MIT / public domain.
 
    ==========================================================================
@@ -18,8 +18,9 @@
        choice of integrator and rotor update;
      - collision detection: SAT contact manifolds (usable alone, without a
        world) and a broadphase of dynamic AABB trees that keeps the world's
-       contact list, with begin/end events and filtering.  (The contact
-       solver comes next: bodies do not push each other yet.)
+       contact list, with begin/end events and filtering;
+     - a contact solver (soft step by default; PGS with Baumgarte or NGS
+       selectable) with friction, restitution and islands that sleep.
 
    ==========================================================================
    HOW TO USE IT
@@ -178,6 +179,36 @@
    ga2d_world_def.length_units_per_meter.
 
    ==========================================================================
+   THE CONTACT SOLVER
+   ==========================================================================
+   Each step finds pairs and manifolds, then builds a constraint per
+   touching contact.  Restitution runs first, as a collision phase: a
+   contact that will close this step while approaching faster than
+   restitution_threshold (1 m/s) leaves at e times its impact speed, its
+   points solved as one block, contact after contact until nothing
+   collides (so an impact runs down a touching row: Newton's cradle).
+   Then, per substep: velocities, warm start (last step's impulses, matched
+   by feature id), one pass of sequential impulses with a soft bias,
+   positions, and a relax pass without bias.  The normal impulse at a point
+   uses the paper's denominator in GA form,
+       1/m_a + 1/m_b - (r_a ^ n)^2 / I_a - (r_b ^ n)^2 / I_b,
+   (bivectors square to minus their coefficient squared), accumulated and
+   kept >= 0; Coulomb friction keeps the tangent impulse within mu times it
+   (mu mixes as sqrt(mu_a mu_b), e as max(e_a, e_b)).  Soft contacts are
+   springs of contact_hertz (45 Hz, at most a quarter of the substep rate,
+   twice that against static bodies) and damping ratio 10; overlap is
+   pushed out at most contact_push_max_velocity (0.8 m/s) per contact.
+
+   Knobs: substeps; solver kind; contact_hertz; the switches for warm
+   starting, friction, restitution and sleep; ga2d_accurate_world_def()
+   (8 substeps, 90 Hz) for tighter stacks at about 1.8x the cost.
+
+   Sleep: islands of touching dynamic bodies whose points all move under
+   5 cm/s for 0.5 s sleep together: they leave the step (no integration, no
+   broadphase refit, no narrowphase) and keep their state bit for bit.  A
+   touch, a force, an impulse or a setter wakes the island.
+
+   ==========================================================================
    ERRORS
    ==========================================================================
    Functions that can fail return a ga2d_result (GA2D_OK = 0) and leave
@@ -188,6 +219,8 @@
    ==========================================================================
    VERSION HISTORY
    ==========================================================================
+   0.4.0  contact solver: soft step, PGS + Baumgarte, PGS + NGS; friction;
+          restitution as a collision phase; warm starting; sleep.
    0.3.0  SAT narrowphase, dynamic AABB tree broadphase, contacts, events,
           filtering.
    0.2.0  world and bodies; symplectic Euler, Verlet and RK4 integrators;
@@ -203,7 +236,7 @@
 #include <stdint.h>
 
 #define GA2D_VERSION_MAJOR 0
-#define GA2D_VERSION_MINOR 3
+#define GA2D_VERSION_MINOR 4
 #define GA2D_VERSION_PATCH 0
 
 #ifndef GA2D_MAX_POLYGON_VERTICES
