@@ -3592,16 +3592,24 @@ static void ga2d__remember_start(ga2d_world *w)
     }
 }
 
-/* The separation of point p now: its separation at the step's start plus
-   how far B's anchor moved away from A's along the normal, each anchor
-   carried by its body's displacement and turn since then (r q q0~ - r). */
-static ga2d_real ga2d__current_separation(const ga2d__constraint *c, const ga2d__body *a, const ga2d__body *b,
-                                          const ga2d__cpoint *p)
+/* Point p now.  Each body carries its anchor by its motion since the step
+   began (r -> r q q0~); the separation is the start separation plus how far
+   B's anchor point moved away from A's along the normal; and the impulse
+   acts at the midpoint of the two anchor points, the one point the pair
+   shares, so that the impulses -P on A and +P on B have no moment and
+   angular momentum about any point is kept.  Anchors are returned relative
+   to each centre, built from the centre-to-centre vector so that nothing
+   large is subtracted. */
+static ga2d_real ga2d__point_now(const ga2d__constraint *c, const ga2d__body *a, const ga2d__body *b,
+                                 const ga2d__cpoint *p, ga2d_vec *ra, ga2d_vec *rb)
 {
-    ga2d_vec da = ga2d_vec_add(ga2d_vec_sub(a->center, a->center0),
-                               ga2d_vec_sub(ga2d_rotate(ga2d_rotor_mul(a->q, ga2d_rotor_inverse(a->q0)), p->ra), p->ra));
-    ga2d_vec db = ga2d_vec_add(ga2d_vec_sub(b->center, b->center0),
-                               ga2d_vec_sub(ga2d_rotate(ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0)), p->rb), p->rb));
+    ga2d_vec ra1 = ga2d_rotate(ga2d_rotor_mul(a->q, ga2d_rotor_inverse(a->q0)), p->ra);
+    ga2d_vec rb1 = ga2d_rotate(ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0)), p->rb);
+    ga2d_vec d = ga2d_vec_sub(b->center, a->center);
+    ga2d_vec da = ga2d_vec_add(ga2d_vec_sub(a->center, a->center0), ga2d_vec_sub(ra1, p->ra));
+    ga2d_vec db = ga2d_vec_add(ga2d_vec_sub(b->center, b->center0), ga2d_vec_sub(rb1, p->rb));
+    *ra = ga2d_vec_add(ra1, ga2d_vec_scale(ga2d_vec_sub(ga2d_vec_add(d, rb1), ra1), GA2D__R(0.5)));
+    *rb = ga2d_vec_sub(*ra, d);
     return p->separation + ga2d_dot(ga2d_vec_sub(db, da), c->normal);
 }
 
@@ -3615,7 +3623,9 @@ static void ga2d__warm_start(ga2d_world *w)
         for (k = 0; k < c->count; ++k) {
             ga2d__cpoint *p = &c->p[k];
             ga2d_vec P = ga2d_vec_add(ga2d_vec_scale(c->normal, p->normal_impulse), ga2d_vec_scale(t, p->tangent_impulse));
-            ga2d__apply_impulse(c, a, b, p->ra, p->rb, P);
+            ga2d_vec ra, rb;
+            ga2d__point_now(c, a, b, p, &ra, &rb);
+            ga2d__apply_impulse(c, a, b, ra, rb, P);
         }
     }
 }
@@ -3640,9 +3650,10 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
         ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
         const ga2d__soft *sf = c->to_static ? &stiff : &soft;
         ga2d_vec t = ga2d__tangent(c->normal);
+        ga2d_vec ra[2], rb[2];
         for (k = 0; k < c->count; ++k) {
             ga2d__cpoint *p = &c->p[k];
-            ga2d_real s = ga2d__current_separation(c, a, b, p), bias = 0, mass_scale = 1, impulse_scale = 0;
+            ga2d_real s = ga2d__point_now(c, a, b, p, &ra[k], &rb[k]), bias = 0, mass_scale = 1, impulse_scale = 0;
             ga2d_real vn, lambda, total;
             if (s > 0) {
                 bias = s * inv_h;
@@ -3655,25 +3666,25 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
                 bias = GA2D__R(0.2) * inv_h * (s + w->slop);
                 bias = bias < -push ? -push : bias;
             }
-            vn = ga2d_dot(ga2d__relative_velocity(a, b, p->ra, p->rb), c->normal);
+            vn = ga2d_dot(ga2d__relative_velocity(a, b, ra[k], rb[k]), c->normal);
             lambda = -p->normal_mass * mass_scale * (vn + bias) - impulse_scale * p->normal_impulse;
             total = p->normal_impulse + lambda;
             total = total > 0 ? total : 0;
             lambda = total - p->normal_impulse;
             p->normal_impulse = total;
             p->max_normal_impulse = lambda > p->max_normal_impulse ? lambda : p->max_normal_impulse;
-            ga2d__apply_impulse(c, a, b, p->ra, p->rb, ga2d_vec_scale(c->normal, lambda));
+            ga2d__apply_impulse(c, a, b, ra[k], rb[k], ga2d_vec_scale(c->normal, lambda));
         }
         if (!friction) continue;
         for (k = 0; k < c->count; ++k) {
             ga2d__cpoint *p = &c->p[k];
-            ga2d_real vt = ga2d_dot(ga2d__relative_velocity(a, b, p->ra, p->rb), t);
+            ga2d_real vt = ga2d_dot(ga2d__relative_velocity(a, b, ra[k], rb[k]), t);
             ga2d_real lambda = -p->tangent_mass * vt, cap = c->friction * p->normal_impulse;
             ga2d_real total = p->tangent_impulse + lambda;
             total = total > cap ? cap : (total < -cap ? -cap : total);
             lambda = total - p->tangent_impulse;
             p->tangent_impulse = total;
-            ga2d__apply_impulse(c, a, b, p->ra, p->rb, ga2d_vec_scale(t, lambda));
+            ga2d__apply_impulse(c, a, b, ra[k], rb[k], ga2d_vec_scale(t, lambda));
         }
     }
 }
@@ -3689,23 +3700,23 @@ static void ga2d__solve_positions(ga2d_world *w)
         ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
         for (k = 0; k < c->count; ++k) {
             ga2d__cpoint *p = &c->p[k];
-            ga2d_real s = ga2d__current_separation(c, a, b, p), fix = GA2D__R(0.2) * (s + w->slop), lambda;
-            ga2d_vec P;
+            ga2d_vec ra, rb, P;
+            ga2d_real s = ga2d__point_now(c, a, b, p, &ra, &rb), fix = GA2D__R(0.2) * (s + w->slop), lambda;
             fix = fix < -max_fix ? -max_fix : (fix > 0 ? 0 : fix);
             lambda = -p->normal_mass * fix;
             P = ga2d_vec_scale(c->normal, lambda);
             a->center = ga2d_vec_sub(a->center, ga2d_vec_scale(P, c->inv_ma));
             b->center = ga2d_vec_add(b->center, ga2d_vec_scale(P, c->inv_mb));
-            if (c->inv_ia != 0) a->q = ga2d__turn(a->q, -c->inv_ia * ga2d_wedge(p->ra, P), GA2D_ROTATION_LINEAR);
-            if (c->inv_ib != 0) b->q = ga2d__turn(b->q, c->inv_ib * ga2d_wedge(p->rb, P), GA2D_ROTATION_LINEAR);
+            if (c->inv_ia != 0) a->q = ga2d__turn(a->q, -c->inv_ia * ga2d_wedge(ra, P), GA2D_ROTATION_LINEAR);
+            if (c->inv_ib != 0) b->q = ga2d__turn(b->q, c->inv_ib * ga2d_wedge(rb, P), GA2D_ROTATION_LINEAR);
         }
     }
 }
 
 /* Restitution, as a collision phase before the substeps (sequential
    impulses in the manner of Guendelman and Mirtich): every contact with a
-   point that will close its gap within this step (s + v dt - a dt^2/2 <=
-   slop)
+   point that will close its gap within this step or the next substep
+   (s + v t - a t^2/2 <= slop, t = dt + h)
    while approaching faster than the threshold collides: its points get the
    impulses that make each leave at e times its impact speed, solved
    together as one block (a flat landing stays flat).  Passes repeat until
@@ -3718,6 +3729,7 @@ static void ga2d__solve_positions(ga2d_world *w)
 static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
 {
     ga2d_real threshold = w->def.restitution_threshold * w->def.length_units_per_meter;
+    ga2d_real look = dt + dt / (ga2d_real)w->def.substeps;
     int i, k, pass, busy = 1;
     for (pass = 0; pass < 32 && busy; ++pass) {
         busy = 0;
@@ -3732,9 +3744,11 @@ static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
             for (k = 0; k < c->count; ++k) {
                 ga2d_real gap = c->p[k].separation > 0 ? c->p[k].separation : 0, vi2, leave2;
                 vn[k] = ga2d_dot(ga2d__relative_velocity(a, b, c->p[k].ra, c->p[k].rb), c->normal);
-                /* within slop of closing counts: the substeps' speculative
-                   points would close it, inelastically, if this did not */
-                if (vn[k] < -threshold && gap + vn[k] * dt - closing * dt * dt / 2 <= w->slop) hit = 1;
+                /* closing within the step, or the first substep of the next
+                   (the last relax pass brakes a point that is still apart
+                   as if a substep followed; the next step would then see a
+                   braked approach), or within slop of it, collides now */
+                if (vn[k] < -threshold && gap + vn[k] * look - closing * look * look / 2 <= w->slop) hit = 1;
                 vi2 = vn[k] * vn[k] + 2 * closing * gap;
                 leave2 = c->restitution * c->restitution * vi2 - 2 * closing * gap;
                 want[k] = vn[k] < 0 ? (leave2 > 0 ? GA2D__SQRT(leave2) : 0) : vn[k]; /* leaving: as it is */
@@ -3742,7 +3756,12 @@ static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
             if (!hit) continue;
             busy = 1;
             lambda[0] = lambda[1] = 0;
-            if (c->count == 2) {
+            if (c->count == 2 && (vn[0] >= 0 || vn[1] >= 0)) {
+                /* a point already leaving is not held to its speed (that
+                   would push on it and add energy): only the other collides */
+                int j = vn[0] >= 0 ? 1 : 0;
+                lambda[j] = want[j] > vn[j] ? (want[j] - vn[j]) * c->p[j].normal_mass : 0;
+            } else if (c->count == 2) {
                 /* K lambda = want - vn, K_ij = 1/m_a + 1/m_b + (w_ai w_aj)/I_a + (w_bi w_bj)/I_b
                    with w = r ^ n: the points' coupling through the bodies */
                 ga2d_real wa0 = ga2d_wedge(c->p[0].ra, c->normal), wa1 = ga2d_wedge(c->p[1].ra, c->normal);

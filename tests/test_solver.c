@@ -341,10 +341,9 @@ static void incline_run(double theta, double mu, int friction, double *moved2, d
    a = g (sin theta - mu cos theta) when tan theta > mu.  The issue's
    bounds: sticking means moving < 1 cm in 2 s, at tan theta = mu - 0.02
    (and a gentler slope); sliding at tan theta = mu + 0.02 means moving
-   more than that 1 cm; and the acceleration while sliding within 2 %
-   (at slopes well past the threshold, where a is not a small difference;
-   at the threshold the check is that the friction in effect is mu within
-   the issue's 0.02: |a - a_pred| <= 0.02 g cos theta). */
+   more than that 1 cm; and the acceleration while sliding is the
+   prediction within 2 %, just past the threshold (where a is a small
+   difference, 0.02 g cos theta) and well past it. */
 static void incline_friction(void)
 {
     static const double mus[2] = {0.3, 0.6};
@@ -366,11 +365,11 @@ static void incline_friction(void)
         incline_run(th, mu, 1, &d, &a);
         ap = G * (sin(th) - mu * cos(th));
         CHECK(d > 0.01);
-        CHECK(fabs(a - ap) <= 0.02 * G * cos(th));
+        CHECK(fabs(a - ap) <= 0.02 * ap);
         if (verbose())
-            printf("solver: incline mu %.1f tan %.3f (%.1f deg): moved %.3f m in 2 s (slide bound > 1 cm), a %.4f vs %.4f "
-                   "(%+.2f %%; bound 0.02 g cos = %.3f)\n",
-                   mu, tan(th), th * 180 / PI, d, a, ap, 100 * (a / ap - 1), 0.02 * G * cos(th));
+            printf("solver: incline mu %.1f tan %.3f (%.1f deg): moved %.3f m in 2 s (slide bound > 1 cm), a %.4f vs "
+                   "g(sin - mu cos) %.4f: %+.3f %% (bound 2 %%)\n",
+                   mu, tan(th), th * 180 / PI, d, a, ap, 100 * (a / ap - 1));
         /* slides, well past it */
         for (k = 0; k < 2; ++k) {
             th = slide_deg[m][k] * PI / 180;
@@ -378,7 +377,7 @@ static void incline_friction(void)
             ap = G * (sin(th) - mu * cos(th));
             CHECK(fabs(a - ap) <= 0.02 * ap);
             if (verbose())
-                printf("solver: incline mu %.1f %.0f deg: a %.4f vs g(sin - mu cos) %.4f: %+.2f %% (bound 2 %%)\n", mu,
+                printf("solver: incline mu %.1f %.0f deg: a %.4f vs g(sin - mu cos) %.4f: %+.3f %% (bound 2 %%)\n", mu,
                        slide_deg[m][k], a, ap, 100 * (a / ap - 1));
         }
     }
@@ -394,42 +393,54 @@ static void incline_friction_off(void)
     CHECK(fabs(a - ap) <= 0.02 * ap);
     CHECK(d_on < 0.01); /* with it on, the same box sticks (tan 10 deg = 0.18 < 0.6) */
     if (verbose())
-        printf("solver: incline 10 deg friction off: a %.4f vs g sin %.4f: %+.2f %% (bound 2 %%); on: moved %.3g mm\n", a, ap,
+        printf("solver: incline 10 deg friction off: a %.4f vs g sin %.4f: %+.3f %% (bound 2 %%); on: moved %.3g mm\n", a, ap,
                100 * (a / ap - 1), 1e3 * d_on);
 }
 
 /* ----------------------------------------------------------------- bounce */
-/* A 1 m box dropped flat from a gap h0 = 2 m onto the ground with
-   restitution e (the ground's 0; restitution mixes as the larger).  For
-   each of the first three impacts: the velocity at the step before
-   (v_b, with gap s_b at that step) and after (v_a); the launch gap; the
-   apex height.
+/* A 1 m box dropped flat from a gap h0 onto the ground with restitution e
+   (the ground's is 0; restitution mixes as the larger).  Heights are the
+   box's bottom above the ground's top, y below.
 
-   The impact speed: the step before the impact ends still s_b above the
-   ground, and gravity keeps accelerating the box over that gap, so it
-   hits at sqrt(v_b^2 + 2 g s_b) (energy over the gap), not at |v_b| (which
-   under-reads it by up to g dt = 0.17 m/s, 10 % of a 1.6 m/s impact).
+   Free flight, substep h = dt/4.  Verlet is exact under constant gravity:
+   v^2 + 2 g y is conserved.  Symplectic Euler (v' = v - g h, y' = y + h v')
+   conserves E = v^2 + 2 g y - g h v instead (one update leaves it
+   unchanged: expand it), and its positions lie exactly on the parabola
+   y0 + (v0 - g h/2) t - g t^2/2, whose slope at t_k is v_k - g h/2.
 
-   The apex, from the state at the first step after it was passed (no
-   contact acts in free flight): Verlet is exact under constant gravity, so
-   apex = y + v^2 / (2 g).  Symplectic Euler's positions y_k (substep h)
-   lie exactly on the parabola y0 + (v0 - g h/2) t - g t^2/2 (sum the
-   updates y += h (v - g h)), whose slope at t_k is v_k - g h/2: its apex is
-   y + (v - g h/2)^2 / (2 g).  (The largest sampled y would read up to
-   g dt^2 / 8 = 0.35 mm low, 1 % of the smallest apex.) */
+   Apex: from the state of the first step past it, y + u^2 / (2 g) with
+   u = v (Verlet) or v - g h/2 (the SE parabola's slope).  (The largest
+   sampled y would read up to g dt^2 / 8 = 0.35 mm low, 1 % of the
+   smallest apex.)
+
+   Impact speed u_n, from the free flight before the impact (the drop's
+   start, or the previous apex), not from the last step before it (a
+   contact may already have acted in that step): the speed at the ground.
+   Verlet: u^2 = 2 g H, H the flight's top.  SE: at the step before the
+   impact (gap s_b, speed v_b) the speed it will hit at is
+   u^2 = v_b^2 + 2 g s_b = E - g h |v_b| (energy over the remaining gap),
+   and |v_b| ~ u: u^2 + g h u = E, u = sqrt(E + (g h/2)^2) - g h/2.
+   Taking |v_b| for u errs by at most g dt (gravity over less than a step)
+   in the g h |v_b| term: relatively g h g dt / (2 u^2) <= 0.15 % for
+   u >= 1.5 m/s.
+
+   Rebound speed r_n, at the ground, from the first step after the impact:
+   r^2 = v^2 + 2 g y.  Exact for Verlet; under SE, at most one step of
+   flight since the launch lowers it by at most g h g dt (E's g h v term
+   changes by g h g dt over a step), <= 0.6 % of r for r >= 0.75 m/s. */
 typedef struct bounce_data {
     int impacts, apexes;
-    double ratio[3], v_imp[3], v_reb[3], launch[3], apex[3];
+    double ratio[3], v_imp[3], v_reb[3], apex[3], gap[3];
 } bounce_data;
 
-static void bounce_run(double e, ga2d_integrator integ, bounce_data *out)
+static void bounce_run(double h0, double e, ga2d_integrator integ, int want_impacts, bounce_data *out)
 {
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
-    ga2d_body_def d = box_def(0, 2.5, 0.5, 0.5);
+    ga2d_body_def d = box_def(0, 0.5 + h0, 0.5, 0.5);
     ga2d_body_id box;
-    double h, yb, vb;
-    int s, rising = 0;
+    double h, flight_e;
+    int s, rising = 0, se = integ == GA2D_INTEGRATOR_SYMPLECTIC_EULER;
     wd.integrator = integ;
     h = DT / wd.substeps;
     w = make_world(wd, 1);
@@ -437,23 +448,24 @@ static void bounce_run(double e, ga2d_integrator integ, bounce_data *out)
     d.restitution = (ga2d_real)e;
     box = ga2d_body_create(w, &d);
     memset(out, 0, sizeof *out);
-    for (s = 0; s < 300 && out->apexes < 3; ++s) {
-        double y, v;
-        yb = pos_y(w, box) - 0.5;
-        vb = vel_y(w, box);
+    flight_e = 2 * G * h0; /* at rest at h0: both invariants */
+    for (s = 0; s < 400 && out->apexes < want_impacts; ++s) {
+        double vb = vel_y(w, box), yb = pos_y(w, box) - 0.5, y, v;
         step(w);
         y = pos_y(w, box) - 0.5;
         v = vel_y(w, box);
-        if (vb < 0 && v > 0 && !rising && out->impacts < 3) {
+        if (vb < 0 && v > 0 && !rising && out->impacts < want_impacts) {
             int n = out->impacts++;
-            out->v_imp[n] = sqrt(vb * vb + 2 * G * yb);
-            out->v_reb[n] = v;
-            out->ratio[n] = v / out->v_imp[n];
-            out->launch[n] = y;
+            double u = se ? sqrt(flight_e + G * h * G * h / 4) - G * h / 2 : sqrt(flight_e);
+            out->v_imp[n] = u;
+            out->v_reb[n] = sqrt(v * v + 2 * G * y);
+            out->ratio[n] = out->v_reb[n] / u;
+            out->gap[n] = yb;
             rising = 1;
         } else if (rising && v <= 0) {
-            double u = integ == GA2D_INTEGRATOR_SYMPLECTIC_EULER ? v - G * h / 2 : v;
+            double u = se ? v - G * h / 2 : v;
             out->apex[out->apexes++] = y + u * u / (2 * G);
+            flight_e = se ? v * v + 2 * G * y - G * h * v : v * v + 2 * G * y;
             rising = 0;
         }
     }
@@ -461,9 +473,10 @@ static void bounce_run(double e, ga2d_integrator integ, bounce_data *out)
 }
 
 /* (a) Defaults with the Verlet integrator, exact in free flight: the n-th
-   apex is e^(2n) h0 within the issue's 3 %, n = 1..3, e = 0.5 and 0.8.
-   (e = 0.5 still meets the 1 m/s restitution threshold at its third impact:
-   e^2 sqrt(2 g h0) = 1.58 m/s.) */
+   apex is e^(2n) h0 within the issue's 3 %, n = 1..3, e = 0.5 and 0.8,
+   h0 = 2 m (e = 0.5 still meets the 1 m/s restitution threshold at its
+   third impact: e^2 sqrt(2 g h0) = 1.58 m/s).  Each rebound over impact
+   speed is e, within the same 3 %. */
 static void bounce_heights_verlet(void)
 {
     static const double es[2] = {0.5, 0.8};
@@ -471,38 +484,39 @@ static void bounce_heights_verlet(void)
     int k, n;
     for (k = 0; k < 2; ++k) {
         bounce_data b;
-        bounce_run(es[k], GA2D_INTEGRATOR_VERLET, &b);
+        bounce_run(h0, es[k], GA2D_INTEGRATOR_VERLET, 3, &b);
         CHECK(b.impacts == 3 && b.apexes == 3);
         for (n = 0; n < b.apexes; ++n) {
             double want = pow(es[k], 2.0 * (n + 1)) * h0;
             CHECK(fabs(b.apex[n] / want - 1) <= 0.03);
+            CHECK(fabs(b.ratio[n] / es[k] - 1) <= 0.03);
             if (verbose())
                 printf("solver: bounce Verlet e %.1f n %d: apex %.5f m vs e^2n h0 %.5f: ratio %.4f (bound 1 +- 0.03); "
-                       "rebound/impact %.5f\n",
+                       "rebound/impact %.5f (e +- 3 %%)\n",
                        es[k], n + 1, b.apex[n], want, b.apex[n] / want, b.ratio[n]);
         }
     }
 }
 
-/* (b) Pure defaults (symplectic Euler, h = dt/4).  Its free flight
-   conserves E = v^2 + 2 g y - g h v exactly (check: one update
-   v' = v - g h, y' = y + h v' leaves it unchanged), not v^2 + 2 g y.
-   Falling from rest at gap h0, E = 2 g h0; at the step before an impact
-   the speed the contact sees is u^2 = v_b^2 + 2 g s_b = E - g h |v_b|,
-   and with |v_b| ~ u, u^2 + g h u = E:
-       first impact  u1 = sqrt(2 g h0 + (g h/2)^2) - g h/2 (~ sqrt(2 g h0) - g h/2);
-   launched at r from the ground, E = r^2 - g h r, so the next impact is
-       u_{n+1} = r_n - g h  (the integrator's loss g h per flight),
-   with r_n = e u_n, and the apex of the flight is (r_n - g h/2)^2 / (2 g)
-   above the launch.  Taking |v_b| for u errs by at most g dt (gravity over
-   less than one step) in the g h |v_b| term, which moves u by
-   g h g dt / (2 u^2) relative: <= 0.15 % for u >= 1.5 m/s; three flights
-   compound to < 1 % in a height, inside the issue's 3 %.
-   Checks: each impact's rebound over impact speed is e within the
-   issue's 3 % (the restitution pass drives both points to e u, and the
-   two points of a flat box converge by a factor (0.5/2.5)^2 = 0.04 a pass
-   over its 8 passes, so only rounding remains), and each apex above its
-   launch is the prediction within 3 %. */
+/* (b) Pure defaults (symplectic Euler).  Each impact's rebound over its
+   impact speed (as measured above) is e within the issue's 3 %: the
+   collision turns each point around at e times its impact speed, both
+   points of the flat box together, so beyond the <= 0.6 % of the
+   measurement only rounding remains.
+   The heights, predicted from h0 with the integrator's flight loss.
+   Falling from rest at h0, E = 2 g h0, so (above)
+       u1 = sqrt(2 g h0 + (g h/2)^2) - g h/2  (~ sqrt(2 g h0) - g h/2).
+   A bounce at the ground at r = e u: the collision acts where the step
+   began, s = the gap then (recorded), and turns the box around there at
+   the speed a true bounce has at that height, v_L = sqrt(r^2 - 2 g s);
+   from there SE flies with E = v_L^2 + 2 g s - g h v_L = r^2 - g h v_L,
+   whose apex is where the parabola's slope is 0: E = 2 g y - (g h/2)^2,
+       apex = (E + (g h/2)^2) / (2 g),
+   and the next impact u^2 + g h u = E.  Launched from the ground (s = 0)
+   this is u_{n+1} = r_n - g h and apex (r_n - g h/2)^2 / (2 g): the
+   integrator loses g h of speed per flight.  The prediction's only
+   approximation is the 0.15 % per impact above (three compound to < 0.5 %
+   in speed, < 1 % in height), inside the issue's 3 %. */
 static void bounce_defaults(void)
 {
     static const double es[2] = {0.5, 0.8};
@@ -511,21 +525,51 @@ static void bounce_defaults(void)
     for (k = 0; k < 2; ++k) {
         double e = es[k], u = sqrt(2 * G * h0 + gh * gh / 4) - gh / 2;
         bounce_data b;
-        bounce_run(e, GA2D_INTEGRATOR_SYMPLECTIC_EULER, &b);
+        bounce_run(h0, e, GA2D_INTEGRATOR_SYMPLECTIC_EULER, 3, &b);
         CHECK(b.impacts == 3 && b.apexes == 3);
         for (n = 0; n < b.apexes && n < b.impacts; ++n) {
-            double r = e * u, pred = (r - gh / 2) * (r - gh / 2) / (2 * G), abs_ratio = b.apex[n] / (pow(e, 2.0 * (n + 1)) * h0);
+            double r = e * u, vl = sqrt(fmax(r * r - 2 * G * b.gap[n], 0)), fe = r * r - gh * vl;
+            double pred = (fe + gh * gh / 4) / (2 * G), ground = (r - gh / 2) * (r - gh / 2) / (2 * G);
+            double abs_ratio = b.apex[n] / (pow(e, 2.0 * (n + 1)) * h0);
             CHECK(fabs(b.ratio[n] / e - 1) <= 0.03);
-            CHECK(fabs((b.apex[n] - b.launch[n]) / pred - 1) <= 0.03);
-            CHECK(fabs(b.launch[n]) <= SLOP); /* launched from the ground */
+            CHECK(fabs(b.apex[n] / pred - 1) <= 0.03);
             if (verbose())
-                printf("solver: bounce defaults e %.1f n %d: rebound/impact %.5f (e within 3 %%: %+.3f %%); impact %.4f m/s "
-                       "(pred %.4f); apex %.5f m vs SE prediction %.5f: %+.2f %% (bound 3 %%); vs e^2n h0: ratio %.4f\n",
+                printf("solver: bounce defaults e %.1f n %d: rebound/impact %.5f (e +- 3 %%: %+.3f %%); impact %.4f m/s "
+                       "(SE prediction %.4f); apex %.5f m vs SE prediction %.5f: %+.2f %% (bound 3 %%) [from the ground: "
+                       "%.5f]; vs e^2n h0: ratio %.4f\n",
                        e, n + 1, b.ratio[n], 100 * (b.ratio[n] / e - 1), b.v_imp[n], u, b.apex[n], pred,
-                       100 * ((b.apex[n] - b.launch[n]) / pred - 1), abs_ratio);
-            u = r - gh;
+                       100 * (b.apex[n] / pred - 1), ground, abs_ratio);
+            u = sqrt(fe + gh * gh / 4) - gh / 2;
         }
     }
+}
+
+/* Where in a step the impact falls must not matter: 40 drop heights from
+   1.5 m to 2.475 m (the impact moves through every substep of the step),
+   e = 0.8, defaults: the first rebound over impact speed is e within the
+   issue's 3 % every time (measured as above, <= 0.6 % of it the
+   measurement's own). */
+static void bounce_any_phase(void)
+{
+    double worst = 0, worst_h0 = 0;
+    int k, bad = 0;
+    for (k = 0; k < 40; ++k) {
+        double h0 = 1.5 + 0.025 * k, dev;
+        bounce_data b;
+        bounce_run(h0, 0.8, GA2D_INTEGRATOR_SYMPLECTIC_EULER, 1, &b);
+        CHECK(b.impacts == 1);
+        dev = fabs(b.ratio[0] / 0.8 - 1);
+        bad += !(dev <= 0.03);
+        if (dev > worst) {
+            worst = dev;
+            worst_h0 = h0;
+        }
+    }
+    CHECK(bad == 0);
+    if (verbose())
+        printf("solver: bounce e 0.8 from 40 heights 1.5..2.475 m: %d outside e +- 3 %%; worst |ratio/e - 1| %.2f %% at h0 %.3f m "
+               "(bound 3 %%)\n",
+               bad, 100 * worst, worst_h0);
 }
 
 /* Restitution switched off: the same e = 0.8 box lands and stays (the
@@ -557,56 +601,69 @@ static void restitution_off_no_bounce(void)
 
 /* ------------------------------------------------------------- collisions */
 /* Rounding model: a velocity update v += P/m rounds to <= 2 eps of the
-   momentum scale M = sum m |v| (the product and the sum), and a step with
-   contacts applies at most 64 impulses per point pair (4 substeps x (warm
-   start, solve and relax, normal and tangent) + 8 restitution passes, two
-   points: 4 x 2 x 5 + 16 = 56).  So momentum drifts <= 128 eps M per step
-   with contacts (and not at all in free flight).  Angular momentum about O
-   rounds the same with lever arms |c - O| + R (R the farthest vertex), and
-   free flight x += h v adds eps |x - O| m |v| per substep (4 per step).
-   Kinetic energy rounds to <= 2 eps of itself per update, so 128 eps KE
-   per step with contacts. */
+   momentum scale M = sum m |v| (the product and the sum).  A step applies
+   per contact at most 4 substeps x (warm start, solve, relax) x 2 points
+   x (normal, tangent) = 40 impulses, and the collision phase 2 per pass
+   (it stops once nothing is colliding: for two bodies after a pass or
+   two, at most 32): 128 impulses is ample, so momentum drifts
+   <= 256 eps M per step with contacts (and not at all in free flight).
+   Angular momentum about O rounds the same with lever arms |c - O| + R
+   (R the farthest vertex), and free flight x += h v adds eps |x - O| m |v|
+   per substep (4 per step).  Kinetic energy rounds to <= 2 eps of itself
+   per update: 256 eps KE per step with contacts. */
 
 /* Two equal 1 m boxes meeting head on at 5 m/s each with e = 1, no
    gravity: they exchange velocities (A ends at -5, B at +5, neither
    turning: equal masses and a symmetric face contact give equal and
-   opposite spins, which e = 1 at both points forces to zero). */
+   opposite spins, which e = 1 at both points forces to zero).  The gap
+   is varied over 32 values 1/32 of a step's closing (10 m/s dt / 32)
+   apart, so the touch falls in every part of a step.  Tolerance: the
+   rounding model, with M = 10 kg m/s. */
 static void head_on_exchange(void)
 {
-    ga2d_world_def wd = ga2d_default_world_def();
-    ga2d_world *w;
-    ga2d_body_def d;
-    ga2d_body_id a, b;
-    double tol;
-    int s, contact_steps = 0;
-    wd.gravity = ga2d_vec_make(0, 0);
-    w = make_world(wd, 0);
-    d = box_def(-2, 0, 0.5, 0.5);
-    d.velocity = ga2d_vec_make(5, 0);
-    d.restitution = 1;
-    a = ga2d_body_create(w, &d);
-    d = box_def(2, 0, 0.5, 0.5);
-    d.velocity = ga2d_vec_make(-5, 0);
-    d.restitution = 1;
-    b = ga2d_body_create(w, &d);
-    for (s = 0; s < 60; ++s) {
-        step(w);
-        contact_steps += ga2d_world_get_counters(w).constraint_count > 0;
+    double worst = -1, worst_gap = 0, worst_va = 0, worst_vb = 0, worst_w = 0;
+    int k, bad = 0;
+    for (k = 0; k < 32; ++k) {
+        ga2d_world_def wd = ga2d_default_world_def();
+        ga2d_world *w;
+        ga2d_body_def d;
+        ga2d_body_id a, b;
+        double tol, dev, gap = 3 + k * (10 * DT / 32);
+        int s, contact_steps = 0, ok;
+        wd.gravity = ga2d_vec_make(0, 0);
+        w = make_world(wd, 0);
+        d = box_def(-2 - k * (10 * DT / 32), 0, 0.5, 0.5);
+        d.velocity = ga2d_vec_make(5, 0);
+        d.restitution = 1;
+        a = ga2d_body_create(w, &d);
+        d = box_def(2, 0, 0.5, 0.5);
+        d.velocity = ga2d_vec_make(-5, 0);
+        d.restitution = 1;
+        b = ga2d_body_create(w, &d);
+        for (s = 0; s < 60; ++s) {
+            step(w);
+            contact_steps += ga2d_world_get_counters(w).constraint_count > 0;
+        }
+        tol = 256 * REAL_EPS * 10 * (contact_steps > 0 ? contact_steps : 1);
+        dev = fmax(fmax(fabs(vel_x(w, a) + 5), fabs(vel_x(w, b) - 5)), fmax(fabs(vel_y(w, a)), fabs(vel_y(w, b))));
+        /* spin: as a velocity, over the 0.5 m arm */
+        dev = fmax(dev, 0.5 * fmax(fabs((double)ga2d_body_angular_velocity(w, a)), fabs((double)ga2d_body_angular_velocity(w, b))));
+        ok = contact_steps > 0 && dev <= tol;
+        CHECK(ok);
+        bad += !ok;
+        if (dev / tol > worst) {
+            worst = dev / tol;
+            worst_gap = gap;
+            worst_va = vel_x(w, a);
+            worst_vb = vel_x(w, b);
+            worst_w = (double)ga2d_body_angular_velocity(w, a);
+        }
+        ga2d_world_destroy(w);
     }
-    /* the momentum scale M = 10 kg m/s, per step with contacts 128 eps M */
-    tol = 128 * REAL_EPS * 10 * (contact_steps > 0 ? contact_steps : 1);
-    CHECK(contact_steps > 0);
-    CHECK_NEAR(vel_x(w, a), -5, tol);
-    CHECK_NEAR(vel_x(w, b), 5, tol);
-    CHECK_NEAR(vel_y(w, a), 0, tol);
-    CHECK_NEAR(vel_y(w, b), 0, tol);
-    CHECK_NEAR(ga2d_body_angular_velocity(w, a), 0, tol / 0.5); /* spin: velocity over the 0.5 m arm */
-    CHECK_NEAR(ga2d_body_angular_velocity(w, b), 0, tol / 0.5);
     if (verbose())
-        printf("solver: head-on e 1: vA %.7f vB %.7f (want -5, 5; tol %.2g over %d contact steps), wA %.3g wB %.3g\n",
-               vel_x(w, a), vel_x(w, b), tol, contact_steps, (double)ga2d_body_angular_velocity(w, a),
-               (double)ga2d_body_angular_velocity(w, b));
-    ga2d_world_destroy(w);
+        printf("solver: head-on e 1, 32 phases: %d wrong; worst at gap %.4f m: vA %.5f vB %.5f (want -5, 5) wA %.3g, "
+               "error %.3g x its rounding tolerance (bound 1)\n",
+               bad, worst_gap, worst_va, worst_vb, worst_w, worst);
 }
 
 typedef struct momenta { double px, py, l, ke, pscale, lscale; } momenta;
@@ -650,7 +707,7 @@ static void collision_conserves_momentum(void)
         ga2d_body_id ids[2];
         ga2d_vec o = ga2d_vec_make((ga2d_real)0.3, (ga2d_real)-0.7);
         momenta m0, prev, m;
-        double dp = 0, dl = 0, dke = 0, worst_p = 0, worst_l = 0, worst_ke = 0, v0;
+        double dp = 0, dl = 0, dke = 0, worst_p = 0, worst_l = 0, worst_ke = 0, max_dl = 0, max_gain = 0, v0;
         int s, contact_steps = 0, steps_run = 0, ok_p = 1, ok_l = 1, ok_ke = 1;
         wd.gravity = ga2d_vec_make(0, 0);
         w = make_world(wd, 0);
@@ -675,9 +732,9 @@ static void collision_conserves_momentum(void)
             contact = ga2d_world_get_counters(w).constraint_count > 0;
             contact_steps += contact;
             m = momenta_of(w, ids, 2, o);
-            tol_p = 128 * REAL_EPS * fmax(m0.pscale, m.pscale) * contact_steps;
-            tol_l = (128 * contact_steps + 4 * steps_run) * REAL_EPS * fmax(m0.lscale, m.lscale);
-            tol_ke = 128 * REAL_EPS * fmax(prev.ke, m.ke);
+            tol_p = 256 * REAL_EPS * fmax(m0.pscale, m.pscale) * contact_steps;
+            tol_l = (256 * contact_steps + 4 * steps_run) * REAL_EPS * fmax(m0.lscale, m.lscale);
+            tol_ke = 256 * REAL_EPS * fmax(prev.ke, m.ke);
             dp = hypot(m.px - m0.px, m.py - m0.py);
             dl = fabs(m.l - m0.l);
             dke = m.ke - prev.ke;
@@ -687,6 +744,8 @@ static void collision_conserves_momentum(void)
             ok_p &= dp <= tol_p;
             ok_l &= dl <= tol_l;
             ok_ke &= dke <= tol_ke;
+            max_dl = fmax(max_dl, dl);
+            max_gain = fmax(max_gain, dke);
             prev = m;
         }
         CHECK(contact_steps > 0);
@@ -695,66 +754,77 @@ static void collision_conserves_momentum(void)
         CHECK(ok_l);
         CHECK(ok_ke);
         if (verbose())
-            printf("solver: collision e %.1f: worst |dP|, |dL|, KE growth as fractions of their rounding tolerances: "
-                   "%.3g, %.3g, %.3g (bound 1); final |dL| %.3g of L0 %.4g; KE %.4f -> %.4f\n",
-                   es[k], worst_p, worst_l, worst_ke, dl, m0.l, m0.ke, m.ke);
+            printf("solver: collision e %.1f: worst |dP|, |dL|, KE growth in a step as multiples of their rounding "
+                   "tolerances: %.3g, %.3g, %.3g (bound 1); largest |dL| %.3g (L0 %.4g), largest KE gain in a step %.3g J; "
+                   "KE %.4f -> %.4f J\n",
+                   es[k], worst_p, worst_l, worst_ke, max_dl, m0.l, max_gain, m0.ke, m.ke);
         ga2d_world_destroy(w);
     }
 }
 
 /* --------------------------------------------------------- Newton's cradle */
-/* Five 1 m boxes, e = 1, no gravity, in a row and touching (x = 0..4);
-   a sixth... no: the first of the five comes in from 3 m away at v = 4
-   m/s and hits the other four.  In an ideal cradle the last box leaves at
-   v and the others stop.  Here the restitution pass works only where the
-   pair was approaching faster than the threshold when the step began:
-   in the impact step only the first contact; the rest of the chain is
-   carried by the soft contacts, each passing the push on a step later.
-   Measured: the last box's speed and the largest speed left in the
-   others, after the chain has spread out (2 s).  Bounds: momentum is
-   conserved and energy cannot grow, so the last box leaves at most at v;
-   it must carry most of the momentum (at least 0.9 v, the rest spread
-   over the others), and no other box may keep more than 0.1 v (the same
-   momentum budget). */
+/* Five 1 m boxes, e = 1, no gravity: four in a row, touching (x = 1..4),
+   and the first coming in from x = -3 at v = 4 m/s; the start is varied
+   over 32 values 1/32 of a step's travel (v dt / 32) apart, so the impact
+   falls in every part of a step.  An ideal cradle passes the whole motion
+   to the last box and stops the others.  The soft contacts between the
+   touching boxes are overdamped springs (damping ratio 10): left to carry
+   the impact they would be inelastic and share it out (five boxes moving
+   together at v/5 in the limit); the restitution must pass it along
+   contact by contact.  Bounds: each exchange is restitution e = 1, held
+   to the issue's 3 %, so the last box leaves at v within 3 %; momentum is
+   conserved (to rounding), so what the others keep is the rest, at most
+   3 % of v each; and energy cannot grow, so the last box is not faster
+   than v (beyond rounding). */
 static void newtons_cradle(void)
 {
     const double v = 4;
-    ga2d_world_def wd = ga2d_default_world_def();
-    ga2d_world *w;
-    ga2d_body_def d;
-    ga2d_body_id ids[5];
-    double last, others = 0;
-    int i;
-    wd.gravity = ga2d_vec_make(0, 0);
-    w = make_world(wd, 0);
-    for (i = 0; i < 5; ++i) {
-        d = box_def(i == 0 ? -3.0 : (double)i, 0, 0.5, 0.5);
-        d.restitution = 1;
-        if (i == 0) d.velocity = ga2d_vec_make((ga2d_real)v, 0);
-        ids[i] = ga2d_body_create(w, &d);
+    double worst_last = -1, worst_other = 0, speeds[5] = {0, 0, 0, 0, 0}, worst_start = 0;
+    int k, i, bad = 0;
+    for (k = 0; k < 32; ++k) {
+        ga2d_world_def wd = ga2d_default_world_def();
+        ga2d_world *w;
+        ga2d_body_def d;
+        ga2d_body_id ids[5];
+        double last, others = 0, start = -3 - k * (v * DT / 32);
+        int ok;
+        wd.gravity = ga2d_vec_make(0, 0);
+        w = make_world(wd, 0);
+        for (i = 0; i < 5; ++i) {
+            d = box_def(i == 0 ? start : (double)i, 0, 0.5, 0.5);
+            d.restitution = 1;
+            if (i == 0) d.velocity = ga2d_vec_make((ga2d_real)v, 0);
+            ids[i] = ga2d_body_create(w, &d);
+        }
+        steps(w, 120);
+        last = vel_x(w, ids[4]);
+        for (i = 0; i < 4; ++i) others = fmax(others, fabs(vel_x(w, ids[i])));
+        ok = fabs(last / v - 1) <= 0.03 && last <= v * (1 + 64 * REAL_EPS) && others <= 0.03 * v;
+        CHECK(ok);
+        bad += !ok;
+        if (fabs(last / v - 1) > worst_last) {
+            worst_last = fabs(last / v - 1);
+            worst_start = start;
+            for (i = 0; i < 5; ++i) speeds[i] = vel_x(w, ids[i]);
+        }
+        worst_other = fmax(worst_other, others / v);
+        ga2d_world_destroy(w);
     }
-    steps(w, 120);
-    last = vel_x(w, ids[4]);
-    for (i = 0; i < 4; ++i) others = fmax(others, fabs(vel_x(w, ids[i])));
-    CHECK(last >= 0.9 * v);
-    CHECK(last <= v * (1 + 1e-3));
-    CHECK(others <= 0.1 * v);
     if (verbose()) {
-        printf("solver: Newton's cradle 5, e 1, v %.1f: last leaves at %.4f m/s (bound >= %.2f), others at most %.4f m/s "
-               "(bound %.2f); speeds",
-               v, last, 0.9 * v, others, 0.1 * v);
-        for (i = 0; i < 5; ++i) printf(" %.4f", vel_x(w, ids[i]));
+        printf("solver: Newton's cradle 5, e 1, v %.0f, 32 phases: %d wrong; last box off v by at most %.3g %% (bound 3 %%), "
+               "others keep at most %.3g %% of v (bound 3 %%); worst (start %.4f m) speeds",
+               v, bad, 100 * worst_last, 100 * worst_other, worst_start);
+        for (i = 0; i < 5; ++i) printf(" %.4f", speeds[i]);
         printf("\n");
     }
-    ga2d_world_destroy(w);
 }
 
 /* ------------------------------------------------------------- mass ratio */
 /* A 2 m plank (half-extents 1 x 0.25) of the given density resting on two
    0.5 m boxes (half-extent 0.25, density 1) at x = -0.75 and 0.75 on the
-   ground, 10 s with sleep off.  Mass ratio: plank 0.5 density over each
-   box's 0.25, i.e. 4 x density (density 100: 400:1).  Returns how far the
-   plank sank. */
+   ground, 10 s with sleep off.  Mass ratio: the plank's 1 m^2 x density
+   over each box's 0.25 m^2 x 1, i.e. 4 x density (density 100: 400:1).
+   Returns how far the plank sank. */
 static double plank_sink(ga2d_world_def wd, double density)
 {
     ga2d_world *w = make_world(wd, 0);
@@ -774,12 +844,12 @@ static double plank_sink(ga2d_world_def wd, double density)
 }
 
 /* The issue's bounds at 400:1: < 10 cm at defaults, < 3 cm accurate.
-   Measured too (printed): the largest ratio of 400, 1000, 2000, 4000,
-   10000 that the defaults hold with a sink < 10 cm, and the sink of 1000:1
+   Measured too (printed, not checked): the largest ratio of 400, 500, ...,
+   1000 that the defaults hold with a sink < 10 cm, and the sink of 1000:1
    with the accurate setting. */
 static void plank_mass_ratio(void)
 {
-    static const double ratios[5] = {400, 1000, 2000, 4000, 10000};
+    static const double ratios[7] = {400, 500, 600, 700, 800, 900, 1000};
     double s0 = plank_sink(ga2d_default_world_def(), 100);
     double s1 = plank_sink(ga2d_accurate_world_def(), 100);
     CHECK(s0 < 0.10);
@@ -789,7 +859,7 @@ static void plank_mass_ratio(void)
         int k, all = 1;
         printf("solver: plank 400:1 defaults (sleep off, 10 s): sank %.3f cm (bound 10 cm)\n", 100 * s0);
         printf("solver: plank 400:1 accurate (sleep off, 10 s): sank %.3f cm (bound 3 cm)\n", 100 * s1);
-        for (k = 0; k < 5; ++k) {
+        for (k = 0; k < 7; ++k) {
             double s = plank_sink(ga2d_default_world_def(), ratios[k] / 4);
             printf("solver: plank %.0f:1 defaults: sank %.3f cm\n", ratios[k], 100 * s);
             all &= s < 0.10;
@@ -797,8 +867,8 @@ static void plank_mass_ratio(void)
         }
         s1000 = plank_sink(ga2d_accurate_world_def(), 250);
         printf("solver: plank largest ratio held by the defaults (sink < 10 cm, of those tried): %.0f:1; "
-               "1000:1 accurate: sank %.3f cm (%s)\n",
-               best, 100 * s1000, s1000 < 0.10 ? "holds" : "does not hold");
+               "1000:1 accurate: sank %.3f cm (%s 10 cm, %s 3 cm)\n",
+               best, 100 * s1000, s1000 < 0.10 ? "under" : "over", s1000 < 0.03 ? "under" : "over");
     }
 }
 
@@ -806,8 +876,9 @@ static void plank_mass_ratio(void)
 /* Ten 1 m boxes created in a column, each overlapping the one below (the
    lowest: the ground) by 0.25 m.  Within 1 s no pair may overlap by more
    than 2 slop, and at no step may a body move faster than 5 m/s (the
-   issue's bounds; the push-out is capped at 3 m/s per contact and the
-   relax pass takes it back out of the velocities). */
+   issue's bounds; the push-out is capped at contact_push_max_velocity per
+   contact, but the caps add up along the column, and the relax pass takes
+   the push back out of the velocities).  Measured at the end of each step. */
 static void overlap_recovery(void)
 {
     ga2d_world *w = make_world(ga2d_default_world_def(), 0);
@@ -847,6 +918,7 @@ void suite_solver(void)
     test_run("solver: friction off, a box slides at g sin theta", incline_friction_off);
     test_run("solver: bounce heights with Verlet are e^2n h0", bounce_heights_verlet);
     test_run("solver: bounces at defaults: e per impact, heights as predicted", bounce_defaults);
+    test_run("solver: restitution whatever the impact's phase in a step", bounce_any_phase);
     test_run("solver: restitution off, no bounce", restitution_off_no_bounce);
     test_run("solver: head-on e = 1 exchanges velocities", head_on_exchange);
     test_run("solver: collisions conserve momentum, energy never grows", collision_conserves_momentum);
