@@ -305,7 +305,7 @@ static void pyramid_sleeps_and_wakes(void)
    the distance moved in 2 s and the acceleration down the slope from the
    velocity at 0.5 s and 1.5 s (symplectic Euler's velocity is exact under
    a constant acceleration, so the difference is too). */
-static void incline_run(double theta, double mu, int friction, double *moved2, double *accel)
+static void incline_run2(double theta, double mu, double mu_box, int friction, double *moved2, double *accel)
 {
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
@@ -324,7 +324,7 @@ static void incline_run(double theta, double mu, int friction, double *moved2, d
     d = box_def(0, 0, 0.5, 0.5);
     d.rotor = q;
     d.position = ga2d_rotate(q, ga2d_vec_make(10, 1));
-    d.friction = (ga2d_real)mu;
+    d.friction = (ga2d_real)mu_box;
     box = ga2d_body_create(w, &d);
     p0 = ga2d_body_position(w, box);
     for (s = 1; s <= 120; ++s) {
@@ -335,6 +335,28 @@ static void incline_run(double theta, double mu, int friction, double *moved2, d
     *moved2 = moved(w, box, p0);
     *accel = (v2 - v1) / (60 * DT);
     ga2d_world_destroy(w);
+}
+
+static void incline_run(double theta, double mu, int friction, double *moved2, double *accel)
+{
+    incline_run2(theta, mu, mu, friction, moved2, accel);
+}
+
+/* Friction mixes as sqrt(mu_a mu_b): a box of mu 0.2 on a slope of mu 0.8
+   behaves as mu = 0.4 (the smaller, 0.2, or the mean, 0.5, would not):
+   it sticks at tan theta = 0.38 and slides at 0.42 with
+   a = g (sin theta - 0.4 cos theta), within the issue's 2 %. */
+static void friction_mixes_as_geometric_mean(void)
+{
+    double th, d, a, ap;
+    th = atan(0.38);
+    incline_run2(th, 0.8, 0.2, 1, &d, &a);
+    CHECK(d < 0.01);
+    th = atan(0.42);
+    incline_run2(th, 0.8, 0.2, 1, &d, &a);
+    ap = G * (sin(th) - 0.4 * cos(th));
+    CHECK(d > 0.01 && fabs(a - ap) <= 0.02 * ap);
+    if (verbose()) printf("solver: friction 0.2 on 0.8 (mixed 0.4), tan 0.42: a %.4f vs %.4f\n", a, ap);
 }
 
 /* Coulomb: the box sticks when tan theta < mu and slides with
@@ -916,6 +938,7 @@ void suite_solver(void)
     test_run("solver: the pyramid sleeps, bit-identical, and wakes", pyramid_sleeps_and_wakes);
     test_run("solver: Coulomb friction on an incline", incline_friction);
     test_run("solver: friction off, a box slides at g sin theta", incline_friction_off);
+    test_run("solver: friction mixes as sqrt(mu_a mu_b)", friction_mixes_as_geometric_mean);
     test_run("solver: bounce heights with Verlet are e^2n h0", bounce_heights_verlet);
     test_run("solver: bounces at defaults: e per impact, heights as predicted", bounce_defaults);
     test_run("solver: restitution whatever the impact's phase in a step", bounce_any_phase);
