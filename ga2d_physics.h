@@ -591,13 +591,29 @@ GA2D_API ga2d_result ga2d_world_set_solver(ga2d_world *w, ga2d_solver solver);
 /* Switches: sleep (turning it off wakes every body), warm starting,
    friction and restitution.  A switched-off pass costs nothing. */
 GA2D_API ga2d_result ga2d_world_enable_sleep(ga2d_world *w, int on);
-GA2D_API ga2d_result ga2d_world_enable_warm_starting(ga2d_world *w, int on);
-GA2D_API ga2d_result ga2d_world_enable_friction(ga2d_world *w, int on);
-GA2D_API ga2d_result ga2d_world_enable_restitution(ga2d_world *w, int on);
-/* The documented accurate setting: 8 substeps and 90 Hz contacts (twice
-   the substeps, and contacts twice as stiff, which a doubled substep rate
-   allows).  A 10-box stack sinks 4 mm instead of 15, at about 1.8 times
-   the cost per step. */
+/* A world switch: refused while the world steps. */
+static ga2d_result ga2d__set_switch(ga2d_world *w, int *field, int on)
+{
+    if (w->locked) return GA2D_ERR_LOCKED;
+    *field = on != 0;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_enable_warm_starting(ga2d_world *w, int on)
+{
+    return w ? ga2d__set_switch(w, &w->def.enable_warm_starting, on) : GA2D_ERR_INVALID_ARGUMENT;
+}
+
+GA2D_API ga2d_result ga2d_world_enable_friction(ga2d_world *w, int on)
+{
+    return w ? ga2d__set_switch(w, &w->def.enable_friction, on) : GA2D_ERR_INVALID_ARGUMENT;
+}
+
+GA2D_API ga2d_result ga2d_world_enable_restitution(ga2d_world *w, int on)
+{
+    return w ? ga2d__set_switch(w, &w->def.enable_restitution, on) : GA2D_ERR_INVALID_ARGUMENT;
+}
+
 GA2D_API ga2d_world_def ga2d_accurate_world_def(void);
 
 GA2D_API ga2d_body_def ga2d_default_body_def(void);
@@ -1903,7 +1919,7 @@ typedef struct ga2d__cpoint {
     ga2d_vec ra, rb;
     ga2d_real separation;        /* at the step's start */
     ga2d_real normal_mass, tangent_mass;
-    ga2d_real normal_impulse, tangent_impulse, max_normal_impulse;
+    ga2d_real normal_impulse, tangent_impulse;
     ga2d_real restitution_impulse; /* what the collision phase gave it */
 } ga2d__cpoint;
 
@@ -2023,6 +2039,7 @@ static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__bo
 }
 
 static void ga2d__wake(ga2d_world *w, int slot);
+static ga2d_result ga2d__set_switch(ga2d_world *w, int *field, int on);
 static void ga2d__put_to_sleep(ga2d_world *w, int slot);
 
 /* ------------------------------------------------------------- pair set */
@@ -2640,9 +2657,8 @@ GA2D_API ga2d_result ga2d_world_set_solver(ga2d_world *w, ga2d_solver solver)
 GA2D_API ga2d_result ga2d_world_enable_sleep(ga2d_world *w, int on)
 {
     int s;
-    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
-    w->def.enable_sleep = on != 0;
+    ga2d_result r = w ? ga2d__set_switch(w, &w->def.enable_sleep, on) : GA2D_ERR_INVALID_ARGUMENT;
+    if (r != GA2D_OK) return r;
     if (!on)
         for (s = 0; s < w->body_used; ++s)
             if (w->bodies[s].type == GA2D_BODY_DYNAMIC && !w->bodies[s].awake) ga2d__wake(w, s);
@@ -3574,7 +3590,6 @@ static void ga2d__prepare_contacts(ga2d_world *w)
             p->tangent_mass = ga2d__effective_mass(c, p->ra, p->rb, ga2d__tangent(c->normal));
             p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
             p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
-            p->max_normal_impulse = 0;
             p->restitution_impulse = 0;
         }
     }
@@ -3672,7 +3687,6 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
             total = total > 0 ? total : 0;
             lambda = total - p->normal_impulse;
             p->normal_impulse = total;
-            p->max_normal_impulse = lambda > p->max_normal_impulse ? lambda : p->max_normal_impulse;
             ga2d__apply_impulse(c, a, b, ra[k], rb[k], ga2d_vec_scale(c->normal, lambda));
         }
         if (!friction) continue;
