@@ -591,29 +591,13 @@ GA2D_API ga2d_result ga2d_world_set_solver(ga2d_world *w, ga2d_solver solver);
 /* Switches: sleep (turning it off wakes every body), warm starting,
    friction and restitution.  A switched-off pass costs nothing. */
 GA2D_API ga2d_result ga2d_world_enable_sleep(ga2d_world *w, int on);
-/* A world switch: refused while the world steps. */
-static ga2d_result ga2d__set_switch(ga2d_world *w, int *field, int on)
-{
-    if (w->locked) return GA2D_ERR_LOCKED;
-    *field = on != 0;
-    return GA2D_OK;
-}
-
-GA2D_API ga2d_result ga2d_world_enable_warm_starting(ga2d_world *w, int on)
-{
-    return w ? ga2d__set_switch(w, &w->def.enable_warm_starting, on) : GA2D_ERR_INVALID_ARGUMENT;
-}
-
-GA2D_API ga2d_result ga2d_world_enable_friction(ga2d_world *w, int on)
-{
-    return w ? ga2d__set_switch(w, &w->def.enable_friction, on) : GA2D_ERR_INVALID_ARGUMENT;
-}
-
-GA2D_API ga2d_result ga2d_world_enable_restitution(ga2d_world *w, int on)
-{
-    return w ? ga2d__set_switch(w, &w->def.enable_restitution, on) : GA2D_ERR_INVALID_ARGUMENT;
-}
-
+GA2D_API ga2d_result ga2d_world_enable_warm_starting(ga2d_world *w, int on);
+GA2D_API ga2d_result ga2d_world_enable_friction(ga2d_world *w, int on);
+GA2D_API ga2d_result ga2d_world_enable_restitution(ga2d_world *w, int on);
+/* The documented accurate setting: 8 substeps and 90 Hz contacts (twice
+   the substeps, and contacts twice as stiff, which a doubled substep rate
+   allows).  A 10-box stack sinks 4 mm instead of 15, at about 1.8 times
+   the cost per step. */
 GA2D_API ga2d_world_def ga2d_accurate_world_def(void);
 
 GA2D_API ga2d_body_def ga2d_default_body_def(void);
@@ -2039,7 +2023,6 @@ static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__bo
 }
 
 static void ga2d__wake(ga2d_world *w, int slot);
-static ga2d_result ga2d__set_switch(ga2d_world *w, int *field, int on);
 static void ga2d__put_to_sleep(ga2d_world *w, int slot);
 
 /* ------------------------------------------------------------- pair set */
@@ -2654,6 +2637,14 @@ GA2D_API ga2d_result ga2d_world_set_solver(ga2d_world *w, ga2d_solver solver)
     return GA2D_OK;
 }
 
+/* A world switch: refused while the world steps. */
+static ga2d_result ga2d__set_switch(ga2d_world *w, int *field, int on)
+{
+    if (w->locked) return GA2D_ERR_LOCKED;
+    *field = on != 0;
+    return GA2D_OK;
+}
+
 GA2D_API ga2d_result ga2d_world_enable_sleep(ga2d_world *w, int on)
 {
     int s;
@@ -2667,26 +2658,17 @@ GA2D_API ga2d_result ga2d_world_enable_sleep(ga2d_world *w, int on)
 
 GA2D_API ga2d_result ga2d_world_enable_warm_starting(ga2d_world *w, int on)
 {
-    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
-    w->def.enable_warm_starting = on != 0;
-    return GA2D_OK;
+    return w ? ga2d__set_switch(w, &w->def.enable_warm_starting, on) : GA2D_ERR_INVALID_ARGUMENT;
 }
 
 GA2D_API ga2d_result ga2d_world_enable_friction(ga2d_world *w, int on)
 {
-    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
-    w->def.enable_friction = on != 0;
-    return GA2D_OK;
+    return w ? ga2d__set_switch(w, &w->def.enable_friction, on) : GA2D_ERR_INVALID_ARGUMENT;
 }
 
 GA2D_API ga2d_result ga2d_world_enable_restitution(ga2d_world *w, int on)
 {
-    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
-    w->def.enable_restitution = on != 0;
-    return GA2D_OK;
+    return w ? ga2d__set_switch(w, &w->def.enable_restitution, on) : GA2D_ERR_INVALID_ARGUMENT;
 }
 
 GA2D_API ga2d_world_def ga2d_accurate_world_def(void)
