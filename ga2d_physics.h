@@ -745,6 +745,38 @@ GA2D_API ga2d_contact_events ga2d_world_contact_events(const ga2d_world *w);
 /* Up to `capacity` of one body's touching contacts; returns how many. */
 GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_contact_data *out, int capacity);
 
+/* ------------------------------------------------------------- debug draw */
+/* Colours (0xRRGGBB) that say a body's state. */
+#define GA2D_COLOR_STATIC 0x7FB27Fu
+#define GA2D_COLOR_KINEMATIC 0x7F7FE5u
+#define GA2D_COLOR_AWAKE 0xE59E4Cu
+#define GA2D_COLOR_ASLEEP 0x9E9E9Eu
+#define GA2D_COLOR_CONTACT 0xE53F3Fu
+#define GA2D_COLOR_AABB 0xBF3FBFu
+
+/* What ga2d_world_draw hands a renderer: any callback may be NULL, and the
+   switches choose what is drawn.  A polygon comes with its body's id and
+   placement, so a renderer can keep one shape per body across frames. */
+typedef struct ga2d_debug_draw {
+    void (*polygon)(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform x, uint32_t color, void *context);
+    void (*segment)(ga2d_vec a, ga2d_vec b, uint32_t color, void *context);
+    void (*point)(ga2d_vec p, ga2d_real size, uint32_t color, void *context);
+    /* a contact point: where, its normal (from body A to body B) and separation */
+    void (*contact)(ga2d_vec p, ga2d_vec normal, ga2d_real separation, uint32_t color, void *context);
+    void (*aabb)(ga2d_aabb box, uint32_t color, void *context);
+    int draw_bodies;     /* default 1 */
+    int draw_contacts;   /* default 0 */
+    int draw_aabbs;      /* default 0: the broadphase's fat boxes */
+    int draw_centers;    /* default 0: centres of mass, as points */
+    void *context;
+} ga2d_debug_draw;
+
+GA2D_API ga2d_debug_draw ga2d_default_debug_draw(void);
+/* Calls the callbacks for every live body (in slot order) and, when asked,
+   every touching contact point, fat box and centre.  Read-only; refused
+   (LOCKED) from inside a step. */
+GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw *draw);
+
 #ifdef __cplusplus
 }
 #endif
@@ -3967,6 +3999,47 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     ++w->counters.step_count;
     w->locked = 0;
     return w->step_error;
+}
+
+/* ============================================================= debug draw */
+GA2D_API ga2d_debug_draw ga2d_default_debug_draw(void)
+{
+    ga2d_debug_draw d;
+    memset(&d, 0, sizeof d);
+    d.draw_bodies = 1;
+    return d;
+}
+
+static uint32_t ga2d__state_color(const ga2d__body *b)
+{
+    if (b->type == GA2D_BODY_STATIC) return GA2D_COLOR_STATIC;
+    if (b->type == GA2D_BODY_KINEMATIC) return GA2D_COLOR_KINEMATIC;
+    return b->awake ? GA2D_COLOR_AWAKE : GA2D_COLOR_ASLEEP;
+}
+
+GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw *d)
+{
+    int s, ci, k;
+    if (!w || !d) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    for (s = 0; s < w->body_used; ++s) {
+        const ga2d__body *b = &w->bodies[s];
+        if (b->type < 0) continue;
+        if (d->draw_bodies && d->polygon)
+            d->polygon(ga2d__id_of(w, s), &b->polygon, ga2d__body_xf(b), ga2d__state_color(b), d->context);
+        if (d->draw_aabbs && d->aabb)
+            d->aabb(w->trees[b->type != GA2D_BODY_STATIC].nodes[b->proxy].box, GA2D_COLOR_AABB, d->context);
+        if (d->draw_centers && d->point) d->point(b->center, GA2D__R(0.05) * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
+    }
+    if (d->draw_contacts && d->contact)
+        for (ci = 0; ci < w->contact_used; ++ci) {
+            const ga2d__contact *c = &w->contacts[ci];
+            if (c->next_free != -2 || !c->touching) continue;
+            for (k = 0; k < c->manifold.count; ++k)
+                d->contact(c->manifold.points[k].point, c->manifold.normal, c->manifold.points[k].separation,
+                           GA2D_COLOR_CONTACT, d->context);
+        }
+    return GA2D_OK;
 }
 
 #ifdef __cplusplus

@@ -374,6 +374,82 @@ static void step_out_of_memory(void)
     CHECK(k > 3 && k < 400);
 }
 
+/* The debug draw: one polygon per live body, with its id and state
+   colour; one contact call per touching manifold point; nothing drawn that
+   was switched off; refused inside a step. */
+typedef struct draw_log { int polygons, contacts, aabbs, points, asleep, static_, awake; ga2d_body_id last; } draw_log;
+static void log_polygon(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform x, uint32_t color, void *ctx)
+{
+    draw_log *l = (draw_log *)ctx;
+    (void)p;
+    (void)x;
+    ++l->polygons;
+    l->asleep += color == GA2D_COLOR_ASLEEP;
+    l->static_ += color == GA2D_COLOR_STATIC;
+    l->awake += color == GA2D_COLOR_AWAKE;
+    l->last = id;
+}
+static void log_contact(ga2d_vec p, ga2d_vec n, ga2d_real s, uint32_t color, void *ctx)
+{
+    (void)p; (void)n; (void)s; (void)color;
+    ++((draw_log *)ctx)->contacts;
+}
+static void log_aabb(ga2d_aabb b, uint32_t color, void *ctx) { (void)b; (void)color; ++((draw_log *)ctx)->aabbs; }
+static void log_point(ga2d_vec p, ga2d_real size, uint32_t color, void *ctx) { (void)p; (void)size; (void)color; ++((draw_log *)ctx)->points; }
+static ga2d_world *g_draw_world;
+static void draw_inside_step(ga2d_world *w, void *ctx)
+{
+    ga2d_debug_draw d = ga2d_default_debug_draw();
+    (void)ctx;
+    CHECK_RESULT(ga2d_world_draw(w, &d), GA2D_ERR_LOCKED);
+    g_draw_world = w;
+}
+
+static void debug_draw(void)
+{
+    ga2d_world *w = ga2d_world_create(NULL);
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_debug_draw dd = ga2d_default_debug_draw();
+    ga2d_contact_data cd[8];
+    draw_log log;
+    ga2d_body_id top;
+    int i, points = 0, n;
+    ga2d_body_create(w, &d); /* static ground at the origin */
+    d.type = GA2D_BODY_DYNAMIC;
+    for (i = 0; i < 3; ++i) {
+        d.position = ga2d_vec_make(0, (ga2d_real)(1 + i));
+        top = ga2d_body_create(w, &d);
+    }
+    for (i = 0; i < 10; ++i) ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    memset(&log, 0, sizeof log);
+    dd.polygon = log_polygon;
+    dd.contact = log_contact;
+    dd.aabb = log_aabb;
+    dd.point = log_point;
+    dd.context = &log;
+    CHECK_RESULT(ga2d_world_draw(w, &dd), GA2D_OK);
+    CHECK(log.polygons == 4 && log.static_ == 1 && log.awake == 3 && log.contacts == 0 && log.aabbs == 0);
+    CHECK(ga2d_body_id_equal(log.last, top)); /* slot order: the last made */
+    memset(&log, 0, sizeof log);
+    dd.draw_contacts = dd.draw_aabbs = dd.draw_centers = 1;
+    CHECK_RESULT(ga2d_world_draw(w, &dd), GA2D_OK);
+    n = ga2d_world_get_contacts(w, cd, 8);
+    for (i = 0; i < n && i < 8; ++i) points += cd[i].manifold.count;
+    CHECK(log.contacts == points && points > 0 && log.aabbs == 4 && log.points == 4);
+    /* asleep: grey */
+    for (i = 0; i < 120; ++i) ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    memset(&log, 0, sizeof log);
+    CHECK_RESULT(ga2d_world_draw(w, &dd), GA2D_OK);
+    CHECK(log.asleep == 3);
+    CHECK_RESULT(ga2d_world_draw(w, NULL), GA2D_ERR_INVALID_ARGUMENT);
+    ga2d_world_set_force_callback(w, draw_inside_step, NULL);
+    ga2d_body_set_awake(w, top, 1);
+    g_draw_world = NULL;
+    ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    CHECK(g_draw_world == w); /* the callback ran, and was refused inside */
+    ga2d_world_destroy(w);
+}
+
 void suite_contacts(void)
 {
     test_run("contacts: pair set equals O(n^2) check, 1000 bodies x 200 steps", pairs_match_brute_force);
@@ -383,4 +459,5 @@ void suite_contacts(void)
     test_run("contacts: destroy and refilter end contacts", destroy_and_refilter);
     test_run("contacts: late static bodies and teleports", teleport_and_new_static);
     test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory);
+    test_run("contacts: debug draw", debug_draw);
 }
