@@ -1,6 +1,8 @@
 # ga2d_physics — build, test and demo.  Everything generated goes to build/.
 #   make          build the examples
-#   make demo     build and run the demo (the README's main job)
+#   make demo     build and run the pyramid demo (the README's main job)
+#   make sdl      the interactive SDL2 demo (needs libsdl2-dev)
+#   make test-browser  the demo's SVG checked in headless Chromium
 #   make test     the test suite in every configuration (the README's test command)
 #   make bench    benchmarks (tests/bench/): speed is measured here, never in tests
 #   make clean
@@ -20,19 +22,30 @@ NPROC   := $(shell nproc 2>/dev/null || echo 2)
 
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
 TEST_DEP := $(TEST_SRC) tests/test.h $(HEADER)
-EXAMPLES := $(patsubst examples/%.c,$(BUILD)/examples/%,$(wildcard examples/*.c))
+# sdl_demo.c needs SDL2: built by `make sdl`, not by `make`
+EXAMPLES := $(filter-out $(BUILD)/examples/sdl_demo,$(patsubst examples/%.c,$(BUILD)/examples/%,$(wildcard examples/*.c)))
 
-.PHONY: all examples demo test test-build bench clean
+.PHONY: all examples demo sdl test test-build test-browser bench clean
 
 all: examples
 examples: $(EXAMPLES)
 
-$(BUILD)/examples/%: examples/%.c $(HEADER)
+$(BUILD)/examples/%: examples/%.c $(HEADER) examples/svg_writer.h
 	@mkdir -p $(dir $@)
 	gcc -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
 
-demo: $(BUILD)/examples/ga_tour
-	./$(BUILD)/examples/ga_tour
+demo: $(BUILD)/examples/pyramid
+	./$(BUILD)/examples/pyramid
+
+# The interactive SDL2 demo (scenes 1-5, drag, throw, toggles; see the file).
+sdl: examples/sdl_demo.c $(HEADER)
+	@command -v sdl2-config >/dev/null 2>&1 || { echo "make sdl needs SDL2 development files: apt-get install libsdl2-dev"; exit 1; }
+	@mkdir -p $(BUILD)/examples
+	gcc -std=c99 $(OPT) $(WARN) $(INC) examples/sdl_demo.c -o $(BUILD)/examples/sdl_demo $$(sdl2-config --cflags --libs) $(LIBS)
+
+# The pyramid's SVG in headless Chromium (needs chromium and imagemagick).
+test-browser: demo
+	@sh tests/browser_check.sh
 
 # --- test configurations: name, compiler and language flags ----------------
 # C99 float and double, C++11, with gcc and clang; a build with a large

@@ -1,0 +1,855 @@
+/* sdl_demo.c - an interactive window onto ga2d_physics.h, drawn with SDL2.
+
+   Five scenes on the number keys; drag a body with the left mouse button (a
+   soft spring pulls it to the cursor); throw a 1 m box with the right button
+   (press where it starts, drag to aim, release to throw); switch substeps,
+   solver and sleep while it runs and watch the time per step change.
+
+     1-5  scene: pyramid, stack of 10, Newton's cradle, incline, bounce
+     R    reset the scene          P  pause        C  contact points
+     S    substeps 1/2/4/8         V  solver: soft step / PGS+Baumgarte / PGS+NGS
+     Z    sleep on/off             Esc quit
+
+   Everything on screen goes through the library's debug draw
+   (ga2d_world_draw with the GA2D_COLOR_* state colours); text is a 5x7
+   bitmap font drawn as filled rectangles, so only SDL2 itself is needed.
+
+   Build (needs Debian's libsdl2-dev, SDL 2.0.18 or newer):
+     gcc -std=c99 -O2 -I. examples/sdl_demo.c $(sdl2-config --cflags --libs) -lm
+
+   Options, for scripted runs (e.g. under Xvfb):
+     --scene N          start in scene N (1-5)
+     --frames N         run N frames, one fixed step each, then quit
+     --screenshot FILE  save the last frame as a BMP (default 120 frames)
+     --drag-test        grab the top body at frame 20 and pull it 5 m aside, 1.5 m up
+     --throw-test       throw a box into the scene at frame 10
+     --substeps N, --solver soft|baumgarte|ngs, --no-sleep, --contacts */
+#define GA2D_IMPLEMENTATION
+#include "ga2d_physics.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <SDL.h>
+
+#if !SDL_VERSION_ATLEAST(2, 0, 18)
+#error "sdl_demo needs SDL 2.0.18 or newer (SDL_RenderGeometry)"
+#endif
+
+#define WINDOW_W 1280
+#define WINDOW_H 720
+#define HUD_TOP 64     /* pixels of text at the top */
+#define HUD_BOTTOM 30  /* and at the bottom */
+#define STEP_DT (1.0 / 60.0)
+#define MAX_BODIES 4096
+#define TIMING_WINDOW 60 /* steps in the ms/step moving average */
+#define DRAG_HERTZ 5.0   /* the mouse spring's natural frequency */
+#define PI_D 3.14159265358979323846
+
+/* ===================================================================== font */
+/* 5x7 glyphs, one 35-character string each, rows top to bottom ('#' = on).
+   Lower case is drawn as upper case. */
+typedef struct glyph { char c; const char *rows; } glyph;
+static const glyph FONT[] = {
+    {'0', ".###." "#...#" "#..##" "#.#.#" "##..#" "#...#" ".###."},
+    {'1', "..#.." ".##.." "..#.." "..#.." "..#.." "..#.." ".###."},
+    {'2', ".###." "#...#" "....#" "...#." "..#.." ".#..." "#####"},
+    {'3', "#####" "...#." "..#.." "...#." "....#" "#...#" ".###."},
+    {'4', "...#." "..##." ".#.#." "#..#." "#####" "...#." "...#."},
+    {'5', "#####" "#...." "####." "....#" "....#" "#...#" ".###."},
+    {'6', "..##." ".#..." "#...." "####." "#...#" "#...#" ".###."},
+    {'7', "#####" "....#" "...#." "..#.." ".#..." ".#..." ".#..."},
+    {'8', ".###." "#...#" "#...#" ".###." "#...#" "#...#" ".###."},
+    {'9', ".###." "#...#" "#...#" ".####" "....#" "...#." ".##.."},
+    {'A', ".###." "#...#" "#...#" "#...#" "#####" "#...#" "#...#"},
+    {'B', "####." "#...#" "#...#" "####." "#...#" "#...#" "####."},
+    {'C', ".###." "#...#" "#...." "#...." "#...." "#...#" ".###."},
+    {'D', "###.." "#..#." "#...#" "#...#" "#...#" "#..#." "###.."},
+    {'E', "#####" "#...." "#...." "####." "#...." "#...." "#####"},
+    {'F', "#####" "#...." "#...." "####." "#...." "#...." "#...."},
+    {'G', ".###." "#...#" "#...." "#.###" "#...#" "#...#" ".####"},
+    {'H', "#...#" "#...#" "#...#" "#####" "#...#" "#...#" "#...#"},
+    {'I', ".###." "..#.." "..#.." "..#.." "..#.." "..#.." ".###."},
+    {'J', "..###" "...#." "...#." "...#." "...#." "#..#." ".##.."},
+    {'K', "#...#" "#..#." "#.#.." "##..." "#.#.." "#..#." "#...#"},
+    {'L', "#...." "#...." "#...." "#...." "#...." "#...." "#####"},
+    {'M', "#...#" "##.##" "#.#.#" "#.#.#" "#...#" "#...#" "#...#"},
+    {'N', "#...#" "#...#" "##..#" "#.#.#" "#..##" "#...#" "#...#"},
+    {'O', ".###." "#...#" "#...#" "#...#" "#...#" "#...#" ".###."},
+    {'P', "####." "#...#" "#...#" "####." "#...." "#...." "#...."},
+    {'Q', ".###." "#...#" "#...#" "#...#" "#.#.#" "#..#." ".##.#"},
+    {'R', "####." "#...#" "#...#" "####." "#.#.." "#..#." "#...#"},
+    {'S', ".####" "#...." "#...." ".###." "....#" "....#" "####."},
+    {'T', "#####" "..#.." "..#.." "..#.." "..#.." "..#.." "..#.."},
+    {'U', "#...#" "#...#" "#...#" "#...#" "#...#" "#...#" ".###."},
+    {'V', "#...#" "#...#" "#...#" "#...#" "#...#" ".#.#." "..#.."},
+    {'W', "#...#" "#...#" "#...#" "#.#.#" "#.#.#" "#.#.#" ".#.#."},
+    {'X', "#...#" "#...#" ".#.#." "..#.." ".#.#." "#...#" "#...#"},
+    {'Y', "#...#" "#...#" ".#.#." "..#.." "..#.." "..#.." "..#.."},
+    {'Z', "#####" "....#" "...#." "..#.." ".#..." "#...." "#####"},
+    {'.', "....." "....." "....." "....." "....." ".##.." ".##.."},
+    {',', "....." "....." "....." "....." ".##.." "..#.." ".#..."},
+    {':', "....." ".##.." ".##.." "....." ".##.." ".##.." "....."},
+    {'-', "....." "....." "....." "#####" "....." "....." "....."},
+    {'+', "....." "..#.." "..#.." "#####" "..#.." "..#.." "....."},
+    {'/', "....." "....#" "...#." "..#.." ".#..." "#...." "....."},
+    {'(', "...#." "..#.." ".#..." ".#..." ".#..." "..#.." "...#."},
+    {')', ".#..." "..#.." "...#." "...#." "...#." "..#.." ".#..."},
+    {'[', ".###." ".#..." ".#..." ".#..." ".#..." ".#..." ".###."},
+    {']', ".###." "...#." "...#." "...#." "...#." "...#." ".###."},
+    {'<', "...#." "..#.." ".#..." "#...." ".#..." "..#.." "...#."},
+    {'>', ".#..." "..#.." "...#." "....#" "...#." "..#.." ".#..."},
+    {'=', "....." "....." "#####" "....." "#####" "....." "....."},
+    {'%', "##..." "##..#" "...#." "..#.." ".#..." "#..##" "...##"},
+    {'!', "..#.." "..#.." "..#.." "..#.." "..#.." "....." "..#.."},
+    {'?', ".###." "#...#" "....#" "...#." "..#.." "....." "..#.."},
+    {'\'', "..#.." "..#.." ".#..." "....." "....." "....." "....."},
+    {'_', "....." "....." "....." "....." "....." "....." "#####"},
+    {'*', "....." "..#.." "#.#.#" ".###." "#.#.#" "..#.." "....."},
+    {'|', "..#.." "..#.." "..#.." "..#.." "..#.." "..#.." "..#.."},
+};
+
+static const char *glyph_rows(char c)
+{
+    size_t i;
+    if (c >= 'a' && c <= 'z') c = (char)(c - 'a' + 'A');
+    for (i = 0; i < sizeof FONT / sizeof FONT[0]; ++i)
+        if (FONT[i].c == c) return FONT[i].rows;
+    return NULL; /* space, and anything unknown, is blank */
+}
+
+/* Width in pixels of s drawn at this scale: 6 cells per character. */
+static int text_width(const char *s, int scale) { return (int)strlen(s) * 6 * scale; }
+
+/* Draws s with its top-left corner at (x, y), each cell scale x scale
+   pixels, batched into SDL_RenderFillRects calls. */
+static void draw_text(SDL_Renderer *r, int x, int y, int scale, const char *s, SDL_Color col)
+{
+    SDL_Rect cells[512];
+    int n = 0, k;
+    SDL_SetRenderDrawColor(r, col.r, col.g, col.b, col.a);
+    for (; *s; ++s, x += 6 * scale) {
+        const char *rows = glyph_rows(*s);
+        if (!rows) continue;
+        for (k = 0; k < 35; ++k) {
+            if (rows[k] != '#') continue;
+            if (n == (int)(sizeof cells / sizeof cells[0])) {
+                SDL_RenderFillRects(r, cells, n);
+                n = 0;
+            }
+            cells[n].x = x + (k % 5) * scale;
+            cells[n].y = y + (k / 5) * scale;
+            cells[n].w = cells[n].h = scale;
+            ++n;
+        }
+    }
+    if (n > 0) SDL_RenderFillRects(r, cells, n);
+}
+
+/* Text with a one-pixel dark shadow, readable over any body colour. */
+static void draw_text_shadowed(SDL_Renderer *r, int x, int y, int scale, const char *s, SDL_Color col)
+{
+    SDL_Color shadow = {0, 0, 0, 255};
+    draw_text(r, x + 1, y + 1, scale, s, shadow);
+    draw_text(r, x, y, scale, s, col);
+}
+
+/* =================================================================== camera */
+/* World metres (y up) to window pixels (y down). */
+typedef struct camera { double cx, cy, scale; } camera;
+
+static camera camera_fit(double xmin, double ymin, double xmax, double ymax)
+{
+    camera c;
+    double view_w = WINDOW_W - 40, view_h = WINDOW_H - HUD_TOP - HUD_BOTTOM - 20;
+    double sx = view_w / (xmax - xmin), sy = view_h / (ymax - ymin);
+    c.scale = sx < sy ? sx : sy;
+    c.cx = 0.5 * (xmin + xmax);
+    c.cy = 0.5 * (ymin + ymax);
+    return c;
+}
+
+static SDL_FPoint to_screen(const camera *c, ga2d_vec p)
+{
+    SDL_FPoint s;
+    double mid_y = HUD_TOP + 0.5 * (WINDOW_H - HUD_TOP - HUD_BOTTOM);
+    s.x = (float)(0.5 * WINDOW_W + ((double)p.x - c->cx) * c->scale);
+    s.y = (float)(mid_y - ((double)p.y - c->cy) * c->scale);
+    return s;
+}
+
+static ga2d_vec to_world(const camera *c, double sx, double sy)
+{
+    double mid_y = HUD_TOP + 0.5 * (WINDOW_H - HUD_TOP - HUD_BOTTOM);
+    return ga2d_vec_make((ga2d_real)(c->cx + (sx - 0.5 * WINDOW_W) / c->scale),
+                         (ga2d_real)(c->cy - (sy - mid_y) / c->scale));
+}
+
+/* ====================================================================== app */
+typedef struct label { ga2d_vec at; char text[32]; } label;
+
+static const int SUBSTEP_CHOICES[] = {1, 2, 4, 8};
+static const char *const SOLVER_NAMES[GA2D_SOLVER_COUNT] = {"SOFT STEP", "PGS+BAUMGARTE", "PGS+NGS"};
+static const char *const SCENE_NAMES[6] = {"", "PYRAMID (BASE 20)", "STACK OF 10", "NEWTON'S CRADLE",
+                                           "INCLINE: THREE FRICTIONS", "BOUNCE: THREE RESTITUTIONS"};
+
+typedef struct app {
+    SDL_Renderer *ren;
+    ga2d_world *world;
+    int scene;
+    camera cam;
+    label labels[8];
+    int label_count;
+
+    /* settings that survive a scene change */
+    int substep_index; /* into SUBSTEP_CHOICES */
+    ga2d_solver solver;
+    int sleep_on, paused, show_contacts;
+
+    /* the dynamic bodies we made, for removing the ones that fall off */
+    ga2d_body_id bodies[MAX_BODIES];
+    int body_count;
+
+    /* left-drag: a spring from a body point to the cursor */
+    ga2d_vec cursor;   /* world */
+    int dragging;
+    ga2d_body_id grab;
+    ga2d_vec grab_local; /* the grabbed point in the body's frame */
+    double spring_k, spring_c, spin_c;
+    ga2d_real grab_mass;
+
+    /* right-drag: aim a throw */
+    int aiming;
+    ga2d_vec aim_from;
+
+    /* ms per ga2d_world_step: the last TIMING_WINDOW steps */
+    double step_ms[TIMING_WINDOW];
+    int step_ms_count, step_ms_next;
+} app;
+
+static void remember(app *a, ga2d_body_id id)
+{
+    if (!ga2d_body_id_is_null(id) && a->body_count < MAX_BODIES) a->bodies[a->body_count++] = id;
+}
+
+static void add_label(app *a, ga2d_real x, ga2d_real y, const char *text)
+{
+    if (a->label_count >= (int)(sizeof a->labels / sizeof a->labels[0])) return;
+    a->labels[a->label_count].at = ga2d_vec_make(x, y);
+    snprintf(a->labels[a->label_count].text, sizeof a->labels[0].text, "%s", text);
+    ++a->label_count;
+}
+
+static ga2d_body_id add_box(app *a, ga2d_body_type type, ga2d_real x, ga2d_real y, ga2d_real hw, ga2d_real hh,
+                            ga2d_real angle, ga2d_real friction, ga2d_real restitution)
+{
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_body_id id;
+    bd.type = type;
+    bd.position = ga2d_vec_make(x, y);
+    bd.rotor = ga2d_rotor_from_angle(angle);
+    bd.polygon = ga2d_polygon_box(hw, hh);
+    bd.friction = friction;
+    bd.restitution = restitution;
+    id = ga2d_body_create(a->world, &bd);
+    if (type == GA2D_BODY_DYNAMIC) remember(a, id);
+    return id;
+}
+
+/* The Box2D ground: a static box of half-extents 100 x 1, its top at y = 0. */
+static void add_ground(app *a, ga2d_real friction)
+{
+    add_box(a, GA2D_BODY_STATIC, 0, -1, 100, 1, 0, friction, 0);
+}
+
+static void load_scene(app *a, int scene)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    int i, j;
+    if (a->world) ga2d_world_destroy(a->world);
+    wd.substeps = SUBSTEP_CHOICES[a->substep_index];
+    wd.solver = a->solver;
+    wd.enable_sleep = a->sleep_on;
+    a->world = ga2d_world_create(&wd);
+    if (!a->world) {
+        fprintf(stderr, "sdl_demo: ga2d_world_create failed\n");
+        exit(1);
+    }
+    a->scene = scene;
+    a->body_count = a->label_count = 0;
+    a->dragging = a->aiming = 0;
+    a->step_ms_count = a->step_ms_next = 0;
+
+    switch (scene) {
+    case 1: /* Box2D's pyramid: row i holds boxes j = i..19 */
+        add_ground(a, 0.6f);
+        for (i = 0; i < 20; ++i)
+            for (j = i; j < 20; ++j)
+                add_box(a, GA2D_BODY_DYNAMIC, (ga2d_real)((i + 1) * 0.5 + (j - i) - 10.0),
+                        (ga2d_real)((2 * i + 1) * 0.5), 0.5f, 0.5f, 0, 0.6f, 0);
+        a->cam = camera_fit(-13, -1.5, 13, 23);
+        break;
+    case 2: /* ten 1 m boxes, one on another */
+        add_ground(a, 0.6f);
+        for (i = 0; i < 10; ++i) add_box(a, GA2D_BODY_DYNAMIC, 0, (ga2d_real)(0.5 + i), 0.5f, 0.5f, 0, 0.6f, 0);
+        a->cam = camera_fit(-9, -1.5, 9, 12);
+        break;
+    case 3: { /* a striker into a row of four, on frictionless ground between
+                 two walls: everything has e = 1, so it goes on and on */
+        ga2d_body_id striker;
+        add_ground(a, 0);
+        add_box(a, GA2D_BODY_STATIC, -10, 2, 0.5f, 2, 0, 0, 1);
+        add_box(a, GA2D_BODY_STATIC, 10, 2, 0.5f, 2, 0, 0, 1);
+        for (i = 0; i < 4; ++i) add_box(a, GA2D_BODY_DYNAMIC, (ga2d_real)i, 0.5f, 0.5f, 0.5f, 0, 0, 1);
+        striker = add_box(a, GA2D_BODY_DYNAMIC, -5, 0.5f, 0.5f, 0.5f, 0, 0, 1);
+        ga2d_body_set_velocity(a->world, striker, ga2d_vec_make(6, 0));
+        add_label(a, 1.5f, 5.0f, "E = 1, FRICTIONLESS");
+        a->cam = camera_fit(-11, -1.5, 11, 6);
+        break;
+    }
+    case 4: { /* three ramps at 25 degrees (tan = 0.47), each with a box; the
+                 ramps have friction 1, so sqrt(mu_box * 1) is the mix */
+        const ga2d_real theta = (ga2d_real)(25.0 * PI_D / 180.0);
+        const ga2d_real box_mu[3] = {0.01f, 0.16f, 0.64f};
+        const char *const names[3] = {"MU 0.1: SLIDES", "MU 0.4: CREEPS", "MU 0.8: STICKS"};
+        ga2d_vec t = ga2d_vec_make((ga2d_real)cos((double)theta), -(ga2d_real)sin((double)theta)); /* downhill */
+        ga2d_vec n = ga2d_vec_perp(t);                                                         /* up, out */
+        add_ground(a, 0.6f);
+        for (i = 0; i < 3; ++i) {
+            ga2d_vec c = ga2d_vec_make((ga2d_real)(-13 + 13 * i), 4);
+            ga2d_vec b = ga2d_vec_add(c, ga2d_vec_add(ga2d_vec_scale(n, 0.76f), ga2d_vec_scale(t, -3.5f)));
+            add_box(a, GA2D_BODY_STATIC, c.x, c.y, 5, 0.25f, -theta, 1, 0);
+            add_box(a, GA2D_BODY_DYNAMIC, b.x, b.y, 0.5f, 0.5f, -theta, box_mu[i], 0);
+            add_label(a, c.x, 7.6f, names[i]);
+        }
+        a->cam = camera_fit(-19, -1.5, 19, 8.5);
+        break;
+    }
+    default: /* 5: three boxes dropped side by side */
+    {
+        const ga2d_real e[3] = {0.3f, 0.6f, 0.9f};
+        const char *const names[3] = {"E 0.3", "E 0.6", "E 0.9"};
+        add_ground(a, 0.6f);
+        for (i = 0; i < 3; ++i) {
+            add_box(a, GA2D_BODY_DYNAMIC, (ga2d_real)(-4 + 4 * i), 8, 0.5f, 0.5f, 0, 0.6f, e[i]);
+            add_label(a, (ga2d_real)(-4 + 4 * i), 9.6f, names[i]);
+        }
+        a->cam = camera_fit(-8, -1.5, 8, 10.5);
+        a->scene = 5;
+        break;
+    }
+    }
+}
+
+/* ------------------------------------------------------------------ picking */
+typedef struct pick_query { const app *a; ga2d_vec p; ga2d_body_id hit; } pick_query;
+
+/* Called by ga2d_world_draw for every body in drawing order, so the last
+   dynamic body whose polygon holds the point is the one drawn on top. */
+static void pick_polygon(ga2d_body_id id, const ga2d_polygon *poly, ga2d_transform x, uint32_t color, void *ctx)
+{
+    pick_query *q = (pick_query *)ctx;
+    ga2d_vec local = ga2d_transform_apply_inv(x, q->p);
+    int i;
+    (void)color;
+    if (ga2d_body_get_type(q->a->world, id) != GA2D_BODY_DYNAMIC) return;
+    for (i = 0; i < poly->count; ++i)
+        if (ga2d_dot(poly->normals[i], ga2d_vec_sub(local, poly->vertices[i])) > 0) return;
+    q->hit = id;
+}
+
+static ga2d_body_id pick_body(const app *a, ga2d_vec p)
+{
+    pick_query q;
+    ga2d_debug_draw dd = ga2d_default_debug_draw();
+    q.a = a;
+    q.p = p;
+    q.hit = ga2d_body_id_null();
+    dd.polygon = pick_polygon;
+    dd.context = &q;
+    ga2d_world_draw(a->world, &dd);
+    return q.hit;
+}
+
+/* Grab the body under world point p.  The spring is tuned to the mass the
+   cursor feels at the grab point, m_eff = 1 / (1/m + |r|^2 / I) (the
+   smallest over directions): k = m_eff w^2, c = 2 m_eff w with w = 2 pi 5 Hz
+   is then critically damped at 5 Hz there, and stays stable with the force
+   held over a whole 1/60 s step (c dt / m_eff = 1.05 < 2) even at a corner,
+   where m_eff of a box is a quarter of m. */
+static void start_drag(app *a, ga2d_vec p)
+{
+    ga2d_body_id id = pick_body(a, p);
+    ga2d_mass md;
+    ga2d_vec r;
+    double inv_m, omega = 2 * PI_D * DRAG_HERTZ, m_eff;
+    if (ga2d_body_id_is_null(id)) return;
+    md = ga2d_body_mass_data(a->world, id);
+    r = ga2d_vec_sub(p, ga2d_body_center(a->world, id));
+    inv_m = 1.0 / (double)md.mass;
+    if (md.inertia > 0) inv_m += (double)ga2d_vec_length_sq(r) / (double)md.inertia;
+    m_eff = 1.0 / inv_m;
+    a->grab = id;
+    a->grab_local = ga2d_transform_apply_inv(ga2d_body_transform(a->world, id), p);
+    a->grab_mass = md.mass;
+    a->spring_k = m_eff * omega * omega;
+    a->spring_c = 2.0 * m_eff * omega;
+    a->spin_c = 2.0 * (double)md.inertia; /* a light spin drag: 2 /s */
+    a->dragging = 1;
+    ga2d_body_set_awake(a->world, id, 1);
+}
+
+/* F = k (cursor - grab point) - c v(grab point), at the grab point, capped at
+   100 g of the body's mass; called before every step (forces last one step). */
+static void apply_drag(app *a)
+{
+    ga2d_transform x;
+    ga2d_vec gp, v, f;
+    double fx, fy, len, cap;
+    if (!a->dragging) return;
+    if (!ga2d_body_is_valid(a->world, a->grab)) {
+        a->dragging = 0;
+        return;
+    }
+    x = ga2d_body_transform(a->world, a->grab);
+    gp = ga2d_transform_apply(x, a->grab_local);
+    v = ga2d_body_velocity_at(a->world, a->grab, gp);
+    fx = a->spring_k * (double)(a->cursor.x - gp.x) - a->spring_c * (double)v.x;
+    fy = a->spring_k * (double)(a->cursor.y - gp.y) - a->spring_c * (double)v.y;
+    len = sqrt(fx * fx + fy * fy);
+    cap = 1000.0 * (double)a->grab_mass;
+    if (len > cap) {
+        fx *= cap / len;
+        fy *= cap / len;
+    }
+    f = ga2d_vec_make((ga2d_real)fx, (ga2d_real)fy);
+    ga2d_body_apply_force(a->world, a->grab, f, gp);
+    ga2d_body_apply_torque(a->world, a->grab,
+                           (ga2d_real)(-a->spin_c * (double)ga2d_body_angular_velocity(a->world, a->grab)));
+}
+
+/* A new 1 m box at p with velocity v. */
+static void throw_box(app *a, ga2d_vec p, ga2d_vec v)
+{
+    ga2d_body_id id;
+    if (a->body_count >= MAX_BODIES) return;
+    id = add_box(a, GA2D_BODY_DYNAMIC, p.x, p.y, 0.5f, 0.5f, 0, 0.6f, 0.1f);
+    if (!ga2d_body_id_is_null(id)) ga2d_body_set_velocity(a->world, id, v);
+}
+
+/* The throw's velocity: 4 /s times the drag (press to release), at most
+   30 m/s; a click without a drag throws up and to the right. */
+static ga2d_vec throw_velocity(ga2d_vec from, ga2d_vec to)
+{
+    ga2d_vec d = ga2d_vec_scale(ga2d_vec_sub(to, from), 4);
+    ga2d_real len = ga2d_vec_length(d);
+    if (len < 1) return ga2d_vec_make(10, 5);
+    if (len > 30) d = ga2d_vec_scale(d, 30 / len);
+    return d;
+}
+
+/* Bodies that fell off the ground are removed. */
+static void cull_fallen(app *a)
+{
+    int i, kept = 0;
+    for (i = 0; i < a->body_count; ++i) {
+        ga2d_body_id id = a->bodies[i];
+        if (!ga2d_body_is_valid(a->world, id)) continue;
+        if (ga2d_body_center(a->world, id).y < -40) {
+            if (a->dragging && ga2d_body_id_equal(id, a->grab)) a->dragging = 0;
+            ga2d_body_destroy(a->world, id);
+            continue;
+        }
+        a->bodies[kept++] = id;
+    }
+    a->body_count = kept;
+}
+
+static void step_world(app *a)
+{
+    Uint64 t0, t1;
+    apply_drag(a);
+    t0 = SDL_GetPerformanceCounter();
+    ga2d_world_step(a->world, (ga2d_real)STEP_DT);
+    t1 = SDL_GetPerformanceCounter();
+    a->step_ms[a->step_ms_next] = 1000.0 * (double)(t1 - t0) / (double)SDL_GetPerformanceFrequency();
+    a->step_ms_next = (a->step_ms_next + 1) % TIMING_WINDOW;
+    if (a->step_ms_count < TIMING_WINDOW) ++a->step_ms_count;
+    cull_fallen(a);
+}
+
+static double average_step_ms(const app *a)
+{
+    double sum = 0;
+    int i;
+    for (i = 0; i < a->step_ms_count; ++i) sum += a->step_ms[i];
+    return a->step_ms_count ? sum / a->step_ms_count : 0;
+}
+
+/* ---------------------------------------------------------------- drawing */
+static SDL_Color rgb(uint32_t c, double k)
+{
+    SDL_Color s;
+    s.r = (Uint8)((double)((c >> 16) & 0xFF) * k);
+    s.g = (Uint8)((double)((c >> 8) & 0xFF) * k);
+    s.b = (Uint8)((double)(c & 0xFF) * k);
+    s.a = 255;
+    return s;
+}
+
+/* A body: a filled fan of triangles (the polygon is convex) in a darker
+   shade of its state colour, then its outline in the colour itself. */
+static void draw_polygon(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform x, uint32_t color, void *ctx)
+{
+    const app *a = (const app *)ctx;
+    SDL_Vertex v[GA2D_MAX_POLYGON_VERTICES];
+    SDL_FPoint line[GA2D_MAX_POLYGON_VERTICES + 1];
+    int idx[3 * GA2D_MAX_POLYGON_VERTICES];
+    int i, n = p->count, ni = 0, grabbed = a->dragging && ga2d_body_id_equal(id, a->grab);
+    SDL_Color fill = rgb(color, 0.55), edge = grabbed ? rgb(0xFFFFFFu, 1) : rgb(color, 1);
+    if (n < 3 || n > GA2D_MAX_POLYGON_VERTICES) return;
+    for (i = 0; i < n; ++i) {
+        v[i].position = line[i] = to_screen(&a->cam, ga2d_transform_apply(x, p->vertices[i]));
+        v[i].color = fill;
+        v[i].tex_coord.x = v[i].tex_coord.y = 0;
+    }
+    line[n] = line[0];
+    for (i = 1; i + 1 < n; ++i) {
+        idx[ni++] = 0;
+        idx[ni++] = i;
+        idx[ni++] = i + 1;
+    }
+    SDL_RenderGeometry(a->ren, NULL, v, n, idx, ni);
+    SDL_SetRenderDrawColor(a->ren, edge.r, edge.g, edge.b, 255);
+    SDL_RenderDrawLinesF(a->ren, line, n + 1);
+}
+
+/* A contact point: a small square and its normal, 0.3 m long. */
+static void draw_contact(ga2d_vec p, ga2d_vec normal, ga2d_real separation, uint32_t color, void *ctx)
+{
+    const app *a = (const app *)ctx;
+    SDL_Color c = rgb(color, 1);
+    SDL_FPoint s = to_screen(&a->cam, p), e = to_screen(&a->cam, ga2d_vec_add(p, ga2d_vec_scale(normal, 0.3f)));
+    SDL_FRect r;
+    (void)separation;
+    r.x = s.x - 3;
+    r.y = s.y - 3;
+    r.w = r.h = 6;
+    SDL_SetRenderDrawColor(a->ren, c.r, c.g, c.b, 255);
+    SDL_RenderFillRectF(a->ren, &r);
+    SDL_SetRenderDrawColor(a->ren, 255, 230, 120, 255);
+    SDL_RenderDrawLineF(a->ren, s.x, s.y, e.x, e.y);
+}
+
+static void draw_dot(SDL_Renderer *r, SDL_FPoint p, float half)
+{
+    SDL_FRect q;
+    q.x = p.x - half;
+    q.y = p.y - half;
+    q.w = q.h = 2 * half;
+    SDL_RenderFillRectF(r, &q);
+}
+
+static void draw_frame(app *a)
+{
+    SDL_Renderer *r = a->ren;
+    ga2d_debug_draw dd = ga2d_default_debug_draw();
+    ga2d_world_counters wc = ga2d_world_get_counters(a->world);
+    SDL_Color white = {235, 235, 235, 255}, dim = {150, 160, 175, 255}, yellow = {255, 220, 110, 255};
+    SDL_Rect panel;
+    char line[160];
+    int i;
+
+    SDL_SetRenderDrawColor(r, 24, 26, 32, 255);
+    SDL_RenderClear(r);
+
+    dd.polygon = draw_polygon;
+    dd.contact = draw_contact;
+    dd.draw_contacts = a->show_contacts;
+    dd.context = a;
+    ga2d_world_draw(a->world, &dd);
+
+    for (i = 0; i < a->label_count; ++i) {
+        SDL_FPoint s = to_screen(&a->cam, a->labels[i].at);
+        draw_text_shadowed(r, (int)s.x - text_width(a->labels[i].text, 2) / 2, (int)s.y, 2, a->labels[i].text, yellow);
+    }
+
+    if (a->dragging) { /* the spring: grab point to cursor */
+        ga2d_vec gp = ga2d_transform_apply(ga2d_body_transform(a->world, a->grab), a->grab_local);
+        SDL_FPoint s = to_screen(&a->cam, gp), e = to_screen(&a->cam, a->cursor);
+        SDL_SetRenderDrawColor(r, 255, 255, 255, 255);
+        SDL_RenderDrawLineF(r, s.x, s.y, e.x, e.y);
+        draw_dot(r, s, 3);
+        SDL_SetRenderDrawColor(r, 120, 220, 255, 255);
+        draw_dot(r, e, 4);
+    }
+    if (a->aiming) { /* the throw: where the box starts, and its velocity / 4 */
+        SDL_FPoint s = to_screen(&a->cam, a->aim_from), e = to_screen(&a->cam, a->cursor);
+        SDL_SetRenderDrawColor(r, 120, 220, 255, 255);
+        SDL_RenderDrawLineF(r, s.x, s.y, e.x, e.y);
+        draw_dot(r, s, 4);
+    }
+
+    /* text panels */
+    SDL_SetRenderDrawBlendMode(r, SDL_BLENDMODE_BLEND);
+    SDL_SetRenderDrawColor(r, 0, 0, 0, 170);
+    panel.x = 0;
+    panel.y = 0;
+    panel.w = WINDOW_W;
+    panel.h = HUD_TOP - 6;
+    SDL_RenderFillRect(r, &panel);
+    panel.y = WINDOW_H - HUD_BOTTOM;
+    panel.h = HUD_BOTTOM;
+    SDL_RenderFillRect(r, &panel);
+    SDL_SetRenderDrawBlendMode(r, SDL_BLENDMODE_NONE);
+
+    snprintf(line, sizeof line, "%d %s   BODIES %d   AWAKE %d   CONTACTS %d   STEP %.3f MS (AVG OF %d)%s",
+             a->scene, SCENE_NAMES[a->scene], wc.body_count, wc.awake_body_count, wc.touching_count,
+             average_step_ms(a), a->step_ms_count, a->paused ? "   PAUSED" : "");
+    draw_text(r, 10, 8, 2, line, white);
+    snprintf(line, sizeof line, "SUBSTEPS %d [S]   SOLVER %s [V]   SLEEP %s [Z]   CONTACT POINTS %s [C]",
+             SUBSTEP_CHOICES[a->substep_index], SOLVER_NAMES[a->solver], a->sleep_on ? "ON" : "OFF",
+             a->show_contacts ? "ON" : "OFF");
+    draw_text(r, 10, 32, 2, line, white);
+    draw_text(r, 10, WINDOW_H - HUD_BOTTOM + 8, 2,
+              "1-5 SCENE  R RESET  LEFT DRAG: PULL  RIGHT DRAG: THROW A BOX  P PAUSE  ESC QUIT", dim);
+}
+
+/* Saves what the renderer drew (before SDL_RenderPresent) as a BMP. */
+static int save_screenshot(SDL_Renderer *r, const char *path)
+{
+    int w, h, ok;
+    SDL_Surface *s;
+    if (SDL_GetRendererOutputSize(r, &w, &h) != 0) return 0;
+    s = SDL_CreateRGBSurfaceWithFormat(0, w, h, 32, SDL_PIXELFORMAT_ARGB8888);
+    if (!s) return 0;
+    ok = SDL_RenderReadPixels(r, NULL, SDL_PIXELFORMAT_ARGB8888, s->pixels, s->pitch) == 0 &&
+         SDL_SaveBMP(s, path) == 0;
+    SDL_FreeSurface(s);
+    return ok;
+}
+
+/* ------------------------------------------------------------------- input */
+static void on_key(app *a, SDL_Keycode k, int *running)
+{
+    if (k >= SDLK_1 && k <= SDLK_5) load_scene(a, (int)(k - SDLK_0));
+    switch (k) {
+    case SDLK_ESCAPE: *running = 0; break;
+    case SDLK_r: load_scene(a, a->scene); break;
+    case SDLK_p: a->paused = !a->paused; break;
+    case SDLK_c: a->show_contacts = !a->show_contacts; break;
+    case SDLK_s:
+        a->substep_index = (a->substep_index + 1) % 4;
+        ga2d_world_set_substeps(a->world, SUBSTEP_CHOICES[a->substep_index]);
+        a->step_ms_count = a->step_ms_next = 0;
+        break;
+    case SDLK_v:
+        a->solver = (ga2d_solver)((a->solver + 1) % GA2D_SOLVER_COUNT);
+        ga2d_world_set_solver(a->world, a->solver);
+        a->step_ms_count = a->step_ms_next = 0;
+        break;
+    case SDLK_z:
+        a->sleep_on = !a->sleep_on;
+        ga2d_world_enable_sleep(a->world, a->sleep_on);
+        a->step_ms_count = a->step_ms_next = 0;
+        break;
+    default: break;
+    }
+}
+
+static void on_event(app *a, const SDL_Event *e, int *running)
+{
+    switch (e->type) {
+    case SDL_QUIT: *running = 0; break;
+    case SDL_KEYDOWN:
+        if (!e->key.repeat) on_key(a, e->key.keysym.sym, running);
+        break;
+    case SDL_MOUSEMOTION: a->cursor = to_world(&a->cam, e->motion.x, e->motion.y); break;
+    case SDL_MOUSEBUTTONDOWN:
+        a->cursor = to_world(&a->cam, e->button.x, e->button.y);
+        if (e->button.button == SDL_BUTTON_LEFT) start_drag(a, a->cursor);
+        if (e->button.button == SDL_BUTTON_RIGHT) {
+            a->aiming = 1;
+            a->aim_from = a->cursor;
+        }
+        break;
+    case SDL_MOUSEBUTTONUP:
+        a->cursor = to_world(&a->cam, e->button.x, e->button.y);
+        if (e->button.button == SDL_BUTTON_LEFT) a->dragging = 0;
+        if (e->button.button == SDL_BUTTON_RIGHT && a->aiming) {
+            a->aiming = 0;
+            throw_box(a, a->aim_from, throw_velocity(a->aim_from, a->cursor));
+        }
+        break;
+    default: break;
+    }
+}
+
+/* --drag-test: the dynamic body whose centre is highest. */
+static ga2d_body_id top_body(const app *a)
+{
+    ga2d_body_id best = ga2d_body_id_null();
+    ga2d_real y = -1e30f;
+    int i;
+    for (i = 0; i < a->body_count; ++i) {
+        ga2d_vec c = ga2d_body_center(a->world, a->bodies[i]);
+        if (ga2d_body_is_valid(a->world, a->bodies[i]) && c.y > y) {
+            y = c.y;
+            best = a->bodies[i];
+        }
+    }
+    return best;
+}
+
+/* Sends a synthetic mouse event through the same handler as real input. */
+static void fake_mouse(app *a, Uint32 type, Uint8 button, ga2d_vec world, int *running)
+{
+    SDL_Event e;
+    SDL_FPoint s = to_screen(&a->cam, world);
+    memset(&e, 0, sizeof e);
+    e.type = type;
+    if (type == SDL_MOUSEMOTION) {
+        e.motion.x = (Sint32)lround((double)s.x);
+        e.motion.y = (Sint32)lround((double)s.y);
+    } else {
+        e.button.button = button;
+        e.button.x = (Sint32)lround((double)s.x);
+        e.button.y = (Sint32)lround((double)s.y);
+    }
+    on_event(a, &e, running);
+}
+
+static int usage(void)
+{
+    fprintf(stderr, "usage: sdl_demo [--scene 1-5] [--frames N] [--screenshot FILE.bmp] [--drag-test]\n"
+                    "                [--throw-test] [--substeps 1|2|4|8] [--solver soft|baumgarte|ngs]\n"
+                    "                [--no-sleep] [--contacts]\n");
+    return 2;
+}
+
+int main(int argc, char *argv[])
+{
+    static app a; /* large (the body list): not on the stack */
+    SDL_Window *window;
+    const char *screenshot = NULL;
+    int frames = 0, drag_test = 0, throw_test = 0, scene = 1, running = 1, frame, i;
+    ga2d_vec drag_from = ga2d_vec_make(0, 0);
+    Uint64 last;
+    double accumulator = 0;
+
+    a.substep_index = 2; /* 4, the library's default */
+    a.solver = GA2D_SOLVER_SOFT_STEP;
+    a.sleep_on = 1;
+    for (i = 1; i < argc; ++i) {
+        const char *o = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(o, "--scene") && val) scene = atoi(argv[++i]);
+        else if (!strcmp(o, "--frames") && val) frames = atoi(argv[++i]);
+        else if (!strcmp(o, "--screenshot") && val) screenshot = argv[++i];
+        else if (!strcmp(o, "--drag-test")) drag_test = 1;
+        else if (!strcmp(o, "--throw-test")) throw_test = 1;
+        else if (!strcmp(o, "--no-sleep")) a.sleep_on = 0;
+        else if (!strcmp(o, "--contacts")) a.show_contacts = 1;
+        else if (!strcmp(o, "--substeps") && val) {
+            int s = atoi(argv[++i]), k;
+            for (k = 0; k < 4; ++k)
+                if (SUBSTEP_CHOICES[k] == s) a.substep_index = k;
+        } else if (!strcmp(o, "--solver") && val) {
+            ++i;
+            if (!strcmp(val, "soft")) a.solver = GA2D_SOLVER_SOFT_STEP;
+            else if (!strcmp(val, "baumgarte")) a.solver = GA2D_SOLVER_PGS_BAUMGARTE;
+            else if (!strcmp(val, "ngs")) a.solver = GA2D_SOLVER_PGS_NGS;
+            else return usage();
+        } else return usage();
+    }
+    if (scene < 1 || scene > 5) return usage();
+    if (screenshot && frames <= 0) frames = 120;
+    if ((drag_test || throw_test) && frames <= 0) frames = 180;
+
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+        fprintf(stderr, "sdl_demo: SDL_Init: %s\n", SDL_GetError());
+        return 1;
+    }
+    window = SDL_CreateWindow("ga2d_physics - SDL demo", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                              WINDOW_W, WINDOW_H, SDL_WINDOW_SHOWN);
+    if (!window) {
+        fprintf(stderr, "sdl_demo: SDL_CreateWindow: %s\n", SDL_GetError());
+        SDL_Quit();
+        return 1;
+    }
+    /* vsync paces the interactive window; scripted runs go flat out */
+    a.ren = SDL_CreateRenderer(window, -1, SDL_RENDERER_ACCELERATED | (frames ? 0 : SDL_RENDERER_PRESENTVSYNC));
+    if (!a.ren) a.ren = SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE);
+    if (!a.ren) {
+        fprintf(stderr, "sdl_demo: SDL_CreateRenderer: %s\n", SDL_GetError());
+        SDL_DestroyWindow(window);
+        SDL_Quit();
+        return 1;
+    }
+    load_scene(&a, scene);
+
+    last = SDL_GetPerformanceCounter();
+    for (frame = 0; running; ++frame) {
+        SDL_Event e;
+        while (SDL_PollEvent(&e)) on_event(&a, &e, &running);
+
+        if (throw_test && frame == 10) { /* from the left edge, up and in */
+            ga2d_vec from = to_world(&a.cam, 60, HUD_TOP + 0.4 * (WINDOW_H - HUD_TOP - HUD_BOTTOM));
+            fake_mouse(&a, SDL_MOUSEBUTTONDOWN, SDL_BUTTON_RIGHT, from, &running);
+            fake_mouse(&a, SDL_MOUSEBUTTONUP, SDL_BUTTON_RIGHT, ga2d_vec_add(from, ga2d_vec_make(4, 1)), &running);
+        }
+        if (drag_test && frame == 20) { /* press on the top body, off its centre */
+            ga2d_body_id top = top_body(&a);
+            if (!ga2d_body_id_is_null(top)) {
+                drag_from = ga2d_transform_apply(ga2d_body_transform(a.world, top), ga2d_vec_make(0.3f, 0.3f));
+                fake_mouse(&a, SDL_MOUSEBUTTONDOWN, SDL_BUTTON_LEFT, drag_from, &running);
+                if (!a.dragging) fprintf(stderr, "sdl_demo: --drag-test: the pick missed the top body\n");
+            }
+        }
+        if (drag_test && frame > 20) { /* move the cursor 5 m right, 1.5 m up over 60 frames, then hold */
+            double t = frame - 20 >= 60 ? 1.0 : (frame - 20) / 60.0;
+            fake_mouse(&a, SDL_MOUSEMOTION, 0,
+                       ga2d_vec_add(drag_from, ga2d_vec_make((ga2d_real)(5 * t), (ga2d_real)(1.5 * t))), &running);
+        }
+
+        if (frames) { /* scripted: one fixed step per frame */
+            if (!a.paused) step_world(&a);
+        } else {
+            Uint64 now = SDL_GetPerformanceCounter();
+            int steps = 0;
+            accumulator += (double)(now - last) / (double)SDL_GetPerformanceFrequency();
+            last = now;
+            if (accumulator > 0.25) accumulator = 0.25;
+            if (a.paused) accumulator = 0;
+            while (accumulator >= STEP_DT && steps < 5) {
+                step_world(&a);
+                accumulator -= STEP_DT;
+                ++steps;
+            }
+        }
+
+        draw_frame(&a);
+        if (frames && frame + 1 >= frames) {
+            ga2d_world_counters wc = ga2d_world_get_counters(a.world);
+            if (screenshot) {
+                if (save_screenshot(a.ren, screenshot)) printf("saved %s\n", screenshot);
+                else fprintf(stderr, "sdl_demo: screenshot failed: %s\n", SDL_GetError());
+            }
+            printf("scene %d (%s): %d frames, %d bodies, %d awake, %d touching, %.3f ms/step "
+                   "(substeps %d, %s, sleep %s)%s\n",
+                   a.scene, SCENE_NAMES[a.scene], frames, wc.body_count, wc.awake_body_count, wc.touching_count,
+                   average_step_ms(&a), SUBSTEP_CHOICES[a.substep_index], SOLVER_NAMES[a.solver],
+                   a.sleep_on ? "on" : "off", a.dragging ? ", dragging" : "");
+            running = 0;
+        }
+        SDL_RenderPresent(a.ren);
+        if (!frames) SDL_Delay(1); /* vsync paces it; never spin without it */
+    }
+
+    ga2d_world_destroy(a.world);
+    SDL_DestroyRenderer(a.ren);
+    SDL_DestroyWindow(window);
+    SDL_Quit();
+    return 0;
+}
