@@ -380,7 +380,7 @@ SVGW_FN long svgw_write(const svgw *s, const char *path, const char *caption)
     w = box[2] - box[0];
     h = box[3] - box[1];
     if (w < h / 3) { box[0] -= (h / 3 - w) / 2; w = h / 3; } /* no slivers */
-    if (h < w / 3) { box[1] -= (w / 3 - h) / 2; h = w / 3; }
+    if (h < w / 3) { box[3] += (w / 3 - h) / 2; /* the extra height goes above, under the caption */ h = w / 3; }
     size = w > h ? w : h;
     tol = size / 20000;
     decimals = (int)ceil(-log10(tol));
