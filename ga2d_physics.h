@@ -1704,6 +1704,21 @@ static ga2d_real ga2d__face_gap(const ga2d__hull *p, int i, const ga2d__hull *ot
     return lo;
 }
 
+/* The incident edge: the one whose normal is most against n. */
+static int ga2d__incident_edge(const ga2d__hull *inc, ga2d_vec n)
+{
+    ga2d_real lo = GA2D__MAX;
+    int j, best = 0;
+    for (j = 0; j < inc->count; ++j) {
+        ga2d_real d = ga2d_dot(n, inc->n[j]);
+        if (d < lo) {
+            lo = d;
+            best = j;
+        }
+    }
+    return best;
+}
+
 static uint32_t ga2d__feature_id(int flip, int ia, int ib)
 {
     return ((uint32_t)(flip != 0) << 16) | ((uint32_t)ia << 8) | (uint32_t)ib;
@@ -1742,7 +1757,7 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
     const ga2d__hull *ref, *inc;
     ga2d_transform xf = ga2d_transform_inv_mul(xa, xb);
     ga2d_vec d_ab = ga2d_vec_sub(xb.p, xa.p), n, t, r1, r2, v21, v22;
-    ga2d_real sep_a, sep_b, sep, lo_dot;
+    ga2d_real sep_a, sep_b, sep;
     int edge_a, edge_b, flip, i11, i12, i21, i22, j;
 
     m->count = 0;
@@ -1770,13 +1785,7 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
     n = ref->n[i11];
     r1 = ref->v[i11];
     r2 = ref->v[i12];
-    /* incident edge: the most anti-parallel normal */
-    i21 = 0;
-    lo_dot = GA2D__MAX;
-    for (j = 0; j < inc->count; ++j) {
-        ga2d_real d = ga2d_dot(n, inc->n[j]);
-        if (d < lo_dot) { lo_dot = d; i21 = j; }
-    }
+    i21 = ga2d__incident_edge(inc, n);
     i22 = i21 + 1 < inc->count ? i21 + 1 : 0;
     v21 = inc->v[i21];
     v22 = inc->v[i22];
@@ -1836,12 +1845,7 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
         n = fn;
         r1 = ref->v[i11];
         r2 = ref->v[i12];
-        i21 = 0;
-        lo_dot = GA2D__MAX;
-        for (j = 0; j < inc->count; ++j) {
-            ga2d_real d = ga2d_dot(n, inc->n[j]);
-            if (d < lo_dot) { lo_dot = d; i21 = j; }
-        }
+        i21 = ga2d__incident_edge(inc, n);
         i22 = i21 + 1 < inc->count ? i21 + 1 : 0;
         v21 = inc->v[i21];
         v22 = inc->v[i22];
