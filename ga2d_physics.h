@@ -1986,6 +1986,7 @@ typedef struct ga2d__body {
     int contact_head;            /* first link of its contact list, or -1 */
     ga2d_vec center0;            /* where the step began (solver) */
     ga2d_rotor q0;
+    ga2d_rotor dq;               /* q q0~: its turn since then, per solver pass */
     ga2d_real extent;            /* farthest vertex from the centre */
     ga2d_real sleep_time, island_rest;
     int island;                  /* union-find parent while islands form */
@@ -2841,6 +2842,7 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
     b->center = ga2d_vec_add(def->position, ga2d_rotate(b->q, m.center));
     b->center0 = b->center; /* bodies that never step keep their start pose */
     b->q0 = b->q;
+    b->dq = ga2d_rotor_identity();
     b->friction = def->friction;
     b->restitution = def->restitution;
     b->linear_damping = def->linear_damping;
@@ -3049,6 +3051,7 @@ GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2
     b->center = ga2d_vec_add(position, ga2d_rotate(b->q, b->local_center));
     b->center0 = b->center;
     b->q0 = b->q;
+    b->dq = ga2d_rotor_identity();
     b->field_valid = 0;
     ga2d__update_proxy(w, (int)id.index1 - 1);
     return GA2D_OK;
@@ -3622,11 +3625,23 @@ static void ga2d__remember_start(ga2d_world *w)
         ga2d__body *b = &w->bodies[w->moving[k]];
         b->center0 = b->center;
         b->q0 = b->q;
+        b->dq = ga2d_rotor_identity();
+    }
+}
+
+/* Each moving body's turn since the step began, once per solver pass
+   rather than once per contact point. */
+static void ga2d__refresh_turns(ga2d_world *w)
+{
+    int k;
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0));
     }
 }
 
 /* Point p now.  Each body carries its anchor by its motion since the step
-   began (r -> r q q0~); the separation is the start separation plus how far
+   began (r -> r dq, dq = q q0~ refreshed per pass); the separation is the start separation plus how far
    B's anchor point moved away from A's along the normal; and the impulse
    acts at the midpoint of the two anchor points, the one point the pair
    shares, so that the impulses -P on A and +P on B have no moment and
@@ -3636,8 +3651,8 @@ static void ga2d__remember_start(ga2d_world *w)
 static ga2d_real ga2d__point_now(const ga2d__constraint *c, const ga2d__body *a, const ga2d__body *b,
                                  const ga2d__cpoint *p, ga2d_vec *ra, ga2d_vec *rb)
 {
-    ga2d_vec ra1 = ga2d_rotate(ga2d_rotor_mul(a->q, ga2d_rotor_inverse(a->q0)), p->ra);
-    ga2d_vec rb1 = ga2d_rotate(ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0)), p->rb);
+    ga2d_vec ra1 = ga2d_rotate(a->dq, p->ra);
+    ga2d_vec rb1 = ga2d_rotate(b->dq, p->rb);
     ga2d_vec d = ga2d_vec_sub(b->center, a->center);
     ga2d_vec da = ga2d_vec_add(ga2d_vec_sub(a->center, a->center0), ga2d_vec_sub(ra1, p->ra));
     ga2d_vec db = ga2d_vec_add(ga2d_vec_sub(b->center, b->center0), ga2d_vec_sub(rb1, p->rb));
@@ -3649,6 +3664,7 @@ static ga2d_real ga2d__point_now(const ga2d__constraint *c, const ga2d__body *a,
 static void ga2d__warm_start(ga2d_world *w)
 {
     int i, k;
+    ga2d__refresh_turns(w);
     for (i = 0; i < w->constraint_count; ++i) {
         ga2d__constraint *c = &w->constraints[i];
         ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
@@ -3678,6 +3694,7 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
     ga2d__soft soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
     ga2d__soft stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
     int i, k, friction = w->def.enable_friction;
+    ga2d__refresh_turns(w);
     for (i = 0; i < w->constraint_count; ++i) {
         ga2d__constraint *c = &w->constraints[i];
         ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
@@ -3727,6 +3744,7 @@ static void ga2d__solve_positions(ga2d_world *w)
 {
     ga2d_real max_fix = GA2D__R(0.2) * w->def.length_units_per_meter;
     int i, k;
+    ga2d__refresh_turns(w);
     for (i = 0; i < w->constraint_count; ++i) {
         ga2d__constraint *c = &w->constraints[i];
         ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
@@ -3739,8 +3757,14 @@ static void ga2d__solve_positions(ga2d_world *w)
             P = ga2d_vec_scale(c->normal, lambda);
             a->center = ga2d_vec_sub(a->center, ga2d_vec_scale(P, c->inv_ma));
             b->center = ga2d_vec_add(b->center, ga2d_vec_scale(P, c->inv_mb));
-            if (c->inv_ia != 0) a->q = ga2d__turn(a->q, -c->inv_ia * ga2d_wedge(ra, P), GA2D_ROTATION_LINEAR);
-            if (c->inv_ib != 0) b->q = ga2d__turn(b->q, c->inv_ib * ga2d_wedge(rb, P), GA2D_ROTATION_LINEAR);
+            if (c->inv_ia != 0) {
+                a->q = ga2d__turn(a->q, -c->inv_ia * ga2d_wedge(ra, P), GA2D_ROTATION_LINEAR);
+                a->dq = ga2d_rotor_mul(a->q, ga2d_rotor_inverse(a->q0));
+            }
+            if (c->inv_ib != 0) {
+                b->q = ga2d__turn(b->q, c->inv_ib * ga2d_wedge(rb, P), GA2D_ROTATION_LINEAR);
+                b->dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0));
+            }
         }
     }
 }
@@ -3879,6 +3903,11 @@ static void ga2d__put_to_sleep(ga2d_world *w, int slot)
     b->awake = 0;
     b->v = ga2d_vec_make(0, 0);
     b->w = 0;
+    /* its pose now is its start pose for as long as it sleeps: a body
+       that touches it must see no motion of it */
+    b->center0 = b->center;
+    b->q0 = b->q;
+    b->dq = ga2d_rotor_identity();
     b->force = ga2d_vec_make(0, 0);
     b->torque = 0;
     ga2d__moving_remove(w, slot);
