@@ -102,5 +102,9 @@ $(BUILD)/bench/%: tests/bench/%.c $(HEADER)
 bench: $(BENCH_BINS)
 	@for b in $(BENCH_BINS); do echo "== $$b"; ./$$b $(BUILD)/bench/$$(basename $$b).csv || exit 1; done
 
+# --- make trade (tests/bench/trade.mk), make bench-peers (tests/bench/peers.mk),
+#     make fuzz (tests/fuzz/fuzz.mk)
+-include tests/bench/trade.mk tests/bench/peers.mk tests/fuzz/fuzz.mk
+
 clean:
 	rm -rf $(BUILD)

@@ -3785,8 +3785,8 @@ static void ga2d__solve_positions(ga2d_world *w)
 static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
 {
     ga2d_real threshold = w->def.restitution_threshold * w->def.length_units_per_meter;
-    ga2d_real look = dt + dt / (ga2d_real)w->def.substeps;
-    int i, k, pass, busy = 1;
+    ga2d_real h = dt / (ga2d_real)w->def.substeps, look = dt + h;
+    int i, k, pass, busy = 1, euler = w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER;
     for (pass = 0; pass < 32 && busy; ++pass) {
         busy = 0;
         for (i = 0; i < w->constraint_count; ++i) {
@@ -3799,7 +3799,13 @@ static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
             closing = closing > 0 ? closing : 0;
             for (k = 0; k < c->count; ++k) {
                 ga2d_real gap = c->p[k].separation > 0 ? c->p[k].separation : 0, vi2, leave2;
-                vn[k] = ga2d_dot(ga2d__relative_velocity(a, b, c->p[k].ra, c->p[k].rb), c->normal);
+                /* symplectic Euler's velocity is the one its last drift
+                   used, half a kick behind the true one: its modified
+                   energy v^2 + 2 g y - g h v is (v - g h/2)^2 + 2 g y up to
+                   a constant.  The bounce acts on the true speed, so the
+                   flight that follows is e times as fast, not e times
+                   less g h (issue 5's e^2n heights) */
+                vn[k] = ga2d_dot(ga2d__relative_velocity(a, b, c->p[k].ra, c->p[k].rb), c->normal) - (euler ? closing * h / 2 : 0);
                 /* closing within the step, or the first substep of the next
                    (the last relax pass brakes a point that is still apart
                    as if a substep followed; the next step would then see a
