@@ -82,13 +82,35 @@ $(BUILD)/readme/quickstart: $(BUILD)/readme/quickstart.c $(HEADER)
 	gcc -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
 	g++ -std=c++11 -x c++ $(OPT) $(WARN) $(INC) $< -x none -o $@-cxx $(LIBS)
 
-test-build: $(TEST_BINS) $(BUILD)/readme/quickstart
+# Determinism (issue 8): the mixed scene of tests/determinism_scene.h must
+# hash the same in every build of one precision: gcc and clang, C and C++,
+# -O0, -O2 and -O3 (all with -ffp-contract=off; never -ffast-math).
+DET_VARIANTS := gcc-O0 gcc-O2 gcc-O3 clang-O0 clang-O3 gxx-O2 clangxx-O2
+DET_CC_gcc     := gcc -std=c99
+DET_CC_clang   := clang -std=c99
+DET_CC_gxx     := g++ -std=c++11 -x c++
+DET_CC_clangxx := clang++ -std=c++11 -x c++
+DET_BINS := $(foreach p,float double,$(addprefix $(BUILD)/det/$(p)-,$(DET_VARIANTS)))
+DET_FLAGS_float  :=
+DET_FLAGS_double := -DGA2D_DOUBLE
+
+$(BUILD)/det/%: tests/determinism.c tests/determinism_scene.h $(HEADER)
+	@mkdir -p $(dir $@)
+	$(DET_CC_$(word 2,$(subst -, ,$*))) $(DET_FLAGS_$(word 1,$(subst -, ,$*))) -$(word 3,$(subst -, ,$*)) -ffp-contract=off $(WARN) $(INC) $< -x none -o $@ $(LIBS)
+
+test-build: $(TEST_BINS) $(BUILD)/readme/quickstart $(DET_BINS)
 
 # Runs every configuration (built in parallel), prints each one's summary,
 # and ends with the total line "N passed, N failed".
 test:
 	@$(MAKE) --no-print-directory -j$(NPROC) test-build
 	@echo "README quick start:" && ./$(BUILD)/readme/quickstart && ./$(BUILD)/readme/quickstart-cxx >/dev/null
+	@echo "determinism: one hash per precision over $(words $(DET_BINS)) builds" && \
+	  for p in float double; do \
+	    for b in $(BUILD)/det/$$p-*; do ./$$b || { echo "  $$b: churn changed the scene"; exit 1; }; done | sort | uniq -c; \
+	    n=$$(for b in $(BUILD)/det/$$p-*; do ./$$b; done | sort -u | wc -l); \
+	    test "$$n" = 1 || { echo "  determinism FAILED: $$p builds disagree"; exit 1; }; \
+	  done
 	@sh tests/run_all.sh $(TEST_BINS)
 
 # --- benchmarks: tests/bench/bench_*.c, each given a CSV path under build/bench

@@ -52,6 +52,15 @@
    with -ffp-contract=off (as the Makefile does) for results that do not
    depend on the compiler's use of fused multiply-add.
 
+   Determinism: with those flags a step gives the same bits under gcc and
+   clang, as C or C++, at any -O level (make test checks -O0/-O2/-O3), run
+   after run, and whatever bodies are made and destroyed elsewhere in the
+   world: the solver's order is canonical (body slots, then contact age),
+   never the contact pool's.  The step calls no libm function whose result
+   may differ between platforms (only sqrt, which IEEE rounds exactly; the
+   rotor update uses the library's own series).  Float and double builds
+   each have their own bits.
+
    ==========================================================================
    THE ALGEBRA, AND ITS CONVENTIONS
    ==========================================================================
@@ -286,6 +295,9 @@ typedef enum ga2d_result {
     GA2D_ERR_OUT_OF_MEMORY,
     GA2D_ERR_STALE_ID,          /* a destroyed, reused or forged body id  */
     GA2D_ERR_LOCKED,            /* the world is stepping (force callback) */
+    GA2D_ERR_BAD_SNAPSHOT,      /* truncated, corrupted, another version or
+                                   another build's snapshot                 */
+    GA2D_ERR_BUFFER_TOO_SMALL,  /* the snapshot does not fit the buffer     */
     GA2D_RESULT_COUNT
 } ga2d_result;
 
@@ -391,8 +403,10 @@ GA2D_API ga2d_transform ga2d_transform_inv_mul(ga2d_transform a, ga2d_transform 
    degenerate.  Coordinates beyond GA2D_MAX_COORDINATE are too large.
    Checks run in this order, and the first failure is returned:
    INVALID_ARGUMENT, TOO_FEW_POINTS, TOO_MANY_POINTS, NOT_FINITE,
-   TOO_LARGE, REPEATED_POINTS, COLLINEAR_POINTS (all on one line),
-   DEGENERATE, CLOCKWISE, COLLINEAR_POINTS (one vertex), NOT_CONVEX. */
+   TOO_LARGE, REPEATED_POINTS, DEGENERATE (L so small that 1e-5 L^2 is
+   below the smallest normal number: float L < 2.4e-17, double 3.3e-152),
+   COLLINEAR_POINTS (all on one line), DEGENERATE, CLOCKWISE,
+   COLLINEAR_POINTS (one vertex), NOT_CONVEX. */
 GA2D_API ga2d_result ga2d_polygon_make(const ga2d_vec *pts, int n, ga2d_polygon *out);
 /* The convex hull of any n >= 3 points: near-duplicates welded and points
    on an edge dropped (tolerance 4x that of ga2d_polygon_make), CCW from the
@@ -578,6 +592,13 @@ GA2D_API void ga2d_world_destroy(ga2d_world *w);
 /* Advances by dt seconds in substeps.  A dt that is not finite and > 0 is
    refused (GA2D_ERR_INVALID_ARGUMENT) and nothing changes. */
 GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt);
+/* After a step that returned GA2D_ERR_NOT_FINITE: the first body whose
+   state the step found not finite (a user force, impulse or field drove it
+   there).  The step put it back where the step began, at rest, its forces
+   cleared, before its neighbours could see it (they stay finite); the rest
+   of the step moved it as any body.  The null id when the last step
+   contained nothing. */
+GA2D_API ga2d_body_id ga2d_world_error_body(const ga2d_world *w);
 GA2D_API double ga2d_world_time(const ga2d_world *w);
 GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w);
 GA2D_API ga2d_vec ga2d_world_gravity(const ga2d_world *w);
@@ -599,6 +620,23 @@ GA2D_API ga2d_result ga2d_world_enable_restitution(ga2d_world *w, int on);
    allows).  A 10-box stack sinks 4 mm instead of 15, at about 1.8 times
    the cost per step. */
 GA2D_API ga2d_world_def ga2d_accurate_world_def(void);
+
+/* Snapshots, for rollback and replays: the whole world as a plain byte
+   buffer (versioned, with a checksum) that loads back into any world of
+   the same build (same ga2d_real, GA2D_MAX_POLYGON_VERTICES and ABI).
+   Load, then step, gives the same bits as the original steps: contacts and
+   their warm-start impulses are in it, and the solver's order does not
+   depend on where things sit in memory.  The loading world keeps its own
+   allocator and force callback; body user_data pointers are restored as
+   saved (they mean something only in the process that saved them).
+   save: BUFFER_TOO_SMALL if cap < ga2d_world_snapshot_size(w) (buf
+   untouched), OUT_OF_MEMORY.  load: BAD_SNAPSHOT for a truncated,
+   corrupted or wrong-version buffer, OUT_OF_MEMORY, LOCKED; on any error
+   the world is exactly as it was.  Neither may be called while the world
+   steps. */
+GA2D_API size_t ga2d_world_snapshot_size(const ga2d_world *w);
+GA2D_API ga2d_result ga2d_world_snapshot_save(const ga2d_world *w, void *buf, size_t cap);
+GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, size_t size);
 
 GA2D_API ga2d_body_def ga2d_default_body_def(void);
 /* Why a def would be refused: NOT_FINITE anywhere, INVALID_ARGUMENT for a
@@ -843,6 +881,8 @@ GA2D_API const char *ga2d_result_string(ga2d_result r)
     case GA2D_ERR_OUT_OF_MEMORY: return "out of memory";
     case GA2D_ERR_STALE_ID: return "id is stale or forged";
     case GA2D_ERR_LOCKED: return "the world is locked while it steps";
+    case GA2D_ERR_BAD_SNAPSHOT: return "snapshot is truncated, corrupted or from another version or build";
+    case GA2D_ERR_BUFFER_TOO_SMALL: return "buffer too small for the snapshot";
     case GA2D_RESULT_COUNT: break;
     }
     return "unknown result";
@@ -1170,6 +1210,9 @@ GA2D_API ga2d_result ga2d_polygon_make(const ga2d_vec *pts, int n, ga2d_polygon 
     for (i = 0; i < n; ++i)
         for (j = i + 1; j < n; ++j)
             if (ga2d_vec_length(ga2d_vec_sub(pts[j], pts[i])) <= tol) return GA2D_ERR_REPEATED_POINTS;
+    /* so small that 1e-5 L^2 is not a normal number: the wedges underflow,
+       no area can be told (and the mass would divide by a subnormal one) */
+    if (!(2 * GA2D__POLY_MIN_AREA_RATIO * L * L >= GA2D__MIN_NORMAL)) return GA2D_ERR_DEGENERATE;
     if (ga2d__all_collinear(pts, n, tol)) return GA2D_ERR_COLLINEAR_POINTS;
     area2 = ga2d__twice_area(pts, n);
     if (GA2D__FABS(area2) <= 2 * GA2D__POLY_MIN_AREA_RATIO * L * L) return GA2D_ERR_DEGENERATE;
@@ -1191,30 +1234,87 @@ GA2D_API ga2d_result ga2d_polygon_make(const ga2d_vec *pts, int n, ga2d_polygon 
     return GA2D_OK;
 }
 
-/* One gift-wrapping step from p: the point q such that no point lies
-   clearly right of p->q.  Points within tol of p are welded to it; among
-   points within tol of the line p->q the farthest wins, so points on an
-   edge are dropped.  -1 if every point welds to p. */
-static int ga2d__hull_next(const ga2d_vec *pts, int n, ga2d_vec p, ga2d_real tol)
+/* One gift-wrapping step from p, reached along direction u (zero at the
+   start): the point q such that no point lies clearly right of p->q.
+   Points within tol of p are welded to it, and points behind p on the line
+   it was reached along (the edge just wrapped) are not candidates.  The
+   most clockwise candidate is found first, with a comparison that orders
+   directions exactly (by their side of u, then by wedge), so the order of
+   the points cannot matter; then the farthest point ahead within tol of
+   that line, so points on an edge are dropped.  Taking a farther point
+   turns the line by up to tol at its distance, which a nearer point can
+   be clearly right of: then that point is the new most clockwise, and the
+   search repeats (each round ends farther out).  -1 if every point welds
+   to p. */
+static int ga2d__hull_behind(ga2d_vec u, ga2d_vec d, ga2d_real tol)
 {
-    int q = -1, r;
-    ga2d_vec dq = ga2d_vec_make(0, 0);
-    ga2d_real lq = 0;
+    return ga2d_dot(u, d) < 0 && ga2d_wedge(u, d) <= tol * ga2d_vec_length(u);
+}
+
+/* 0: clockwise of ref (its right side), 1: on ref or left of it, 2: opposite */
+static int ga2d__hull_side(ga2d_vec ref, ga2d_vec d)
+{
+    ga2d_real w = ga2d_wedge(ref, d);
+    return w < 0 ? 0 : (w > 0 || ga2d_dot(ref, d) > 0) ? 1 : 2;
+}
+
+static int ga2d__hull_next(const ga2d_vec *pts, int n, ga2d_vec p, ga2d_vec u, ga2d_real tol)
+{
+    int q = -1, best = -1, r, k, sb = 0;
+    /* the start is the lowest of the leftmost points: every other point
+       turns counter-clockwise from straight down by [0, pi] */
+    ga2d_vec ref = (u.x == 0 && u.y == 0) ? ga2d_vec_make(0, -1) : u, db = ga2d_vec_make(0, 0), dq;
+    ga2d_real lq;
     for (r = 0; r < n; ++r) {
         ga2d_vec d = ga2d_vec_sub(pts[r], p);
-        ga2d_real lr = ga2d_vec_length(d), w;
-        if (lr <= tol) continue;
-        if (q < 0) { q = r; dq = d; lq = lr; continue; }
-        w = ga2d_wedge(dq, d); /* < 0: r is right of p->q */
-        if (w < -tol * lq || (w <= tol * lq && lr > lq)) { q = r; dq = d; lq = lr; }
+        int sd;
+        if (ga2d_vec_length(d) <= tol || ga2d__hull_behind(u, d, tol)) continue;
+        sd = ga2d__hull_side(ref, d);
+        if (best < 0 || sd < sb || (sd == sb && sd < 2 && ga2d_wedge(db, d) < 0)) { best = r; db = d; sb = sd; }
+    }
+    for (k = 0; best >= 0 && k <= n; ++k) {
+        ga2d_real lb = ga2d_vec_length(db);
+        int right = -1;
+        q = best;
+        dq = db;
+        lq = lb;
+        for (r = 0; r < n; ++r) {
+            ga2d_vec d = ga2d_vec_sub(pts[r], p);
+            ga2d_real lr = ga2d_vec_length(d);
+            if (lr > lq && ga2d_dot(db, d) > 0 && GA2D__FABS(ga2d_wedge(db, d)) <= tol * lb) { q = r; dq = d; lq = lr; }
+        }
+        for (r = 0; r < n && right < 0; ++r) {
+            ga2d_vec d = ga2d_vec_sub(pts[r], p);
+            if (ga2d_wedge(dq, d) < -tol * lq && ga2d_vec_length(d) > tol && !ga2d__hull_behind(u, d, tol)) right = r;
+        }
+        if (right < 0) break;
+        best = right;
+        db = ga2d_vec_sub(pts[right], p);
     }
     return q;
+}
+
+/* Can hull vertex v go, its neighbours a and b then joined by one edge?
+   When v is within tol of the line a->b and no input point would lie more
+   than 2 tol outside (right of) it: dropping vertices one after another
+   would otherwise let the points dropped before drift out by up to tol
+   each time.  Within tol/4 (ga2d_polygon_make's collinearity) it goes. */
+static int ga2d__hull_drop(const ga2d_vec *pts, int n, ga2d_vec a, ga2d_vec v, ga2d_vec b, ga2d_real tol)
+{
+    ga2d_vec e = ga2d_vec_sub(b, a);
+    ga2d_real d = ga2d__line_distance(a, b, v), len = ga2d_vec_length(e);
+    int i;
+    if (d <= tol / 4) return 1;
+    if (d > tol) return 0;
+    for (i = 0; i < n; ++i)
+        if (ga2d_wedge(e, ga2d_vec_sub(pts[i], a)) < -2 * tol * len) return 0;
+    return 1;
 }
 
 GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon *out)
 {
     enum { CAP = GA2D_MAX_POLYGON_VERTICES + 2 };
-    ga2d_vec hull[CAP];
+    ga2d_vec hull[CAP], u;
     ga2d_real L, tol;
     ga2d_result r;
     int i, h = 0, start = 0, p, steps;
@@ -1226,15 +1326,18 @@ GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon 
         if (pts[i].x < pts[start].x || (pts[i].x == pts[start].x && pts[i].y < pts[start].y)) start = i;
     hull[h++] = pts[start];
     p = start;
+    u = ga2d_vec_make(0, 0); /* the start is extreme: nothing lies behind it */
     for (steps = 0;; ++steps) {
-        int q = ga2d__hull_next(pts, n, pts[p], tol);
-        if (q < 0) return GA2D_ERR_TOO_FEW_POINTS; /* all points are one */
+        int q = ga2d__hull_next(pts, n, pts[p], u, tol);
+        if (q < 0 && h == 1) return GA2D_ERR_TOO_FEW_POINTS; /* all points are one */
+        if (q < 0) break; /* everything else lies behind, on one line: a segment */
         if (q == start || ga2d_vec_length(ga2d_vec_sub(pts[q], pts[start])) <= tol) break;
         if (h == CAP) return GA2D_ERR_TOO_MANY_POINTS;
         /* exact arithmetic closes the loop within n steps; rounding that
            does not is a cloud too thin to wrap */
         if (steps > n) return GA2D_ERR_DEGENERATE;
         hull[h++] = pts[q];
+        u = ga2d_vec_sub(pts[q], pts[p]);
         p = q;
     }
     if (h == 2) {
@@ -1247,7 +1350,7 @@ GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon 
     }
     /* drop any vertex the wrap left within tol of its neighbours' line */
     for (i = 0; h > 3 && i < h;) {
-        if (ga2d__line_distance(hull[(i + h - 1) % h], hull[(i + 1) % h], hull[i]) <= tol) {
+        if (ga2d__hull_drop(pts, n, hull[(i + h - 1) % h], hull[i], hull[(i + 1) % h], tol)) {
             memmove(&hull[i], &hull[i + 1], (size_t)(h - i - 1) * sizeof hull[0]);
             --h;
             i = 0;
@@ -1824,7 +1927,10 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
             } else {
                 qa = A.v[cb.vertex]; qb = cb.on_edge; ia = cb.vertex; ib = cb.end;
             }
-            ga2d_vec_normalize(ga2d_vec_sub(qb, qa), &u);
+            /* vertices that coincide (a distance that was all rounding, as
+               when one polygon is 1e8 times the other's size) have no
+               direction: the SAT's axis, from A to B, stands in */
+            if (ga2d_vec_normalize(ga2d_vec_sub(qb, qa), &u) == 0) u = flip ? ga2d_vec_neg(B.n[edge_b]) : A.n[edge_a];
             m->normal = ga2d_rotate(xa.q, u);
             /* no face is the reference: the flip bit is 0 (both searches
                find the same two vertices at one distance, so which of
@@ -1917,7 +2023,9 @@ typedef struct ga2d__contact {
     ga2d_manifold manifold;
     ga2d_real friction, restitution;
     int touching;
+    int wakes;               /* touched a sleeping body in this update */
     int next_free;           /* -2 while in use */
+    uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
 } ga2d__contact;
 
 static uint64_t ga2d__pair_key(int a, int b) { return ((uint64_t)(uint32_t)a << 32) | (uint32_t)b; }
@@ -2021,6 +2129,7 @@ struct ga2d_world {
     /* contacts: a pool, and the set of pairs that have one */
     ga2d__contact *contacts;
     int contact_capacity, contact_used, contact_free, contact_count;
+    uint64_t contact_serial;     /* the next contact's */
     uint64_t *pair_keys;
     int *pair_vals;
     int pair_capacity, pair_count;
@@ -2029,6 +2138,7 @@ struct ga2d_world {
     ga2d_real slop, speculative, aabb_margin; /* scaled by length units */
     ga2d_real step_dt;           /* this step's dt (the last one's between steps) */
     ga2d_result step_error;      /* what the step will report */
+    int error_slot;              /* the first body it contained, or -1 */
     ga2d__constraint *constraints;
     int constraint_count, constraint_capacity;
     int *wake_queue;             /* one entry per body slot */
@@ -2166,6 +2276,7 @@ static int ga2d__create_contact(ga2d_world *w, int a, int b)
     c->a = a;
     c->b = b;
     c->next_free = -2;
+    c->serial = w->contact_serial++;
     c->friction = GA2D__SQRT(w->bodies[a].friction * w->bodies[b].friction);
     c->restitution = w->bodies[a].restitution > w->bodies[b].restitution ? w->bodies[a].restitution : w->bodies[b].restitution;
     ga2d__link_contact(w, ci, 0);
@@ -2358,7 +2469,7 @@ static void ga2d__update_pairs(ga2d_world *w)
    events.  A contact whose boxes parted is destroyed. */
 static void ga2d__update_contacts(ga2d_world *w)
 {
-    int ci;
+    int ci, wakes = 0;
     w->begin_count = w->end_count = 0;
     for (ci = 0; ci < w->contact_used; ++ci) {
         ga2d__contact *c = &w->contacts[ci];
@@ -2395,11 +2506,19 @@ static void ga2d__update_contacts(ga2d_world *w)
         c->manifold = m;
         if (touching && !c->touching) ga2d__push_event(w, 0, c);
         c->touching = touching;
-        /* a touch wakes a sleeping island */
-        if (touching && (!a->awake || !b->awake)) {
-            ga2d__wake(w, c->a);
-            ga2d__wake(w, c->b);
-        }
+        /* a touch wakes a sleeping island, once every contact is updated:
+           waking here would let the pool's order decide which contacts
+           of the woken island are updated in this step */
+        c->wakes = touching && (!a->awake || !b->awake);
+        wakes += c->wakes;
+    }
+    for (ci = 0; ci < w->contact_used && wakes > 0; ++ci) {
+        ga2d__contact *c = &w->contacts[ci];
+        if (c->next_free != -2 || !c->wakes) continue;
+        c->wakes = 0;
+        --wakes;
+        ga2d__wake(w, c->a);
+        ga2d__wake(w, c->b);
     }
 }
 
@@ -2557,6 +2676,7 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     w->trees[0].root = w->trees[0].free_list = -1;
     w->trees[1].root = w->trees[1].free_list = -1;
     w->contact_free = -1;
+    w->error_slot = -1;
     w->slop = GA2D__R(GA2D_LINEAR_SLOP) * d.length_units_per_meter;
     w->speculative = GA2D__R(GA2D_SPECULATIVE_DISTANCE) * d.length_units_per_meter;
     w->aabb_margin = GA2D__R(GA2D_AABB_MARGIN) * d.length_units_per_meter;
@@ -2584,6 +2704,15 @@ GA2D_API void ga2d_world_destroy(ga2d_world *w)
     ga2d__free(&a, w->constraints, (size_t)w->constraint_capacity * sizeof *w->constraints);
     ga2d__free(&a, w->wake_queue, (size_t)w->wake_capacity * sizeof *w->wake_queue);
     ga2d__free(&a, w, sizeof *w);
+}
+
+GA2D_API ga2d_body_id ga2d_world_error_body(const ga2d_world *w)
+{
+    ga2d_body_id id = ga2d_body_id_null();
+    if (!w || w->error_slot < 0 || w->error_slot >= w->body_used || w->bodies[w->error_slot].type < 0) return id;
+    id.index1 = (uint32_t)w->error_slot + 1;
+    id.generation = w->bodies[w->error_slot].generation;
+    return id;
 }
 
 GA2D_API double ga2d_world_time(const ga2d_world *w)
@@ -3278,6 +3407,10 @@ static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update
     if (mode == GA2D_ROTATION_LINEAR) {
         r = ga2d__rotor(q.c - angle * q.s, q.s + angle * q.c);
         k = 1 / GA2D__SQRT(r.c * r.c + r.s * r.s);
+        /* a turn so large that |r|^2 overflows (an NGS fix or RK4 stage on
+           a body of tiny inertia) gave k = 0, the zero rotor: measure it
+           scaled instead (NaN still passes through, for the step to see) */
+        if (k == 0 && ga2d__finite(r.c) && ga2d__finite(r.s)) return ga2d_rotor_normalize(r);
     } else {
         r = ga2d_rotor_mul(q, ga2d__exp_e12(angle));
         k = (3 - (r.c * r.c + r.s * r.s)) / 2;
@@ -3337,14 +3470,44 @@ static void ga2d__drift(ga2d_world *w, ga2d__body *b, ga2d_real h)
    the free motion, and the position phase adds to RK4's displacement what
    the contacts changed in the velocity (h dv). */
 
-/* The velocity cap (400 m/s in metres) and the largest turn per substep
-   (a quarter of pi), as Box2D: beyond them a body is tunnelling anyway. */
-static void ga2d__clamp_velocity(const ga2d_world *w, ga2d__body *b, ga2d_real h)
+/* Containment: a body whose state is no longer finite (an absurd force,
+   impulse or field drove it there) is put back where the step began, at
+   rest and without forces, before anything it touches can see it; the
+   step reports GA2D_ERR_NOT_FINITE and ga2d_world_error_body names the
+   first such body.  Its neighbours stay finite. */
+static void ga2d__contain(ga2d_world *w, int slot)
 {
-    ga2d_real vmax = 400 * w->def.length_units_per_meter, v2 = ga2d_dot(b->v, b->v), wmax = GA2D__R(0.25) * GA2D__PI / h;
-    if (v2 > vmax * vmax) b->v = ga2d_vec_scale(b->v, vmax / GA2D__SQRT(v2));
+    ga2d__body *b = &w->bodies[slot];
+    b->center = b->center0;
+    b->q = b->q0;
+    b->v = ga2d_vec_make(0, 0);
+    b->w = 0;
+    b->force = ga2d_vec_make(0, 0);
+    b->torque = 0;
+    b->field_valid = 0;
+    b->sleep_time = 0;
+    if (w->step_error == GA2D_OK) w->step_error = GA2D_ERR_NOT_FINITE;
+    if (w->error_slot < 0) w->error_slot = slot;
+}
+
+/* The velocity cap (400 m/s in metres) and the largest turn per substep
+   (a quarter of pi), as Box2D: beyond them a body is tunnelling anyway.
+   The length is taken after scaling by the larger component, so a huge
+   but finite velocity is capped, not turned into inf or NaN.  Returns 0
+   for a velocity that is not finite. */
+static int ga2d__clamp_velocity(const ga2d_world *w, ga2d__body *b, ga2d_real h)
+{
+    ga2d_real vmax = 400 * w->def.length_units_per_meter, wmax = GA2D__R(0.25) * GA2D__PI / h;
+    ga2d_real ax = GA2D__FABS(b->v.x), ay = GA2D__FABS(b->v.y), m = ax > ay ? ax : ay;
+    if (!ga2d__finite(m) || !ga2d__finite(b->w)) return 0;
+    if (m > vmax * GA2D__R(0.7)) { /* |v| may exceed vmax: measure it safely */
+        ga2d_vec u = ga2d_vec_scale(b->v, 1 / m);
+        ga2d_real len = m * GA2D__SQRT(ga2d_dot(u, u));
+        if (len > vmax) b->v = ga2d_vec_scale(u, m * (vmax / len));
+    }
     if (b->w > wmax) b->w = wmax;
     if (b->w < -wmax) b->w = -wmax;
+    return 1;
 }
 
 /* Caches the field's acceleration of every moving body (Verlet). */
@@ -3463,7 +3626,7 @@ static void ga2d__integrate_velocities(ga2d_world *w, ga2d_real h, double t)
     }
     for (k = 0; k < w->moving_count; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        if (b->type == GA2D_BODY_DYNAMIC) ga2d__clamp_velocity(w, b, h);
+        if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(w, b, h)) ga2d__contain(w, w->moving[k]);
     }
 }
 
@@ -3483,6 +3646,10 @@ static void ga2d__integrate_positions(ga2d_world *w, ga2d_real h, double t)
                 ++w->counters.rotation_updates;
             }
             ++w->counters.integrated_bodies;
+            /* a body contained in the velocity phase still has its stages'
+               sums here: contain it again before the solver passes that
+               follow can spread its NaN through the contacts */
+            if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) ga2d__contain(w, w->moving[k]);
         }
         return;
     }
@@ -3497,6 +3664,10 @@ static void ga2d__integrate_positions(ga2d_world *w, ga2d_real h, double t)
             if (b->type != GA2D_BODY_DYNAMIC) continue;
             ga2d__verlet_kick(w, b, h / 2);
             ga2d__damp(b, h);
+            /* the closing half kick is capped too: uncapped, a stiff field
+               (a drag of k h / m >> 2) left the step with any speed or
+               turn, and the next step's contacts turned that into NaN */
+            if (!ga2d__clamp_velocity(w, b, h)) ga2d__contain(w, w->moving[k]);
         }
     }
 }
@@ -3523,6 +3694,16 @@ static ga2d__soft ga2d__make_soft(ga2d_real hertz, ga2d_real zeta, ga2d_real h)
     return s;
 }
 
+/* The solver's innermost helpers run hundreds of thousands of times a
+   step; inlined into its passes they cost 10 % less (large_pyramid). */
+#if defined(__GNUC__) || defined(__clang__)
+#define GA2D__HOT inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define GA2D__HOT __forceinline
+#else
+#define GA2D__HOT inline
+#endif
+
 /* The paper's impulse denominator for a direction d at anchors ra, rb:
    1/m_a + 1/m_b - (r_a ^ d)^2 / I_a - (r_b ^ d)^2 / I_b, where the
    bivector squares are negative ((w e12)^2 = -w^2), so with w = wedge:
@@ -3537,7 +3718,7 @@ static ga2d_real ga2d__effective_mass(const ga2d__constraint *c, ga2d_vec ra, ga
 
 /* Relative velocity of B's anchor point against A's: (vB + rB Omega_B) -
    (vA + rA Omega_A), with r Omega = w perp(r). */
-static ga2d_vec ga2d__relative_velocity(const ga2d__body *a, const ga2d__body *b, ga2d_vec ra, ga2d_vec rb)
+static GA2D__HOT ga2d_vec ga2d__relative_velocity(const ga2d__body *a, const ga2d__body *b, ga2d_vec ra, ga2d_vec rb)
 {
     ga2d_vec va = ga2d_vec_add(a->v, ga2d_vec_scale(ga2d_vec_perp(ra), a->w));
     ga2d_vec vb = ga2d_vec_add(b->v, ga2d_vec_scale(ga2d_vec_perp(rb), b->w));
@@ -3546,7 +3727,7 @@ static ga2d_vec ga2d__relative_velocity(const ga2d__body *a, const ga2d__body *b
 
 /* An impulse P at the anchors: B gains it, A loses it (dv = P/m,
    dOmega = I^-1 (r ^ P)). */
-static void ga2d__apply_impulse(const ga2d__constraint *c, ga2d__body *a, ga2d__body *b, ga2d_vec ra, ga2d_vec rb, ga2d_vec P)
+static GA2D__HOT void ga2d__apply_impulse(const ga2d__constraint *c, ga2d__body *a, ga2d__body *b, ga2d_vec ra, ga2d_vec rb, ga2d_vec P)
 {
     a->v = ga2d_vec_sub(a->v, ga2d_vec_scale(P, c->inv_ma));
     a->w -= c->inv_ia * ga2d_wedge(ra, P);
@@ -3565,53 +3746,74 @@ static ga2d_vec ga2d__free_accel(const ga2d_world *w, const ga2d__body *b)
     return ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(b->force, b->inv_mass));
 }
 
+/* The constraint of contact ci, if it has one; 0 when out of memory. */
+static int ga2d__add_constraint(ga2d_world *w, int ci)
+{
+    const ga2d__contact *ct = &w->contacts[ci];
+    const ga2d__body *a, *b;
+    ga2d__constraint *c;
+    int i;
+    if (!ct->touching) return 1;
+    a = &w->bodies[ct->a];
+    b = &w->bodies[ct->b];
+    if (!((a->type == GA2D_BODY_DYNAMIC && a->awake) || (b->type == GA2D_BODY_DYNAMIC && b->awake))) return 1;
+    if (!ga2d__grow(&w->def.allocator, (void **)&w->constraints, &w->constraint_capacity, w->constraint_count + 1,
+                    sizeof *w->constraints)) {
+        w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    c = &w->constraints[w->constraint_count++];
+    c->contact = ci;
+    c->a = ct->a;
+    c->b = ct->b;
+    c->normal = ct->manifold.normal;
+    c->friction = ct->friction;
+    c->restitution = ct->restitution;
+    c->inv_ma = a->awake && a->type == GA2D_BODY_DYNAMIC ? a->inv_mass : 0;
+    c->inv_ia = a->awake && a->type == GA2D_BODY_DYNAMIC ? a->inv_inertia : 0;
+    c->inv_mb = b->awake && b->type == GA2D_BODY_DYNAMIC ? b->inv_mass : 0;
+    c->inv_ib = b->awake && b->type == GA2D_BODY_DYNAMIC ? b->inv_inertia : 0;
+    c->to_static = c->inv_ma == 0 || c->inv_mb == 0;
+    c->count = ct->manifold.count;
+    for (i = 0; i < c->count; ++i) {
+        const ga2d_manifold_point *mp = &ct->manifold.points[i];
+        ga2d__cpoint *p = &c->p[i];
+        /* anchors from the centres, taken from the origin-relative ones
+           so that no large coordinates are subtracted */
+        p->ra = ga2d_vec_sub(mp->anchor_a, ga2d_rotate(a->q, a->local_center));
+        p->rb = ga2d_vec_sub(mp->anchor_b, ga2d_rotate(b->q, b->local_center));
+        p->separation = mp->separation;
+        p->normal_mass = ga2d__effective_mass(c, p->ra, p->rb, c->normal);
+        p->tangent_mass = ga2d__effective_mass(c, p->ra, p->rb, ga2d__tangent(c->normal));
+        p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
+        p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
+        p->restitution_impulse = 0;
+    }
+    return 1;
+}
+
 /* Builds a constraint for every touching contact with an awake dynamic
    body; static, kinematic and sleeping partners keep their velocities
-   (inverse mass and inertia 0 here). */
+   (inverse mass and inertia 0 here).  The order is canonical, not the
+   pool's: body slots ascending, each body's own contacts (those where it
+   is A, the lower slot) oldest first (its list holds them newest first,
+   so its run is reversed).  Contacts elsewhere in the world, made and
+   freed, shuffle the pool but not this order, so a scene's bits do not
+   depend on them (issue 8's determinism).  Oldest first matters: a
+   pyramid's contacts, made in key order, are then solved bottom up. */
 static void ga2d__prepare_contacts(ga2d_world *w)
 {
-    int ci;
+    int slot, link;
     w->constraint_count = 0;
-    for (ci = 0; ci < w->contact_used; ++ci) {
-        const ga2d__contact *ct = &w->contacts[ci];
-        const ga2d__body *a, *b;
-        ga2d__constraint *c;
-        int i;
-        if (ct->next_free != -2 || !ct->touching) continue;
-        a = &w->bodies[ct->a];
-        b = &w->bodies[ct->b];
-        if (!((a->type == GA2D_BODY_DYNAMIC && a->awake) || (b->type == GA2D_BODY_DYNAMIC && b->awake))) continue;
-        if (!ga2d__grow(&w->def.allocator, (void **)&w->constraints, &w->constraint_capacity, w->constraint_count + 1,
-                        sizeof *w->constraints)) {
-            w->step_error = GA2D_ERR_OUT_OF_MEMORY;
-            return;
-        }
-        c = &w->constraints[w->constraint_count++];
-        c->contact = ci;
-        c->a = ct->a;
-        c->b = ct->b;
-        c->normal = ct->manifold.normal;
-        c->friction = ct->friction;
-        c->restitution = ct->restitution;
-        c->inv_ma = a->awake && a->type == GA2D_BODY_DYNAMIC ? a->inv_mass : 0;
-        c->inv_ia = a->awake && a->type == GA2D_BODY_DYNAMIC ? a->inv_inertia : 0;
-        c->inv_mb = b->awake && b->type == GA2D_BODY_DYNAMIC ? b->inv_mass : 0;
-        c->inv_ib = b->awake && b->type == GA2D_BODY_DYNAMIC ? b->inv_inertia : 0;
-        c->to_static = c->inv_ma == 0 || c->inv_mb == 0;
-        c->count = ct->manifold.count;
-        for (i = 0; i < c->count; ++i) {
-            const ga2d_manifold_point *mp = &ct->manifold.points[i];
-            ga2d__cpoint *p = &c->p[i];
-            /* anchors from the centres, taken from the origin-relative ones
-               so that no large coordinates are subtracted */
-            p->ra = ga2d_vec_sub(mp->anchor_a, ga2d_rotate(a->q, a->local_center));
-            p->rb = ga2d_vec_sub(mp->anchor_b, ga2d_rotate(b->q, b->local_center));
-            p->separation = mp->separation;
-            p->normal_mass = ga2d__effective_mass(c, p->ra, p->rb, c->normal);
-            p->tangent_mass = ga2d__effective_mass(c, p->ra, p->rb, ga2d__tangent(c->normal));
-            p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
-            p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
-            p->restitution_impulse = 0;
+    for (slot = 0; slot < w->body_used; ++slot) {
+        int first = w->constraint_count, last;
+        if (w->bodies[slot].type < 0) continue;
+        for (link = w->bodies[slot].contact_head; link >= 0; link = w->contacts[link >> 1].next[link & 1])
+            if ((link & 1) == 0 && !ga2d__add_constraint(w, link >> 1)) return;
+        for (last = w->constraint_count - 1; first < last; ++first, --last) {
+            ga2d__constraint t = w->constraints[first];
+            w->constraints[first] = w->constraints[last];
+            w->constraints[last] = t;
         }
     }
 }
@@ -3648,7 +3850,7 @@ static void ga2d__refresh_turns(ga2d_world *w)
    angular momentum about any point is kept.  Anchors are returned relative
    to each centre, built from the centre-to-centre vector so that nothing
    large is subtracted. */
-static ga2d_real ga2d__point_now(const ga2d__constraint *c, const ga2d__body *a, const ga2d__body *b,
+static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__constraint *c, const ga2d__body *a, const ga2d__body *b,
                                  const ga2d__cpoint *p, ga2d_vec *ra, ga2d_vec *rb)
 {
     ga2d_vec ra1 = ga2d_rotate(a->dq, p->ra);
@@ -3694,6 +3896,11 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
     ga2d__soft soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
     ga2d__soft stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
     int i, k, friction = w->def.enable_friction;
+    /* NGS moves bodies by up to 0.2 m a pass, so a point's anchors can end
+       far from where its masses were computed; the masses must follow, or
+       an impulse several times too large for its lever arm is applied and
+       the passes diverge (deep overlaps of small bodies reached NaN) */
+    int fresh = w->def.solver == GA2D_SOLVER_PGS_NGS;
     ga2d__refresh_turns(w);
     for (i = 0; i < w->constraint_count; ++i) {
         ga2d__constraint *c = &w->constraints[i];
@@ -3717,6 +3924,7 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
                 bias = bias < -push ? -push : bias;
             }
             vn = ga2d_dot(ga2d__relative_velocity(a, b, ra[k], rb[k]), c->normal);
+            if (fresh) p->normal_mass = ga2d__effective_mass(c, ra[k], rb[k], c->normal);
             lambda = -p->normal_mass * mass_scale * (vn + bias) - impulse_scale * p->normal_impulse;
             total = p->normal_impulse + lambda;
             total = total > 0 ? total : 0;
@@ -3727,8 +3935,10 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
         if (!friction) continue;
         for (k = 0; k < c->count; ++k) {
             ga2d__cpoint *p = &c->p[k];
-            ga2d_real vt = ga2d_dot(ga2d__relative_velocity(a, b, ra[k], rb[k]), t);
-            ga2d_real lambda = -p->tangent_mass * vt, cap = c->friction * p->normal_impulse;
+            ga2d_real vt = ga2d_dot(ga2d__relative_velocity(a, b, ra[k], rb[k]), t), lambda, cap;
+            if (fresh) p->tangent_mass = ga2d__effective_mass(c, ra[k], rb[k], t);
+            lambda = -p->tangent_mass * vt;
+            cap = c->friction * p->normal_impulse;
             ga2d_real total = p->tangent_impulse + lambda;
             total = total > cap ? cap : (total < -cap ? -cap : total);
             lambda = total - p->tangent_impulse;
@@ -3753,7 +3963,7 @@ static void ga2d__solve_positions(ga2d_world *w)
             ga2d_vec ra, rb, P;
             ga2d_real s = ga2d__point_now(c, a, b, p, &ra, &rb), fix = GA2D__R(0.2) * (s + w->slop), lambda;
             fix = fix < -max_fix ? -max_fix : (fix > 0 ? 0 : fix);
-            lambda = -p->normal_mass * fix;
+            lambda = -ga2d__effective_mass(c, ra, rb, c->normal) * fix; /* at the anchors as they are now */
             P = ga2d_vec_scale(c->normal, lambda);
             a->center = ga2d_vec_sub(a->center, ga2d_vec_scale(P, c->inv_ma));
             b->center = ga2d_vec_add(b->center, ga2d_vec_scale(P, c->inv_mb));
@@ -3995,6 +4205,7 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     if (!(h > 0)) return GA2D_ERR_INVALID_ARGUMENT; /* dt underflows when split */
     w->locked = 1;
     w->step_error = GA2D_OK;
+    w->error_slot = -1;
     w->step_dt = dt;
     w->counters.integrated_bodies = 0;
     w->counters.force_evaluations = 0;
@@ -4026,6 +4237,10 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
             break;
         }
     }
+    for (k = 0; k < w->moving_count; ++k) { /* positions too (RK4's own stages, huge coordinates) */
+        const ga2d__body *b = &w->bodies[w->moving[k]];
+        if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) ga2d__contain(w, w->moving[k]);
+    }
     ga2d__store_impulses(w);
     w->counters.constraint_count = w->constraint_count;
     w->time = t0 + (double)dt;
@@ -4038,6 +4253,347 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     ++w->counters.step_count;
     w->locked = 0;
     return w->step_error;
+}
+
+/* ============================================================= snapshots */
+/* Layout: a header (magic, version, the build's sizes, payload size, an
+   FNV-1a checksum of the payload), then the payload: the world def (its
+   pointers zeroed), time and counters, every body slot as the library
+   holds it, each live body's fat box, and the live contacts oldest first.
+   Loading validates all of it into a new world and swaps it in only when
+   everything checked out; derived structures (trees, the moving list, the
+   pair set, each body's contact list) are rebuilt, and since the lists are
+   rebuilt in creation order and pairs and the solver follow canonical
+   orders, the loaded world steps bit for bit as the saved one. */
+#define GA2D__SNAP_VERSION 1u
+
+typedef struct ga2d__snap_header {
+    char magic[8];
+    uint32_t version, real_size, max_vertices, body_size, contact_size, reserved;
+    uint64_t payload_size, checksum;
+} ga2d__snap_header;
+
+/* A contact as saved: what its creation cannot recompute. */
+typedef struct ga2d__snap_contact {
+    int a, b, touching, reserved;
+    ga2d_manifold manifold;
+    ga2d_real friction, restitution;
+    uint64_t serial;
+} ga2d__snap_contact;
+
+/* A writer that only counts when p is NULL. */
+typedef struct ga2d__writer { unsigned char *p; size_t n; } ga2d__writer;
+
+static void ga2d__put(ga2d__writer *o, const void *src, size_t n)
+{
+    if (o->p) memcpy(o->p + o->n, src, n);
+    o->n += n;
+}
+
+typedef struct ga2d__reader { const unsigned char *p; size_t n, at; } ga2d__reader;
+
+static int ga2d__get(ga2d__reader *r, void *dst, size_t n)
+{
+    if (r->n - r->at < n) return 0;
+    memcpy(dst, r->p + r->at, n);
+    r->at += n;
+    return 1;
+}
+
+static uint64_t ga2d__fnv1a(const unsigned char *p, size_t n)
+{
+    uint64_t h = 14695981039346656037ull;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        h ^= p[i];
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+static ga2d__snap_header ga2d__snap_header_make(uint64_t payload)
+{
+    ga2d__snap_header h;
+    memset(&h, 0, sizeof h);
+    memcpy(h.magic, "GA2DSNAP", 8);
+    h.version = GA2D__SNAP_VERSION;
+    h.real_size = (uint32_t)sizeof(ga2d_real);
+    h.max_vertices = (uint32_t)GA2D_MAX_POLYGON_VERTICES;
+    h.body_size = (uint32_t)sizeof(ga2d__body);
+    h.contact_size = (uint32_t)sizeof(ga2d__snap_contact);
+    h.payload_size = payload;
+    return h;
+}
+
+static int ga2d__cmp_serial(const void *x, const void *y)
+{
+    uint64_t a = ((const ga2d__snap_contact *)x)->serial, b = ((const ga2d__snap_contact *)y)->serial;
+    return (a > b) - (a < b);
+}
+
+/* Writes (or, with o->p NULL, measures) the payload; the live contacts go
+   through `scratch` (contact_count entries) to be sorted by age. */
+static void ga2d__snap_payload(const ga2d_world *w, ga2d__writer *o, ga2d__snap_contact *scratch)
+{
+    ga2d_world_def d = w->def;
+    int i, n = 0;
+    memset(&d.allocator, 0, sizeof d.allocator);
+    d.force_callback = NULL;
+    d.force_context = NULL;
+    ga2d__put(o, &d, sizeof d);
+    ga2d__put(o, &w->time, sizeof w->time);
+    ga2d__put(o, &w->step_dt, sizeof w->step_dt);
+    ga2d__put(o, &w->counters, sizeof w->counters);
+    ga2d__put(o, &w->body_used, sizeof w->body_used);
+    ga2d__put(o, &w->free_head, sizeof w->free_head);
+    ga2d__put(o, &w->body_count, sizeof w->body_count);
+    if (w->body_used > 0) ga2d__put(o, w->bodies, (size_t)w->body_used * sizeof *w->bodies);
+    for (i = 0; i < w->body_used; ++i) {
+        const ga2d__body *b = &w->bodies[i];
+        if (b->type >= 0) ga2d__put(o, &w->trees[b->type != GA2D_BODY_STATIC].nodes[b->proxy].box, sizeof(ga2d_aabb));
+    }
+    ga2d__put(o, &w->contact_serial, sizeof w->contact_serial);
+    ga2d__put(o, &w->contact_count, sizeof w->contact_count);
+    if (!o->p) {
+        o->n += (size_t)w->contact_count * sizeof *scratch;
+        return;
+    }
+    for (i = 0; i < w->contact_used; ++i) {
+        const ga2d__contact *c = &w->contacts[i];
+        ga2d__snap_contact *r;
+        if (c->next_free != -2) continue;
+        r = &scratch[n++];
+        memset(r, 0, sizeof *r);
+        r->a = c->a;
+        r->b = c->b;
+        r->touching = c->touching;
+        r->manifold = c->manifold;
+        r->friction = c->friction;
+        r->restitution = c->restitution;
+        r->serial = c->serial;
+    }
+    if (n > 1) qsort(scratch, (size_t)n, sizeof *scratch, ga2d__cmp_serial);
+    if (n > 0) ga2d__put(o, scratch, (size_t)n * sizeof *scratch);
+}
+
+GA2D_API size_t ga2d_world_snapshot_size(const ga2d_world *w)
+{
+    ga2d__writer o;
+    if (!w) return 0;
+    o.p = NULL;
+    o.n = 0;
+    ga2d__snap_payload(w, &o, NULL);
+    return sizeof(ga2d__snap_header) + o.n;
+}
+
+GA2D_API ga2d_result ga2d_world_snapshot_save(const ga2d_world *w, void *buf, size_t cap)
+{
+    ga2d__snap_contact *scratch = NULL;
+    ga2d__snap_header h;
+    ga2d__writer o;
+    size_t size, scratch_bytes;
+    if (!w || !buf) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    size = ga2d_world_snapshot_size(w);
+    if (cap < size) return GA2D_ERR_BUFFER_TOO_SMALL;
+    scratch_bytes = (size_t)w->contact_count * sizeof *scratch;
+    if (scratch_bytes > 0) {
+        scratch = (ga2d__snap_contact *)ga2d__alloc(&w->def.allocator, scratch_bytes);
+        if (!scratch) return GA2D_ERR_OUT_OF_MEMORY;
+    }
+    o.p = (unsigned char *)buf + sizeof h;
+    o.n = 0;
+    ga2d__snap_payload(w, &o, scratch);
+    ga2d__free(&w->def.allocator, scratch, scratch_bytes);
+    h = ga2d__snap_header_make((uint64_t)o.n);
+    h.checksum = ga2d__fnv1a(o.p, o.n);
+    memcpy(buf, &h, sizeof h);
+    return GA2D_OK;
+}
+
+/* A saved body is one the library could have made: a valid polygon as
+   ga2d_polygon_make would give it, finite state, a unit rotor, flags that
+   are flags.  (Free slots: only their link is used.) */
+static int ga2d__snap_body_ok(const ga2d__body *b, int body_used)
+{
+    const ga2d_real *r[] = {&b->center.x, &b->center.y, &b->q.c, &b->q.s, &b->v.x, &b->v.y, &b->w, &b->force.x,
+                            &b->force.y, &b->torque, &b->field_force.x, &b->field_force.y, &b->field_torque,
+                            &b->field_accel.x, &b->field_accel.y, &b->field_alpha, &b->mass, &b->inv_mass, &b->inertia,
+                            &b->inv_inertia, &b->local_center.x, &b->local_center.y, &b->friction, &b->restitution,
+                            &b->linear_damping, &b->angular_damping, &b->gravity_scale, &b->center0.x, &b->center0.y,
+                            &b->q0.c, &b->q0.s, &b->dq.c, &b->dq.s, &b->extent, &b->sleep_time, &b->island_rest};
+    ga2d_polygon p;
+    ga2d_real q2;
+    size_t i;
+    int k;
+    if (b->type < 0) return b->type == -1 && b->next_free >= -1 && b->next_free < body_used;
+    if (b->type > GA2D_BODY_DYNAMIC || b->generation == 0) return 0;
+    for (i = 0; i < sizeof r / sizeof r[0]; ++i)
+        if (!ga2d__finite(*r[i])) return 0;
+    if (b->mass < 0 || b->inv_mass < 0 || b->inertia < 0 || b->inv_inertia < 0 || b->friction < 0 ||
+        b->restitution < 0 || b->linear_damping < 0 || b->angular_damping < 0 || b->extent < 0)
+        return 0;
+    q2 = b->q.c * b->q.c + b->q.s * b->q.s;
+    if (!(q2 > GA2D__R(0.99) && q2 < GA2D__R(1.01))) return 0;
+    if ((b->awake | b->fixed_rotation | b->in_move | b->field_valid) & ~1) return 0;
+    if (b->polygon.count < 3 || b->polygon.count > GA2D_MAX_POLYGON_VERTICES) return 0;
+    if (ga2d_polygon_make(b->polygon.vertices, b->polygon.count, &p) != GA2D_OK || p.count != b->polygon.count) return 0;
+    for (k = 0; k < p.count; ++k)
+        if (memcmp(&p.vertices[k], &b->polygon.vertices[k], sizeof p.vertices[k]) != 0 ||
+            memcmp(&p.normals[k], &b->polygon.normals[k], sizeof p.normals[k]) != 0)
+            return 0;
+    return 1;
+}
+
+static int ga2d__snap_box_ok(ga2d_aabb box)
+{
+    return ga2d__finite(box.lower.x) && ga2d__finite(box.lower.y) && ga2d__finite(box.upper.x) &&
+           ga2d__finite(box.upper.y) && box.lower.x <= box.upper.x && box.lower.y <= box.upper.y;
+}
+
+/* Reads the bodies into t (a new world): slots, the free list, the trees,
+   the moving list and the pair-finding queue.  0: bad snapshot, -1: out
+   of memory. */
+static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
+{
+    int used, free_head, count, i, live = 0, frees = 0, moves = 0;
+    if (!ga2d__get(r, &used, sizeof used) || !ga2d__get(r, &free_head, sizeof free_head) ||
+        !ga2d__get(r, &count, sizeof count))
+        return 0;
+    if (used < 0 || used > GA2D__MAX_BODIES || count < 0 || count > used || free_head < -1 || free_head >= used ||
+        (size_t)used > (r->n - r->at) / sizeof *t->bodies)
+        return 0;
+    if (used == 0) return free_head == -1 && count == 0;
+    if (!ga2d__grow(&t->def.allocator, (void **)&t->bodies, &t->body_capacity, used, sizeof *t->bodies) ||
+        !ga2d__grow(&t->def.allocator, (void **)&t->move_buf, &t->move_capacity, used, sizeof *t->move_buf) ||
+        !ga2d__grow(&t->def.allocator, (void **)&t->wake_queue, &t->wake_capacity, used, sizeof *t->wake_queue) ||
+        !ga2d__grow(&t->def.allocator, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving))
+        return -1;
+    if (t->def.integrator == GA2D_INTEGRATOR_RK4 &&
+        !ga2d__grow(&t->def.allocator, (void **)&t->rk4, &t->rk4_capacity, t->moving_capacity, sizeof *t->rk4))
+        return -1;
+    ga2d__get(r, t->bodies, (size_t)used * sizeof *t->bodies);
+    t->body_used = used;
+    t->body_count = count;
+    t->free_head = free_head;
+    for (i = 0; i < used; ++i) {
+        ga2d__body *b = &t->bodies[i];
+        if (!ga2d__snap_body_ok(b, used)) return 0;
+        if (b->type >= 0) {
+            ++live;
+            moves += b->type != GA2D_BODY_STATIC;
+        }
+        b->island = 0; /* marks free slots met on the free list below */
+    }
+    if (live != count) return 0;
+    for (i = free_head; i >= 0; i = t->bodies[i].next_free) {
+        if (t->bodies[i].type != -1 || t->bodies[i].island || ++frees > used - count) return 0;
+        t->bodies[i].island = 1;
+    }
+    if (frees != used - count) return 0;
+    if (!ga2d__tree_reserve(&t->def.allocator, &t->trees[0], count - moves) ||
+        !ga2d__tree_reserve(&t->def.allocator, &t->trees[1], moves))
+        return -1;
+    for (i = 0; i < used; ++i) {
+        ga2d__body *b = &t->bodies[i];
+        ga2d_aabb box;
+        int queued = b->in_move;
+        b->island = i;
+        b->move_index = -1;
+        b->contact_head = -1;
+        b->in_move = 0;
+        if (b->type < 0) continue;
+        if (!ga2d__get(r, &box, sizeof box) || !ga2d__snap_box_ok(box)) return 0;
+        b->proxy = ga2d__tree_create(&t->trees[b->type != GA2D_BODY_STATIC], box, i);
+        if (b->type != GA2D_BODY_STATIC && b->awake) ga2d__moving_add(t, i);
+        if (queued) ga2d__buffer_move(t, i);
+    }
+    return 1;
+}
+
+/* Reads the contacts into t, oldest first, so that every body's list comes
+   out as it was.  0: bad snapshot, -1: out of memory. */
+static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__reader *r)
+{
+    uint64_t serial, last = 0;
+    int count, i, k;
+    if (!ga2d__get(r, &serial, sizeof serial) || !ga2d__get(r, &count, sizeof count)) return 0;
+    if (count < 0 || (size_t)count > (r->n - r->at) / sizeof(ga2d__snap_contact)) return 0;
+    for (i = 0; i < count; ++i) {
+        ga2d__snap_contact c;
+        ga2d__contact *ct;
+        ga2d_manifold *m = &c.manifold;
+        ga2d__get(r, &c, sizeof c);
+        if (c.a < 0 || c.b >= t->body_used || c.a >= c.b || t->bodies[c.a].type < 0 || t->bodies[c.b].type < 0) return 0;
+        if ((i > 0 && c.serial <= last) || c.serial >= serial) return 0;
+        if (m->count < 0 || m->count > 2 || c.touching != (m->count > 0)) return 0;
+        if (!ga2d__finite(m->normal.x) || !ga2d__finite(m->normal.y) || !ga2d__finite(c.friction) ||
+            !ga2d__finite(c.restitution) || c.friction < 0 || c.restitution < 0)
+            return 0;
+        for (k = 0; k < m->count; ++k) {
+            const ga2d_manifold_point *p = &m->points[k];
+            if (!ga2d__finite(p->point.x) || !ga2d__finite(p->point.y) || !ga2d__finite(p->anchor_a.x) ||
+                !ga2d__finite(p->anchor_a.y) || !ga2d__finite(p->anchor_b.x) || !ga2d__finite(p->anchor_b.y) ||
+                !ga2d__finite(p->separation) || !ga2d__finite(p->normal_impulse) || !ga2d__finite(p->tangent_impulse))
+                return 0;
+        }
+        if (!ga2d__pairs_reserve(t)) return -1;
+        if (ga2d__pairs_find(t, ga2d__pair_key(c.a, c.b)) >= 0) return 0; /* a pair twice */
+        if (!ga2d__create_contact(t, c.a, c.b)) return -1;
+        ct = &t->contacts[t->contact_used - 1];
+        ct->manifold = c.manifold;
+        ct->touching = c.touching;
+        ct->friction = c.friction;
+        ct->restitution = c.restitution;
+        ct->serial = c.serial;
+        last = c.serial;
+    }
+    t->contact_serial = serial;
+    return 1;
+}
+
+GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, size_t size)
+{
+    ga2d__snap_header h, want;
+    ga2d__reader r;
+    ga2d_world_def d;
+    ga2d_world *t, swap;
+    int ok;
+    if (!w || !buf) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->locked) return GA2D_ERR_LOCKED;
+    if (size < sizeof h) return GA2D_ERR_BAD_SNAPSHOT;
+    memcpy(&h, buf, sizeof h);
+    want = ga2d__snap_header_make(h.payload_size);
+    want.checksum = h.checksum;
+    if (memcmp(&h, &want, sizeof h) != 0 || h.payload_size != (uint64_t)(size - sizeof h)) return GA2D_ERR_BAD_SNAPSHOT;
+    r.p = (const unsigned char *)buf + sizeof h;
+    r.n = size - sizeof h;
+    r.at = 0;
+    if (ga2d__fnv1a(r.p, r.n) != h.checksum) return GA2D_ERR_BAD_SNAPSHOT;
+    /* the def, with this world's allocator and callback */
+    if (!ga2d__get(&r, &d, sizeof d)) return GA2D_ERR_BAD_SNAPSHOT;
+    d.allocator = w->def.allocator;
+    d.force_callback = w->def.force_callback;
+    d.force_context = w->def.force_context;
+    if (ga2d_world_def_validate(&d) != GA2D_OK || d.substeps == 0 || d.length_units_per_meter == 0) return GA2D_ERR_BAD_SNAPSHOT;
+    t = ga2d_world_create(&d);
+    if (!t) return GA2D_ERR_OUT_OF_MEMORY;
+    ok = ga2d__get(&r, &t->time, sizeof t->time) && ga2d__get(&r, &t->step_dt, sizeof t->step_dt) &&
+         ga2d__get(&r, &t->counters, sizeof t->counters) && t->time == t->time && ga2d__finite(t->step_dt) &&
+         t->step_dt > 0;
+    if (ok) ok = ga2d__snap_read_bodies(t, &r);
+    if (ok == 1) ok = ga2d__snap_read_contacts(t, &r);
+    if (ok == 1 && r.at != r.n) ok = 0;
+    if (ok != 1) {
+        ga2d_world_destroy(t);
+        return ok < 0 ? GA2D_ERR_OUT_OF_MEMORY : GA2D_ERR_BAD_SNAPSHOT;
+    }
+    /* all checked: the new state goes into w, the old one is freed with t */
+    swap = *w;
+    *w = *t;
+    *t = swap;
+    ga2d_world_destroy(t);
+    return GA2D_OK;
 }
 
 /* ============================================================= debug draw */

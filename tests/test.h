@@ -52,6 +52,9 @@ void suite_motion(void);
 void suite_collide(void);
 void suite_contacts(void);
 void suite_solver(void);
+void suite_determinism(void);
+void suite_snapshot(void);
+void suite_containment(void);
 
 #ifdef __cplusplus
 }

@@ -71,6 +71,9 @@ int main(void)
     suite_collide();
     suite_contacts();
     suite_solver();
+    suite_determinism();
+    suite_snapshot();
+    suite_containment();
     printf("%d passed, %d failed\n", g_passed, g_failed);
     return g_failed ? 1 : 0;
 }

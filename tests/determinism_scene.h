@@ -1,0 +1,181 @@
+/* determinism_scene.h - the mixed scene whose bits must not depend on the
+   build (issue 8): a pyramid of base 8, 24 convex polygons of 3 to 6 sides
+   falling onto it with spin and restitution, sleep on; 600 steps at 1/60.
+   Its hash covers every scene body's position, rotor, velocity, angular
+   velocity and awake flag, bit for bit (FNV-1a over the bytes).
+
+   No libm in the scene either: the polygons are hulls of points from an
+   integer generator, so nothing here can differ between platforms' sin and
+   cos.  Optional churn: unrelated bodies made and destroyed on their own
+   ground 1 km away while the scene runs, which must not change its hash.
+
+   Used by tests/test_determinism.c (inside each test build) and by
+   tests/determinism.c (one small program built with many compilers and
+   flags, whose hashes `make test` compares). */
+#ifndef GA2D_DETERMINISM_SCENE_H
+#define GA2D_DETERMINISM_SCENE_H
+
+#include "ga2d_physics.h"
+#include <string.h>
+
+#define DSCENE_STEPS 600
+#define DSCENE_MAX 64
+
+typedef struct dscene {
+    ga2d_world *w;
+    ga2d_body_id ids[DSCENE_MAX];
+    int count;
+    ga2d_body_id churn[32];
+    int churn_count;
+    ga2d_body_id far_ground;
+    unsigned lcg;
+} dscene;
+
+static inline unsigned dscene_next(dscene *s)
+{
+    s->lcg = s->lcg * 1664525u + 1013904223u;
+    return s->lcg >> 8;
+}
+
+/* A number in [lo, hi] on a grid of 1/1024 of the range: exact in float. */
+static inline ga2d_real dscene_pick(dscene *s, double lo, double hi)
+{
+    return (ga2d_real)(lo + (hi - lo) * (double)(dscene_next(s) % 1025u) / 1024.0);
+}
+
+/* A convex polygon of 3 to 6 sides: the hull of points on the integer
+   grid around the origin (regenerated until the hull has `sides`). */
+static inline ga2d_polygon dscene_polygon(dscene *s, int sides)
+{
+    ga2d_polygon p;
+    for (;;) {
+        ga2d_vec pts[6];
+        int k;
+        for (k = 0; k < sides; ++k) {
+            /* points near a circle of radius 0.4, on a 1/64 grid: angles
+               from a table of integer directions */
+            static const int dir[12][2] = {{8, 0}, {7, 4}, {4, 7}, {0, 8}, {-4, 7}, {-7, 4},
+                                           {-8, 0}, {-7, -4}, {-4, -7}, {0, -8}, {4, -7}, {7, -4}};
+            int d = (int)((unsigned)(k * 12 / sides) + dscene_next(s) % 2u) % 12;
+            pts[k] = ga2d_vec_make((ga2d_real)(dir[d][0] * 0.05), (ga2d_real)(dir[d][1] * 0.05));
+        }
+        if (ga2d_polygon_hull(pts, sides, &p) == GA2D_OK && p.count >= 3) return p;
+    }
+}
+
+static inline int dscene_build(dscene *s)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_body_def d = ga2d_default_body_def();
+    int i, j;
+    memset(s, 0, sizeof *s);
+    s->lcg = 12345u;
+    s->w = ga2d_world_create(&wd);
+    if (!s->w) return 0;
+    d.polygon = ga2d_polygon_box(20, (ga2d_real)0.5);
+    d.position = ga2d_vec_make(0, (ga2d_real)-0.5);
+    s->ids[s->count++] = ga2d_body_create(s->w, &d);
+    d.type = GA2D_BODY_DYNAMIC;
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+    for (i = 0; i < 8; ++i)
+        for (j = i; j < 8; ++j) {
+            d.position = ga2d_vec_make((ga2d_real)((i + 1) * 0.5 + (j - i) * 1.0 - 4.5), (ga2d_real)((2 * i + 1) * 0.5));
+            s->ids[s->count++] = ga2d_body_create(s->w, &d);
+        }
+    for (i = 0; i < 24; ++i) {
+        /* one pick per statement: the order in which a call's arguments
+           are evaluated is unspecified (gcc and clang differ) */
+        ga2d_real x, y, vx, vy;
+        d.polygon = dscene_polygon(s, 3 + i % 4);
+        x = dscene_pick(s, -6, 6);
+        y = dscene_pick(s, 10, 22);
+        vx = dscene_pick(s, -2, 2);
+        vy = dscene_pick(s, -3, 0);
+        d.position = ga2d_vec_make(x, y);
+        d.velocity = ga2d_vec_make(vx, vy);
+        d.angular_velocity = dscene_pick(s, -6, 6);
+        d.restitution = dscene_pick(s, 0, 0.7);
+        d.friction = dscene_pick(s, 0.2, 0.8);
+        s->ids[s->count++] = ga2d_body_create(s->w, &d);
+    }
+    for (i = 0; i < s->count; ++i)
+        if (ga2d_body_id_is_null(s->ids[i])) return 0;
+    return 1;
+}
+
+/* Step `step` of the churn: from step 40 to 400, every 20 steps three
+   boxes drop onto their own ground at x = 1000 and the oldest three go. */
+static inline void dscene_churn(dscene *s, int step)
+{
+    ga2d_body_def d = ga2d_default_body_def();
+    int k;
+    if (step == 30) {
+        d.polygon = ga2d_polygon_box(10, (ga2d_real)0.5);
+        d.position = ga2d_vec_make(1000, (ga2d_real)-0.5);
+        s->far_ground = ga2d_body_create(s->w, &d);
+    }
+    if (step < 40 || step > 400 || step % 20 != 0) return;
+    if (s->churn_count >= 9) {
+        for (k = 0; k < 3; ++k) ga2d_body_destroy(s->w, s->churn[k]);
+        memmove(s->churn, s->churn + 3, (size_t)(s->churn_count - 3) * sizeof s->churn[0]);
+        s->churn_count -= 3;
+    }
+    d.type = GA2D_BODY_DYNAMIC;
+    for (k = 0; k < 3; ++k) {
+        d.polygon = ga2d_polygon_box((ga2d_real)0.4, (ga2d_real)0.3);
+        d.position = ga2d_vec_make((ga2d_real)(998 + 2 * k), (ga2d_real)(1 + step % 3));
+        d.angular_velocity = (ga2d_real)(k - 1);
+        s->churn[s->churn_count++] = ga2d_body_create(s->w, &d);
+    }
+}
+
+static inline uint64_t dscene_fnv(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *c = (const unsigned char *)p;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        h ^= c[i];
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+static inline uint64_t dscene_hash(const dscene *s)
+{
+    uint64_t h = 14695981039346656037ull;
+    int i;
+    for (i = 0; i < s->count; ++i) {
+        ga2d_vec x = ga2d_body_position(s->w, s->ids[i]), v = ga2d_body_velocity(s->w, s->ids[i]);
+        ga2d_rotor q = ga2d_body_rotor(s->w, s->ids[i]);
+        ga2d_real om = ga2d_body_angular_velocity(s->w, s->ids[i]);
+        int awake = ga2d_body_is_awake(s->w, s->ids[i]);
+        h = dscene_fnv(h, &x, sizeof x);
+        h = dscene_fnv(h, &q, sizeof q);
+        h = dscene_fnv(h, &v, sizeof v);
+        h = dscene_fnv(h, &om, sizeof om);
+        h = dscene_fnv(h, &awake, sizeof awake);
+    }
+    return h;
+}
+
+/* Runs the scene (with churn or not) and returns its hash, 0 if the world
+   could not be built; *asleep counts scene bodies asleep at the end. */
+static inline uint64_t dscene_run(int churn, int *asleep)
+{
+    dscene s;
+    uint64_t h = 0;
+    int step, i;
+    if (dscene_build(&s)) {
+        for (step = 0; step < DSCENE_STEPS; ++step) {
+            if (churn) dscene_churn(&s, step);
+            ga2d_world_step(s.w, (ga2d_real)1 / 60);
+        }
+        h = dscene_hash(&s);
+        *asleep = 0;
+        for (i = 0; i < s.count; ++i) *asleep += !ga2d_body_is_awake(s.w, s.ids[i]) && i > 0;
+    }
+    ga2d_world_destroy(s.w);
+    return h;
+}
+
+#endif
