@@ -92,6 +92,17 @@ static void bench_scene_free(bench_scene *s)
     s->count = 0;
 }
 
+/* The velocity a kinematic wall at centre (x, y) needs to be where the
+   rigid turn puts it one step later: the chord (R(w dt)(p - c) + c - p)/dt,
+   not the tangent w (-dy, dx), which would let the walls spiral outwards
+   (by 0.2 m over 750 steps).  Its angular velocity is pivot_w. */
+static void bench_scene_kinematic_velocity(const bench_scene *s, double x, double y, double *vx, double *vy)
+{
+    double a = s->pivot_w * s->dt, c = cos(a), sn = sin(a), dx = x - s->pivot_x, dy = y - s->pivot_y;
+    *vx = (c * dx - sn * dy - dx) / s->dt;
+    *vy = (sn * dx + c * dy - dy) / s->dt;
+}
+
 /* Fills *s with the named scene; returns 0, or -1 for an unknown name or
    no memory.  Names: large_pyramid, many_pyramids, smash, tumbler,
    pyramid20, stack10. */
@@ -158,8 +169,7 @@ static int bench_scene_make(const char *name, bench_scene *s)
         bench__push(s, cap, BENCH_KINEMATIC, 0, 0, 10, 0.5);
         for (i = 0; i < 4; ++i) {
             s->bodies[i].w = s->pivot_w;
-            s->bodies[i].vx = -s->pivot_w * (s->bodies[i].y - s->pivot_y);
-            s->bodies[i].vy = s->pivot_w * (s->bodies[i].x - s->pivot_x);
+            bench_scene_kinematic_velocity(s, s->bodies[i].x, s->bodies[i].y, &s->bodies[i].vx, &s->bodies[i].vy);
         }
         for (i = 0; i < 45; ++i)
             for (j = 0; j < 45; ++j) bench__push(s, cap, BENCH_DYNAMIC, -0.2 * 45 + 0.4 * j, -0.2 * 45 + 10 + 0.4 * i, 0.125, 0.125);
@@ -174,14 +184,6 @@ static int bench_scene_make(const char *name, bench_scene *s)
         return -1;
     }
     return 0;
-}
-
-/* The velocity a kinematic wall needs at centre (x, y) to turn rigidly
-   with the tumbler: v = w e12 applied to (p - pivot), i.e. w (-dy, dx). */
-static void bench_scene_kinematic_velocity(const bench_scene *s, double x, double y, double *vx, double *vy)
-{
-    *vx = -s->pivot_w * (y - s->pivot_y);
-    *vy = s->pivot_w * (x - s->pivot_x);
 }
 
 /* The accuracy figure's name, for tables. */

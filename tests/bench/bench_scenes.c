@@ -1,0 +1,116 @@
+/* bench_scenes.c - the scenes of scenes.h in ga2d at its defaults, with
+   each scene's accuracy figure, and the closed-form scenes of the solver
+   and integrator issues (bounce, oscillator, spin, projectile).
+
+   Every scene runs in a world from ga2d_default_world_def() (4 substeps,
+   soft step, symplectic Euler, exact rotor update) with the scene's own
+   gravity and sleep switch; bodies marked asleep are created asleep, and
+   the tumbler's kinematic walls are given before every step the velocity
+   that turns them about the pivot from where they are (scene_run.h).
+
+   Per scene: ms per step, the median and the minimum over the runs
+   (BENCH_RUNS, default 3; the first 10 steps of a run excluded; only
+   ga2d_world_step timed), and the figure.  ga2d is deterministic, so every
+   run must give the same figure bit for bit: a run that does not is
+   reported, as is a run that fails.  Single-machine times: compare rows
+   with each other.
+
+     bench_scenes [out.csv [scene ...]]
+
+   writes the CSV when given a path, and runs only the named scenes (of
+   the table's names) when given any.  Exit status 0 when every scene ran
+   and every run agreed. */
+#define _POSIX_C_SOURCE 199309L
+#define GA2D_IMPLEMENTATION
+#include "ga2d_physics.h"
+#include "scenes.h"
+#include "scene_run.h"
+
+#define DEFAULT_RUNS 3
+#define MAX_RUNS 64
+
+static const char *const SCENES[] = {"large_pyramid", "many_pyramids", "smash", "tumbler", "pyramid20", "stack10"};
+#define SCENE_COUNT ((int)(sizeof SCENES / sizeof SCENES[0]))
+
+/* Whether the command line asks for scene `name` (no names: every one). */
+static int selected(int argc, char **argv, const char *name)
+{
+    int i;
+    for (i = 2; i < argc; ++i)
+        if (strcmp(argv[i], name) == 0) return 1;
+    return argc <= 2;
+}
+
+/* One table row and CSV line; returns 0 when every run went well. */
+static int report(FILE *csv, const char *name, int bodies, double *ms, int runs, const char *figure_name, double figure,
+                  int failed, int differ, double seconds)
+{
+    double lo = sr_min(ms, runs), med = sr_median(ms, runs);
+    printf("%-14s %7d %12.4g %10.4g  %-26s %.3e%s%s\n", name, bodies, med, lo, figure_name, figure,
+           differ ? "  (runs differ!)" : "", failed ? "  (FAILED)" : "");
+    if (csv)
+        fprintf(csv, "%s,%d,%.6g,%.6g,\"%s\",%.9g,%d,%d,%.2f\n", name, bodies, med, lo, figure_name, figure, failed,
+                differ, seconds);
+    return failed || differ;
+}
+
+int main(int argc, char **argv)
+{
+    const int asked = sr_runs_from_env("BENCH_RUNS", DEFAULT_RUNS), runs = asked < MAX_RUNS ? asked : MAX_RUNS;
+    FILE *csv = argc > 1 ? fopen(argv[1], "w") : NULL;
+    double ms[MAX_RUNS], start = sr_now_ms();
+    int i, r, bad = 0;
+    if (argc > 1 && !csv) {
+        fprintf(stderr, "bench_scenes: cannot write %s\n", argv[1]);
+        return 1;
+    }
+    printf("bench_scenes (ga2d_real %s): defaults, dt = 1/60; ms per ga2d_world_step over %d runs\n",
+           sizeof(ga2d_real) == sizeof(double) ? "double" : "float", runs);
+    printf("%-14s %7s %12s %10s  %-26s %s\n", "scene", "bodies", "ms/step med", "min", "figure", "value");
+    if (csv) fprintf(csv, "scene,bodies,ms_per_step_median,ms_per_step_min,figure,value,failed,runs_differ,seconds\n");
+
+    for (i = 0; i < SCENE_COUNT; ++i) {
+        bench_scene s;
+        ga2d_world_def wd;
+        double figure = 0, t0 = sr_now_ms();
+        int failed = 0, differ = 0;
+        if (!selected(argc, argv, SCENES[i])) continue;
+        if (bench_scene_make(SCENES[i], &s) != 0) {
+            fprintf(stderr, "bench_scenes: cannot make %s\n", SCENES[i]);
+            return 1;
+        }
+        wd = sr_scene_def(&s, ga2d_default_world_def());
+        for (r = 0; r < runs; ++r) {
+            sr_result res;
+            failed |= !sr_run_scene(&s, wd, 0, &res);
+            ms[r] = res.ms;
+            if (r == 0)
+                figure = res.figure;
+            else
+                differ |= memcmp(&figure, &res.figure, sizeof figure) != 0;
+        }
+        bad |= report(csv, s.name, s.count, ms, runs, bench_scene_figure_name(&s), figure, failed, differ,
+                      (sr_now_ms() - t0) / 1e3);
+        bench_scene_free(&s);
+    }
+
+    for (i = 0; i < SR_CLOSED_FORM_COUNT; ++i) {
+        double figure = 0, t0 = sr_now_ms();
+        int failed = 0, differ = 0;
+        if (!selected(argc, argv, sr_closed_form_name[i])) continue;
+        for (r = 0; r < runs; ++r) {
+            sr_result res;
+            failed |= !sr_run_closed_form(i, ga2d_default_world_def(), &res);
+            ms[r] = res.ms;
+            if (r == 0)
+                figure = res.figure;
+            else
+                differ |= memcmp(&figure, &res.figure, sizeof figure) != 0;
+        }
+        bad |= report(csv, sr_closed_form_name[i], sr_closed_form_bodies[i], ms, runs, sr_closed_form_figure[i], figure,
+                      failed, differ, (sr_now_ms() - t0) / 1e3);
+    }
+    printf("bench_scenes: %.1f s in all\n", (sr_now_ms() - start) / 1e3);
+    if (csv) fclose(csv);
+    return bad;
+}

@@ -1,0 +1,121 @@
+/* ga2d_peer.c - the ga2d side of `make bench-peers` (see ga2d_peer.h).
+   Built as C99 with the library's implementation in this unit only. */
+#define GA2D_IMPLEMENTATION
+#include "ga2d_physics.h"
+#include "ga2d_peer.h"
+#include <stdio.h>
+#include <stdlib.h>
+
+struct ga2d_peer {
+    ga2d_world *world;
+    ga2d_body_id *ids;
+    int count, capacity;
+};
+
+ga2d_peer *ga2d_peer_create(double gx, double gy, int sleep, int capacity)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_peer *p = (ga2d_peer *)calloc(1, sizeof *p);
+    if (!p) return NULL;
+    wd.gravity = ga2d_vec_make((ga2d_real)gx, (ga2d_real)gy);
+    wd.enable_sleep = sleep != 0;
+    p->world = ga2d_world_create(&wd);
+    p->ids = (ga2d_body_id *)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof *p->ids);
+    p->capacity = capacity;
+    if (!p->world || !p->ids) {
+        ga2d_peer_destroy(p);
+        return NULL;
+    }
+    return p;
+}
+
+int ga2d_peer_add_box(ga2d_peer *p, int type, double x, double y, double hx, double hy, double vx, double vy,
+                      double w, double density, double friction, int asleep)
+{
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_body_id id;
+    if (p->count >= p->capacity) return -1;
+    /* scenes.h numbers the types static 0, kinematic 1, dynamic 2 */
+    d.type = type == 2 ? GA2D_BODY_DYNAMIC : type == 1 ? GA2D_BODY_KINEMATIC : GA2D_BODY_STATIC;
+    d.position = ga2d_vec_make((ga2d_real)x, (ga2d_real)y);
+    d.polygon = ga2d_polygon_box((ga2d_real)hx, (ga2d_real)hy);
+    d.density = (ga2d_real)density;
+    d.friction = (ga2d_real)friction;
+    d.restitution = 0;
+    if (type != 0) {
+        d.velocity = ga2d_vec_make((ga2d_real)vx, (ga2d_real)vy);
+        d.angular_velocity = (ga2d_real)w;
+    }
+    d.is_awake = !asleep;
+    id = ga2d_body_create(p->world, &d);
+    if (ga2d_body_id_is_null(id)) return -1;
+    p->ids[p->count] = id;
+    return p->count++;
+}
+
+int ga2d_peer_step(ga2d_peer *p, double dt)
+{
+    return (int)ga2d_world_step(p->world, (ga2d_real)dt);
+}
+
+void ga2d_peer_pose(const ga2d_peer *p, int i, double *x, double *y, double *angle)
+{
+    /* boxes are centred on their origin, so origin = centre */
+    ga2d_vec c = ga2d_body_position(p->world, p->ids[i]);
+    *x = (double)c.x;
+    *y = (double)c.y;
+    *angle = (double)ga2d_body_angle(p->world, p->ids[i]);
+}
+
+void ga2d_peer_velocity(const ga2d_peer *p, int i, double *vx, double *vy)
+{
+    ga2d_vec v = ga2d_body_velocity(p->world, p->ids[i]);
+    *vx = (double)v.x;
+    *vy = (double)v.y;
+}
+
+int ga2d_peer_is_awake(const ga2d_peer *p, int i)
+{
+    return ga2d_body_is_awake(p->world, p->ids[i]);
+}
+
+void ga2d_peer_set_velocity(ga2d_peer *p, int i, double vx, double vy, double w)
+{
+    ga2d_body_set_velocity(p->world, p->ids[i], ga2d_vec_make((ga2d_real)vx, (ga2d_real)vy));
+    ga2d_body_set_angular_velocity(p->world, p->ids[i], (ga2d_real)w);
+}
+
+void ga2d_peer_destroy(ga2d_peer *p)
+{
+    if (!p) return;
+    if (p->world) ga2d_world_destroy(p->world);
+    free(p->ids);
+    free(p);
+}
+
+const char *ga2d_peer_compiler(void)
+{
+#if defined(__clang__)
+    return "clang " __clang_version__;
+#elif defined(__GNUC__)
+    return "gcc " __VERSION__;
+#else
+    return "unknown C compiler";
+#endif
+}
+
+int ga2d_peer_real_is_double(void)
+{
+    return sizeof(ga2d_real) == sizeof(double);
+}
+
+const char *ga2d_peer_settings(void)
+{
+    /* read back from the defaults, so the line cannot go stale */
+    static char line[200];
+    ga2d_world_def d = ga2d_default_world_def();
+    snprintf(line, sizeof line, "ga2d_default_world_def(): %s, %d substeps, contacts %g Hz, damping ratio %g",
+             d.solver == GA2D_SOLVER_SOFT_STEP ? "soft step" : "PGS", d.substeps, (double)d.contact_hertz,
+             (double)d.contact_damping_ratio);
+    return line;
+}
