@@ -5,6 +5,9 @@
 #   make test-browser  the demo's SVG checked in headless Chromium
 #   make test     the test suite in every configuration (the README's test command)
 #   make bench    benchmarks (tests/bench/): speed is measured here, never in tests
+#   make trade    knob sweeps, tables and plots (tests/bench/trade.mk)
+#   make bench-peers  ga2d against Box2D 2.4.1 and Chipmunk 7 (tests/bench/peers.mk)
+#   make fuzz     libFuzzer harnesses, FUZZ_SECONDS each (tests/fuzz/fuzz.mk)
 #   make clean
 # Test configurations are built in parallel; the README quick start is built
 # from README.md itself.

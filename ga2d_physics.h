@@ -1,4 +1,4 @@
-/* ga2d_physics.h - v0.4.0 - 2D rigid-body physics of convex polygons,
+/* ga2d_physics.h - v0.5.0 - 2D rigid-body physics of convex polygons,
    written in the geometric algebra of the plane.   MIT / public domain.
 
    ==========================================================================
@@ -228,6 +228,10 @@
    ==========================================================================
    VERSION HISTORY
    ==========================================================================
+   0.5.0  determinism (canonical solver order, same bits across compilers,
+          -O levels and C/C++), world snapshots for rollback, containment
+          of bodies driven non-finite (ga2d_world_error_body); bounces at
+          the defaults reach e^(2n) h0.
    0.4.0  contact solver: soft step, PGS + Baumgarte, PGS + NGS; friction;
           restitution as a collision phase; warm starting; sleep.
    0.3.0  SAT narrowphase, dynamic AABB tree broadphase, contacts, events,
@@ -245,7 +249,7 @@
 #include <stdint.h>
 
 #define GA2D_VERSION_MAJOR 0
-#define GA2D_VERSION_MINOR 4
+#define GA2D_VERSION_MINOR 5
 #define GA2D_VERSION_PATCH 0
 
 #ifndef GA2D_MAX_POLYGON_VERTICES
@@ -403,8 +407,9 @@ GA2D_API ga2d_transform ga2d_transform_inv_mul(ga2d_transform a, ga2d_transform 
    degenerate.  Coordinates beyond GA2D_MAX_COORDINATE are too large.
    Checks run in this order, and the first failure is returned:
    INVALID_ARGUMENT, TOO_FEW_POINTS, TOO_MANY_POINTS, NOT_FINITE,
-   TOO_LARGE, REPEATED_POINTS, DEGENERATE (L so small that 1e-5 L^2 is
-   below the smallest normal number: float L < 2.4e-17, double 3.3e-152),
+   TOO_LARGE, REPEATED_POINTS, DEGENERATE (L below GA2D_MIN_EXTENT, or so
+   small that 1e-5 L^2 is not a normal number: float L < 2.4e-17, double
+   L < 1e-15),
    COLLINEAR_POINTS (all on one line), DEGENERATE, CLOCKWISE,
    COLLINEAR_POINTS (one vertex), NOT_CONVEX. */
 GA2D_API ga2d_result ga2d_polygon_make(const ga2d_vec *pts, int n, ga2d_polygon *out);
@@ -412,7 +417,8 @@ GA2D_API ga2d_result ga2d_polygon_make(const ga2d_vec *pts, int n, ga2d_polygon 
    on an edge dropped (tolerance 4x that of ga2d_polygon_make), CCW from the
    lowest-x vertex.  Fails with TOO_FEW_POINTS (fewer than 3 distinct
    points), COLLINEAR_POINTS, TOO_MANY_POINTS (the hull has more than
-   GA2D_MAX_POLYGON_VERTICES), NOT_FINITE, TOO_LARGE or DEGENERATE.
+   GA2D_MAX_POLYGON_VERTICES), NOT_FINITE, TOO_LARGE or DEGENERATE (also
+   for a cloud too small for ga2d_polygon_make, whatever its shape).
    Needs no memory beyond the stack: gift wrapping, O(n h). */
 GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon *out);
 /* Axis-aligned box centred on the origin; count 0 if a half-extent is not
@@ -430,14 +436,32 @@ GA2D_API ga2d_mass ga2d_polygon_mass(const ga2d_polygon *p, ga2d_real density);
 GA2D_API ga2d_result ga2d_polygon_mass_checked(const ga2d_polygon *p, ga2d_real density,
                                                ga2d_mass *out);
 
-/* The largest |coordinate| a polygon vertex may have: inertia grows as the
-   4th power of size, and every wedge-sum term below must stay finite with
-   room for densities up to ~1e6 (float: (3.4e38 / 1.2e4 / 1e6)^(1/4) ~ 1.2e8;
-   double: ~1e75). */
+/* The largest |coordinate| a polygon vertex may have.  Float: inertia
+   grows as the 4th power of size, and every wedge-sum term must stay
+   finite with room for densities up to ~1e6: (3.4e38 / 1.2e4 / 1e6)^(1/4)
+   ~ 1.2e8.  Double could go to ~1e75 by that measure, but doubles past
+   1e15 are 0.125 or more apart, coarser than any contact tolerance at a
+   sane length unit: such a polygon is a mistake, and is refused (as 1e30
+   is in float).  Define it before including the header to change it. */
+#ifndef GA2D_MAX_COORDINATE
 #ifdef GA2D_DOUBLE
-#define GA2D_MAX_COORDINATE 1e75
+#define GA2D_MAX_COORDINATE 1e15
 #else
 #define GA2D_MAX_COORDINATE 1e8f
+#endif
+#endif
+
+/* The smallest extent (larger side of the bounding box) a polygon may
+   have.  Float refuses what its arithmetic cannot measure (1e-5 L^2 below
+   the smallest normal number: L < 2.4e-17); double could measure down to
+   3e-152, but a polygon under 1e-15 (a femtometre at one unit per metre)
+   is a mistake too, refused with DEGENERATE.  Overridable like the above. */
+#ifndef GA2D_MIN_EXTENT
+#ifdef GA2D_DOUBLE
+#define GA2D_MIN_EXTENT 1e-15
+#else
+#define GA2D_MIN_EXTENT 0.0f
+#endif
 #endif
 
 /* ------------------------------------------------------- world and bodies */
@@ -676,7 +700,8 @@ GA2D_API void *ga2d_body_user_data(const ga2d_world *w, ga2d_body_id id);
    enough to normalize; a static body takes no velocity; a dynamic body
    that cannot turn (fixed rotation, or inertia 0) takes no angular
    velocity but 0.  Forces, torques and impulses whose sums would overflow
-   are refused with NOT_FINITE. */
+   are refused with NOT_FINITE, as are a transform or mass data that would
+   put the centre of mass beyond the largest finite number. */
 GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2d_vec position, ga2d_rotor q);
 GA2D_API ga2d_result ga2d_body_set_velocity(ga2d_world *w, ga2d_body_id id, ga2d_vec v);
 GA2D_API ga2d_result ga2d_body_set_angular_velocity(ga2d_world *w, ga2d_body_id id, ga2d_real omega);
@@ -1211,8 +1236,9 @@ GA2D_API ga2d_result ga2d_polygon_make(const ga2d_vec *pts, int n, ga2d_polygon 
         for (j = i + 1; j < n; ++j)
             if (ga2d_vec_length(ga2d_vec_sub(pts[j], pts[i])) <= tol) return GA2D_ERR_REPEATED_POINTS;
     /* so small that 1e-5 L^2 is not a normal number: the wedges underflow,
-       no area can be told (and the mass would divide by a subnormal one) */
-    if (!(2 * GA2D__POLY_MIN_AREA_RATIO * L * L >= GA2D__MIN_NORMAL)) return GA2D_ERR_DEGENERATE;
+       no area can be told (and the mass would divide by a subnormal one);
+       or below GA2D_MIN_EXTENT */
+    if (!(2 * GA2D__POLY_MIN_AREA_RATIO * L * L >= GA2D__MIN_NORMAL) || !(L >= GA2D_MIN_EXTENT)) return GA2D_ERR_DEGENERATE;
     if (ga2d__all_collinear(pts, n, tol)) return GA2D_ERR_COLLINEAR_POINTS;
     area2 = ga2d__twice_area(pts, n);
     if (GA2D__FABS(area2) <= 2 * GA2D__POLY_MIN_AREA_RATIO * L * L) return GA2D_ERR_DEGENERATE;
@@ -1321,6 +1347,10 @@ GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon 
     if (!out || (n > 0 && !pts) || n < 0) return GA2D_ERR_INVALID_ARGUMENT;
     r = ga2d__check_points(pts, n, &L);
     if (r != GA2D_OK) return r;
+    /* as in ga2d_polygon_make: too small for any area to be told, or
+       below GA2D_MIN_EXTENT */
+    if (L > 0 && (!(2 * GA2D__POLY_MIN_AREA_RATIO * L * L >= GA2D__MIN_NORMAL) || !(L >= GA2D_MIN_EXTENT)))
+        return GA2D_ERR_DEGENERATE;
     tol = 4 * GA2D__POLY_REL_TOL * L;
     for (i = 1; i < n; ++i)
         if (pts[i].x < pts[start].x || (pts[i].x == pts[start].x && pts[i].y < pts[start].y)) start = i;
@@ -1331,7 +1361,16 @@ GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon 
         int q = ga2d__hull_next(pts, n, pts[p], u, tol);
         if (q < 0 && h == 1) return GA2D_ERR_TOO_FEW_POINTS; /* all points are one */
         if (q < 0) break; /* everything else lies behind, on one line: a segment */
-        if (q == start || ga2d_vec_length(ga2d_vec_sub(pts[q], pts[start])) <= tol) break;
+        if (q == start) break;
+        /* a point welded to the start closes the loop, unless a point lies
+           clearly outside the closing edge (the wrap reached the start's
+           neighbourhood early, in a cloud whose features are near tol) */
+        if (ga2d_vec_length(ga2d_vec_sub(pts[q], pts[start])) <= tol) {
+            ga2d_vec e = ga2d_vec_sub(pts[start], pts[p]);
+            ga2d_real le = ga2d_vec_length(e);
+            for (i = 0; i < n && ga2d_wedge(e, ga2d_vec_sub(pts[i], pts[p])) >= -tol * le; ++i) {}
+            if (i == n) break;
+        }
         if (h == CAP) return GA2D_ERR_TOO_MANY_POINTS;
         /* exact arithmetic closes the loop within n steps; rounding that
            does not is a cloud too thin to wrap */
@@ -3029,6 +3068,17 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
     ga2d__destroy_body_contacts(w, slot, 0);
     ga2d__tree_destroy(ga2d__tree_of(w, b), b->proxy);
     ga2d__moving_remove(w, slot);
+    if (b->in_move) {
+        /* its queue entry goes with it: the slot, reused before the next
+           step, queues again, and the buffer is sized for one entry per
+           slot (destroy-create cycles between steps overflowed it) */
+        int k;
+        for (k = 0; k < w->move_count; ++k)
+            if (w->move_buf[k] == slot) {
+                w->move_buf[k] = w->move_buf[--w->move_count];
+                break;
+            }
+    }
     b->in_move = 0;
     b->type = -1;
     b->generation = b->generation + 1 ? b->generation + 1 : 1;
@@ -3171,13 +3221,17 @@ GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2
     if (r != GA2D_OK) return r;
     if (!ga2d__finite_vec(position) || !ga2d__finite(q.c) || !ga2d__finite(q.s)) return GA2D_ERR_NOT_FINITE;
     {
-        ga2d_vec u;
+        ga2d_vec u, c;
         /* zero, or too small to normalize (subnormal): no direction */
         if (ga2d_vec_normalize(ga2d_vec_make(q.c, q.s), &u) == 0) return GA2D_ERR_INVALID_ARGUMENT;
+        /* the centre must be finite too (a huge position plus a huge
+           centre of mass from ga2d_body_set_mass_data can overflow) */
+        c = ga2d_vec_add(position, ga2d_rotate(ga2d__rotor(u.x, u.y), b->local_center));
+        if (!ga2d__finite_vec(c)) return GA2D_ERR_NOT_FINITE;
         b->q = ga2d__rotor(u.x, u.y);
+        b->center = c;
     }
     ga2d__wake(w, (int)id.index1 - 1);
-    b->center = ga2d_vec_add(position, ga2d_rotate(b->q, b->local_center));
     b->center0 = b->center;
     b->q0 = b->q;
     b->dq = ga2d_rotor_identity();
@@ -3215,17 +3269,21 @@ GA2D_API ga2d_result ga2d_body_set_angular_velocity(ga2d_world *w, ga2d_body_id 
 GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2d_mass m)
 {
     ga2d__body *b;
-    ga2d_vec old_center;
+    ga2d_vec center, v;
     ga2d_result r = ga2d__writable(w, id, &b);
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(m.mass) || !ga2d__finite(m.inertia) || !ga2d__finite_vec(m.center)) return GA2D_ERR_NOT_FINITE;
     if (b->type != GA2D_BODY_DYNAMIC || !(m.mass > 0) || m.inertia < 0) return GA2D_ERR_INVALID_ARGUMENT;
     if (!ga2d__finite(1 / m.mass) || (m.inertia > 0 && !ga2d__finite(1 / m.inertia))) return GA2D_ERR_INVALID_ARGUMENT;
-    ga2d__wake(w, (int)id.index1 - 1);
-    old_center = b->center;
-    b->center = ga2d_vec_add(ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)), ga2d_rotate(b->q, m.center));
+    center = ga2d_vec_add(ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)), ga2d_rotate(b->q, m.center));
     /* the new centre moves with the rigid motion: v + (c' - c) Omega */
-    b->v = ga2d_vec_add(b->v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(b->center, old_center)), b->w));
+    v = ga2d_vec_add(b->v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(center, b->center)), b->w));
+    /* a centre so far out that the world position overflows: refused,
+       like any input that would make the state not finite */
+    if (!ga2d__finite_vec(center) || !ga2d__finite_vec(v)) return GA2D_ERR_NOT_FINITE;
+    ga2d__wake(w, (int)id.index1 - 1);
+    b->center = center;
+    b->v = v;
     b->local_center = m.center;
     b->mass = m.mass;
     b->inv_mass = 1 / m.mass;
@@ -3486,6 +3544,17 @@ static void ga2d__contain(ga2d_world *w, int slot)
     b->torque = 0;
     b->field_valid = 0;
     b->sleep_time = 0;
+    {
+        /* its contacts' accumulated impulses may hold what drove it: they
+           restart from zero, or warm starting and the passes that follow
+           would hand the NaN back to it and on to its neighbours */
+        int i, k;
+        for (i = 0; i < w->constraint_count; ++i) {
+            ga2d__constraint *c = &w->constraints[i];
+            if (c->a != slot && c->b != slot) continue;
+            for (k = 0; k < c->count; ++k) c->p[k].normal_impulse = c->p[k].tangent_impulse = c->p[k].restitution_impulse = 0;
+        }
+    }
     if (w->step_error == GA2D_OK) w->step_error = GA2D_ERR_NOT_FINITE;
     if (w->error_slot < 0) w->error_slot = slot;
 }
@@ -4239,7 +4308,11 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     }
     for (k = 0; k < w->moving_count; ++k) { /* positions too (RK4's own stages, huge coordinates) */
         const ga2d__body *b = &w->bodies[w->moving[k]];
-        if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) ga2d__contain(w, w->moving[k]);
+        /* and velocities: a NaN impulse from a contained neighbour's
+           contact reaches kinematic bodies too (0 x NaN) */
+        if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s) || !ga2d__finite_vec(b->v) ||
+            !ga2d__finite(b->w))
+            ga2d__contain(w, w->moving[k]);
     }
     ga2d__store_impulses(w);
     w->counters.constraint_count = w->constraint_count;

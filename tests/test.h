@@ -55,6 +55,9 @@ void suite_solver(void);
 void suite_determinism(void);
 void suite_snapshot(void);
 void suite_containment(void);
+void suite_fuzz_regress(void);
+void suite_failinject(void);
+void suite_extremes(void);
 
 #ifdef __cplusplus
 }

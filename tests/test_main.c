@@ -74,6 +74,9 @@ int main(void)
     suite_determinism();
     suite_snapshot();
     suite_containment();
+    suite_fuzz_regress();
+    suite_failinject();
+    suite_extremes();
     printf("%d passed, %d failed\n", g_passed, g_failed);
     return g_failed ? 1 : 0;
 }

@@ -191,16 +191,14 @@ static void make_rejects_bad_input(void)
 #endif
     }
 
-    /* coordinates so large that inertia (size^4) would overflow: 1e30 in
-       float (1e120 is past FLT_MAX = 3.4e38), and 10x the documented limit
-       in either precision.  Double holds 1e30 comfortably: its mass is
-       exact there (test_mass). */
+    /* coordinates beyond GA2D_MAX_COORDINATE: 10x the documented limit in
+       either precision, and 1e30 in both (in float inertia, size^4, would
+       overflow: 1e120 is past FLT_MAX = 3.4e38; in double it is past the
+       1e15 policy bound) */
     for (i = 0; i < 4; ++i) pts[i] = ga2d_vec_scale(ok[i], (ga2d_real)(10 * (double)GA2D_MAX_COORDINATE));
     expect_make_fails(pts, 4, GA2D_ERR_TOO_LARGE);
-#ifndef GA2D_DOUBLE
     for (i = 0; i < 4; ++i) pts[i] = ga2d_vec_scale(ok[i], (ga2d_real)1e30);
     expect_make_fails(pts, 4, GA2D_ERR_TOO_LARGE);
-#endif
     /* a failing call leaves a previously good output exactly as it was */
     CHECK_RESULT(ga2d_polygon_make(ok, 4, &out), GA2D_OK);
     {

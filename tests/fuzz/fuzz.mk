@@ -1,0 +1,69 @@
+# make fuzz: libFuzzer harnesses (tests/fuzz/fuzz_*.c, logic in fuzz_*.h),
+# built with clang's fuzzer, address and undefined-behaviour sanitizers and
+# run for FUZZ_SECONDS each (default 60).  Each harness keeps a corpus in
+# build/fuzz/corpus/<harness>, starts from tests/fuzz/seeds/<input kind> and
+# tests/fuzz/regress/<input kind>, and writes any crashing input to
+# build/fuzz/<harness>-crash-*.  The last lines are one summary per harness:
+# executions, coverage (cov: edges, ft: features) and corpus size.
+# A finding is fixed, and its input kept in tests/fuzz/regress/<kind>/,
+# which `make test` replays (tests/test_fuzz_regress.c).
+#   make fuzz                      every harness, 60 s each
+#   make fuzz FUZZ_SECONDS=600     longer
+#   make fuzz FUZZ_ONLY=world      one harness (or a list)
+#   make fuzz-build                build only
+
+FUZZ_SECONDS ?= 60
+FUZZ_CC      ?= clang
+FUZZ_DIR     := $(BUILD)/fuzz
+FUZZ_FLAGS   := -std=c99 -O1 -g -ffp-contract=off -fsanitize=fuzzer,address,undefined \
+                -fno-sanitize-recover=all -fno-omit-frame-pointer
+# harness = input kind [+ _double for the double build]; the snapshot
+# harness exists once the header has the snapshot API
+FUZZ_KINDS   := polygon world $(if $(shell grep -l ga2d_world_snapshot_load $(HEADER) 2>/dev/null),snapshot)
+FUZZ_ALL     := $(foreach k,$(FUZZ_KINDS),$(k) $(k)_double)
+FUZZ_ONLY    ?= $(FUZZ_ALL)
+FUZZ_BINS    := $(addprefix $(FUZZ_DIR)/fuzz_,$(FUZZ_ONLY))
+
+.PHONY: fuzz fuzz-build fuzz-clean
+
+# $(1): input kind, $(2): harness name, $(3): extra flags
+define FUZZ_RULE
+$(FUZZ_DIR)/fuzz_$(2): tests/fuzz/fuzz_$(1).c tests/fuzz/fuzz_$(1).h tests/fuzz/fuzz_common.h $(HEADER)
+	@mkdir -p $(FUZZ_DIR)
+	$(FUZZ_CC) $(FUZZ_FLAGS) $(3) $(WARN) $(INC) -Itests/fuzz $$< -o $$@ $(LIBS)
+endef
+$(foreach k,$(FUZZ_KINDS),$(eval $(call FUZZ_RULE,$(k),$(k),)))
+$(foreach k,$(FUZZ_KINDS),$(eval $(call FUZZ_RULE,$(k),$(k)_double,-DGA2D_DOUBLE)))
+
+fuzz-build: $(FUZZ_BINS)
+
+# Runs each harness in turn, then prints every summary; fails if any
+# harness found a crash or a violated invariant.
+fuzz: fuzz-build
+	@status=0; summary=""; \
+	for h in $(FUZZ_ONLY); do \
+	    kind=$${h%_double}; corpus=$(FUZZ_DIR)/corpus/$$h; log=$(FUZZ_DIR)/$$h.log; \
+	    mkdir -p $$corpus tests/fuzz/seeds/$$kind tests/fuzz/regress/$$kind; \
+	    echo "== fuzz $$h: $(FUZZ_SECONDS) s"; \
+	    ./$(FUZZ_DIR)/fuzz_$$h -max_total_time=$(FUZZ_SECONDS) -timeout=20 -max_len=4096 -print_final_stats=1 \
+	        -artifact_prefix=$(FUZZ_DIR)/$$h- $$corpus tests/fuzz/seeds/$$kind tests/fuzz/regress/$$kind \
+	        > $$log 2>&1; rc=$$?; \
+	    done_line=$$(grep -E '^#[0-9]+[[:space:]]+DONE' $$log | tail -n 1); \
+	    execs=$$(grep -E '^stat::number_of_executed_units:' $$log | awk '{print $$2}'); \
+	    cov=$$(printf '%s\n' "$$done_line" | sed -n 's/.*cov: \([0-9]*\).*/\1/p'); \
+	    ft=$$(printf '%s\n' "$$done_line" | sed -n 's/.* ft: \([0-9]*\).*/\1/p'); \
+	    corp=$$(printf '%s\n' "$$done_line" | sed -n 's/.* corp: \([^ ]*\).*/\1/p'); \
+	    rate=$$(printf '%s\n' "$$done_line" | sed -n 's/.* exec\/s: \([0-9]*\).*/\1/p'); \
+	    if [ $$rc -ne 0 ] || [ -z "$$done_line" ]; then \
+	        tail -n 40 $$log; status=1; \
+	        line=$$(printf 'fuzz %-16s FAILED (exit %s): see %s and %s-crash-*' $$h $$rc $$log $(FUZZ_DIR)/$$h); \
+	    else \
+	        line=$$(printf 'fuzz %-16s %10s executions  cov: %-5s ft: %-6s corpus: %-12s %s exec/s' \
+	            $$h "$$execs" "$$cov" "$$ft" "$$corp" "$$rate"); \
+	    fi; \
+	    echo "$$line"; summary="$$summary$$line\n"; \
+	done; \
+	echo "== fuzz summary ($(FUZZ_SECONDS) s per harness)"; printf "$$summary"; exit $$status
+
+fuzz-clean:
+	rm -rf $(FUZZ_DIR)

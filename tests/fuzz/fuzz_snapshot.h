@@ -1,0 +1,268 @@
+/* Snapshot-loader fuzzing: raw bytes -> a buffer loaded into a world built
+   from a fixed small scene (a ground, a stack, a falling triangle, a
+   kinematic body, a destroyed body's free slot, after some steps, so that
+   contacts and warm-start impulses exist).
+
+   The buffer is either the input itself, or the scene's own snapshot
+   edited by the input (bytes set, flipped, words and reals written at
+   aligned places, truncated or extended) with, on request, its header's
+   payload size and checksum made to match again: the header is
+   documented as magic, version and the build's sizes (32 bytes), then the
+   payload size and an FNV-1a checksum of the payload (8 bytes each), so
+   edits reach the loader's checks of every body and contact instead of
+   stopping at the checksum.  The allocator may fail during the load.
+
+   Checked:
+     - a refused buffer (any error) leaves the world bit-identical: its
+       snapshot before and after are the same bytes;
+     - an error is BAD_SNAPSHOT, or OUT_OF_MEMORY when an allocation
+       failed;
+     - an accepted buffer gives a world that saves and loads again to the
+       same bytes, and steps without crashing, with every awake body
+       finite after steps that report OK or NOT_FINITE (containment);
+     - nothing leaks (the allocator gets every byte back). */
+#ifndef GA2D_FUZZ_SNAPSHOT_H
+#define GA2D_FUZZ_SNAPSHOT_H
+
+#include "fuzz_common.h"
+
+#define FS_HEADER 48          /* documented: 32 bytes of ids and sizes, then two 64-bit fields */
+#define FS_MAX_EXTRA 4096
+
+typedef struct fs_snap { unsigned char *p; size_t n; } fs_snap;
+
+static int fs_save(const ga2d_world *w, fs_snap *s)
+{
+    s->n = ga2d_world_snapshot_size(w);
+    s->p = (unsigned char *)malloc(s->n ? s->n : 1);
+    if (!s->p) return 0;
+    return ga2d_world_snapshot_save(w, s->p, s->n) == GA2D_OK;
+}
+
+static uint64_t fs_fnv1a(const unsigned char *p, size_t n)
+{
+    uint64_t h = 14695981039346656037ull;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        h ^= p[i];
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+static ga2d_world *fs_scene(fz_alloc *a, ga2d_body_id *ids, int *n)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_world *w;
+    int i;
+    fz_alloc_attach(a, &wd);
+    w = ga2d_world_create(&wd);
+    if (!w) return NULL;
+    *n = 0;
+    d.position = ga2d_vec_make(0, -1);
+    d.polygon = ga2d_polygon_box(10, 1);
+    ids[(*n)++] = ga2d_body_create(w, &d);
+    for (i = 0; i < 3; ++i) {
+        d = ga2d_default_body_def();
+        d.type = GA2D_BODY_DYNAMIC;
+        d.position = ga2d_vec_make((ga2d_real)(0.1 * i), (ga2d_real)(0.5 + i));
+        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+        d.restitution = (ga2d_real)(0.2 * i);
+        ids[(*n)++] = ga2d_body_create(w, &d);
+    }
+    d = ga2d_default_body_def();
+    d.type = GA2D_BODY_DYNAMIC;
+    d.position = ga2d_vec_make(2, 2);
+    d.polygon = ga2d_polygon_regular(3, (ga2d_real)0.4);
+    d.angular_velocity = 2;
+    ids[(*n)++] = ga2d_body_create(w, &d);
+    d = ga2d_default_body_def();
+    d.type = GA2D_BODY_KINEMATIC;
+    d.position = ga2d_vec_make(-3, 1);
+    d.velocity = ga2d_vec_make((ga2d_real)0.5, 0);
+    ids[(*n)++] = ga2d_body_create(w, &d);
+    d = ga2d_default_body_def();
+    d.type = GA2D_BODY_DYNAMIC;
+    d.position = ga2d_vec_make(5, 5);
+    ids[(*n)++] = ga2d_body_create(w, &d);
+    for (i = 0; i < 8; ++i) ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+    ga2d_body_destroy(w, ids[*n - 1]); /* a free slot */
+    return w;
+}
+
+/* Every live body, found through the debug draw (which names each body
+   with its id): awake moving ones must be finite. */
+typedef struct fs_bodies { ga2d_body_id ids[64]; int n; } fs_bodies;
+
+static void fs_collect(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform x, uint32_t color, void *ctx)
+{
+    fs_bodies *b = (fs_bodies *)ctx;
+    (void)p;
+    (void)x;
+    (void)color;
+    if (b->n < 64) b->ids[b->n++] = id;
+}
+
+static void fs_check_finite(const ga2d_world *w)
+{
+    fs_bodies all;
+    ga2d_debug_draw dd = ga2d_default_debug_draw();
+    int i;
+    all.n = 0;
+    dd.polygon = fs_collect;
+    dd.context = &all;
+    FUZZ_CHECK(ga2d_world_draw(w, &dd) == GA2D_OK);
+    FUZZ_CHECK(all.n == ga2d_world_get_counters(w).body_count || all.n == 64);
+    for (i = 0; i < all.n; ++i) {
+        ga2d_body_id id = all.ids[i];
+        ga2d_vec c, v;
+        ga2d_rotor q;
+        FUZZ_CHECK(ga2d_body_is_valid(w, id));
+        if (!ga2d_body_is_awake(w, id) || ga2d_body_get_type(w, id) == GA2D_BODY_STATIC) continue;
+        c = ga2d_body_center(w, id);
+        v = ga2d_body_velocity(w, id);
+        q = ga2d_body_rotor(w, id);
+        FUZZ_CHECK(fz_finite_vec(c) && fz_finite_vec(v) && fz_finite((double)q.c) && fz_finite((double)q.s));
+        FUZZ_CHECK(fz_finite((double)ga2d_body_angular_velocity(w, id)));
+    }
+}
+
+static int fuzz_snapshot_one(const uint8_t *data, size_t size)
+{
+    fz_reader rd;
+    fz_alloc a, a2;
+    ga2d_body_id ids[16];
+    int n = 0, i;
+    ga2d_world *w, *w2;
+    fs_snap before, after, good;
+    unsigned char *buf;
+    size_t len;
+    unsigned mode, fail;
+    ga2d_result r;
+    long failures;
+    memset(&a, 0, sizeof a);
+    memset(&a2, 0, sizeof a2);
+    fz_init(&rd, data, size);
+    w = fs_scene(&a, ids, &n);
+    FUZZ_CHECK(w != NULL);
+    if (!w) return 0;
+    FUZZ_CHECK(fs_save(w, &before));
+    mode = fz_u8(&rd);
+    fail = fz_u8(&rd);
+
+    if (mode < 32) {
+        /* the input itself */
+        len = rd.n - rd.i;
+        buf = (unsigned char *)malloc(len ? len : 1);
+        FUZZ_CHECK(buf != NULL);
+        if (len) memcpy(buf, rd.p + rd.i, len);
+    } else {
+        /* the scene's snapshot, edited */
+        size_t cap = before.n + FS_MAX_EXTRA;
+        int edits = 1 + fz_pick(&rd, 8);
+        buf = (unsigned char *)malloc(cap);
+        FUZZ_CHECK(buf != NULL);
+        memcpy(buf, before.p, before.n);
+        len = before.n;
+        for (i = 0; i < edits && fz_more(&rd); ++i) {
+            unsigned op = fz_u8(&rd) % 8;
+            size_t at = len ? (size_t)fz_u32(&rd) % len : 0;
+            switch (op) {
+            case 0: if (len) buf[at] = (unsigned char)fz_u8(&rd); break;
+            case 1: if (len) buf[at] ^= (unsigned char)(1u << (fz_u8(&rd) & 7)); break;
+            case 2: { /* a 32-bit word at an aligned place */
+                uint32_t v;
+                static const uint32_t words[8] = {0, 1, 0xFFFFFFFFu, 0x7FFFFFFFu, 0x80000000u, 2, 1000000, 0xFFFFFFFEu};
+                unsigned k = fz_u8(&rd);
+                v = k < 128 ? words[k % 8] : fz_u32(&rd);
+                at &= ~(size_t)3;
+                if (at + 4 <= len) memcpy(buf + at, &v, 4);
+                break;
+            }
+            case 3: { /* a real at an aligned place */
+                ga2d_real x = fz_special(fz_u8(&rd));
+                at &= ~(size_t)(sizeof x - 1);
+                if (at + sizeof x <= len) memcpy(buf + at, &x, sizeof x);
+                break;
+            }
+            case 4: len = len ? (size_t)fz_u32(&rd) % len : 0; break; /* truncate */
+            case 5: { /* extend with input bytes */
+                size_t more = (size_t)fz_u16(&rd) % 256;
+                while (more-- && len < cap) buf[len++] = (unsigned char)fz_u8(&rd);
+                break;
+            }
+            case 6: { /* copy a run from elsewhere in the buffer (a body over another) */
+                size_t from = len ? (size_t)fz_u32(&rd) % len : 0, run = (size_t)fz_u16(&rd) % 512;
+                if (from + run > len) run = len - from;
+                if (at + run > len) run = len - at;
+                memmove(buf + at, buf + from, run);
+                break;
+            }
+            default: { /* a 64-bit word */
+                uint64_t v = fz_u8(&rd) < 128 ? (uint64_t)(int64_t)(int8_t)fz_u8(&rd) : fz_u64(&rd);
+                at &= ~(size_t)7;
+                if (at + 8 <= len) memcpy(buf + at, &v, 8);
+                break;
+            }
+            }
+        }
+        if ((mode & 1) && len >= FS_HEADER) {
+            /* make the header's payload size and checksum agree again */
+            uint64_t payload = (uint64_t)(len - FS_HEADER), sum = fs_fnv1a(buf + FS_HEADER, len - FS_HEADER);
+            memcpy(buf + 32, &payload, 8);
+            memcpy(buf + 40, &sum, 8);
+        }
+    }
+
+    /* the load, with an allocation failing in it on request */
+    if (fail >= 128) a.fail_at = a.attempts + 1 + (long)(fail - 128) % 16;
+    failures = a.failures;
+    r = ga2d_world_snapshot_load(w, buf ? buf : (const unsigned char *)"", len);
+    FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT);
+    a.fail_at = 0;
+    if (r != GA2D_OK) {
+        FUZZ_CHECK(r == GA2D_ERR_BAD_SNAPSHOT || r == GA2D_ERR_OUT_OF_MEMORY);
+        if (r == GA2D_ERR_OUT_OF_MEMORY) FUZZ_CHECK(a.failures != failures);
+        /* refused: the world is exactly as it was */
+        FUZZ_CHECK(fs_save(w, &after));
+        FUZZ_CHECK(after.n == before.n && memcmp(after.p, before.p, before.n) == 0);
+        free(after.p);
+    } else {
+        /* accepted: it saves, and that loads into another world and saves
+           to the same bytes */
+        ga2d_body_id ids2[16];
+        int n2 = 0;
+        FUZZ_CHECK(fs_save(w, &good));
+        w2 = fs_scene(&a2, ids2, &n2);
+        FUZZ_CHECK(w2 != NULL);
+        if (w2) {
+            FUZZ_CHECK(ga2d_world_snapshot_load(w2, good.p, good.n) == GA2D_OK);
+            FUZZ_CHECK(fs_save(w2, &after));
+            FUZZ_CHECK(after.n == good.n && memcmp(after.p, good.p, good.n) == 0);
+            free(after.p);
+            ga2d_world_destroy(w2);
+            FUZZ_CHECK(a2.live_bytes == 0 && a2.live_blocks == 0);
+        }
+        free(good.p);
+        /* and it steps */
+        for (i = 0; i < 5; ++i) {
+            r = ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+            FUZZ_CHECK(r == GA2D_OK || r == GA2D_ERR_NOT_FINITE || r == GA2D_ERR_INVALID_ARGUMENT);
+            if (r == GA2D_OK || r == GA2D_ERR_NOT_FINITE) fs_check_finite(w);
+        }
+        {
+            ga2d_debug_draw dd = ga2d_default_debug_draw();
+            dd.draw_aabbs = dd.draw_contacts = dd.draw_centers = 1;
+            FUZZ_CHECK(ga2d_world_draw(w, &dd) == GA2D_OK);
+            (void)ga2d_world_get_contacts(w, NULL, 0);
+        }
+    }
+    free(buf);
+    free(before.p);
+    ga2d_world_destroy(w);
+    FUZZ_CHECK(a.live_bytes == 0 && a.live_blocks == 0);
+    return 0;
+}
+
+#endif

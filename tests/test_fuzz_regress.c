@@ -1,0 +1,139 @@
+/* Replays what the fuzzers found (issue 8): every input kept in
+   tests/fuzz/regress/<harness>/ (one per finding, each fixed in the
+   header) and the small seed corpus in tests/fuzz/seeds/<harness>/, run
+   through the same per-input functions the libFuzzer drivers call
+   (polygon, world and snapshot-loader harnesses)
+   (tests/fuzz/fuzz_<harness>.h), in this build's configuration.  A
+   violated invariant is a failed check here; a memory or UB error stops
+   the sanitizer builds.  `make test` runs from the repository root, where
+   the directories are found.
+
+   Listing a directory needs POSIX <dirent.h>; elsewhere the suite says so
+   and replays nothing. */
+#if !defined(_WIN32) && !defined(_POSIX_C_SOURCE)
+#define _POSIX_C_SOURCE 200809L
+#endif
+#include "test.h"
+
+#define FUZZ_FAIL(file, line, what) test_fail((file), (line), "fuzz invariant: %s", (what))
+#include "fuzz/fuzz_polygon.h"
+#include "fuzz/fuzz_world.h"
+#include "fuzz/fuzz_snapshot.h"
+
+#if !defined(_WIN32)
+#include <dirent.h>
+#define HAVE_DIRENT 1
+#endif
+
+#define FUZZ_ROOT "tests/fuzz"
+#define FUZZ_MAX_INPUT (1 << 20)
+#define MAX_FILES 512
+
+typedef int fuzz_one_fn(const uint8_t *data, size_t size);
+
+static int cmp_names(const void *a, const void *b) { return strcmp(*(const char *const *)a, *(const char *const *)b); }
+
+/* Runs every file of FUZZ_ROOT/<kind>/<harness>/ through fn; returns how
+   many, or -1 when the directory cannot be opened. */
+static int replay_dir(const char *kind, const char *harness, fuzz_one_fn *fn)
+{
+#ifdef HAVE_DIRENT
+    char path[512];
+    char *names[MAX_FILES];
+    int n = 0, i;
+    DIR *dir;
+    struct dirent *e;
+    uint8_t *buf = (uint8_t *)malloc(FUZZ_MAX_INPUT);
+    if (!buf) return -1;
+    snprintf(path, sizeof path, "%s/%s/%s", FUZZ_ROOT, kind, harness);
+    dir = opendir(path);
+    if (!dir) {
+        free(buf);
+        return -1;
+    }
+    while ((e = readdir(dir)) != NULL && n < MAX_FILES) {
+        size_t len = strlen(e->d_name);
+        if (e->d_name[0] == '.') continue;
+        names[n] = (char *)malloc(len + 1);
+        if (!names[n]) break;
+        memcpy(names[n], e->d_name, len + 1);
+        ++n;
+    }
+    closedir(dir);
+    qsort(names, (size_t)n, sizeof names[0], cmp_names); /* the same order every run */
+    for (i = 0; i < n; ++i) {
+        char file[1024];
+        FILE *f;
+        size_t size;
+        snprintf(file, sizeof file, "%s/%s", path, names[i]);
+        f = fopen(file, "rb");
+        CHECK(f != NULL);
+        if (f) {
+            size = fread(buf, 1, FUZZ_MAX_INPUT, f);
+            fclose(f);
+            fn(buf, size);
+        }
+        free(names[i]);
+    }
+    free(buf);
+    return n;
+#else
+    (void)kind;
+    (void)harness;
+    (void)fn;
+    return -1;
+#endif
+}
+
+/* Each harness: its findings and its seeds (tests/fuzz itself must be
+   there: the suite runs from the repository root; a harness with no
+   finding has no regress directory, since git keeps no empty one). */
+static void replay(const char *harness, fuzz_one_fn *fn)
+{
+    int found = replay_dir("regress", harness, fn), seeds = replay_dir("seeds", harness, fn);
+#ifdef HAVE_DIRENT
+    DIR *root = opendir(FUZZ_ROOT);
+    CHECK(root != NULL);
+    if (root) closedir(root);
+    CHECK(seeds > 0); /* every harness keeps a few seeds */
+    if (found < 0) found = 0;
+#endif
+    {
+        const char *v = getenv("GA2D_TEST_VERBOSE");
+        if (v && v[0]) printf("fuzz regress: %s: %d findings, %d seeds replayed\n", harness, found, seeds);
+    }
+}
+
+static int polygon_one(const uint8_t *data, size_t size) { return fuzz_polygon_one(data, size); }
+static int world_one(const uint8_t *data, size_t size) { return fuzz_world_one(data, size); }
+static int snapshot_one(const uint8_t *data, size_t size) { return fuzz_snapshot_one(data, size); }
+
+static void regress_polygon(void) { replay("polygon", polygon_one); }
+static void regress_world(void) { replay("world", world_one); }
+static void regress_snapshot(void) { replay("snapshot", snapshot_one); }
+
+/* The empty input and a few fixed ones, which need no files. */
+static void fixed_inputs(void)
+{
+    static const uint8_t zeros[64] = {0};
+    uint8_t ramp[256];
+    int i;
+    for (i = 0; i < 256; ++i) ramp[i] = (uint8_t)i;
+    fuzz_polygon_one(NULL, 0);
+    fuzz_polygon_one(zeros, sizeof zeros);
+    fuzz_polygon_one(ramp, sizeof ramp);
+    fuzz_world_one(NULL, 0);
+    fuzz_world_one(zeros, sizeof zeros);
+    fuzz_world_one(ramp, sizeof ramp);
+    fuzz_snapshot_one(NULL, 0);
+    fuzz_snapshot_one(zeros, sizeof zeros);
+    fuzz_snapshot_one(ramp, sizeof ramp);
+}
+
+void suite_fuzz_regress(void)
+{
+    test_run("fuzz regress: fixed inputs", fixed_inputs);
+    test_run("fuzz regress: polygon findings and seeds", regress_polygon);
+    test_run("fuzz regress: world findings and seeds", regress_world);
+    test_run("fuzz regress: snapshot findings and seeds", regress_snapshot);
+}
