@@ -605,6 +605,20 @@ static void plot_scene(const char *dir, const trade_scene *sc, const row *rows, 
     if (svgp_write(&plot, path) != 0) fprintf(stderr, "trade: cannot write %s\n", path);
 }
 
+/* The scene's default rows, float and double (NULL where missing). */
+static void default_rows(const row *rows, int n, const char *scene, const row **f, const row **d)
+{
+    int i;
+    *f = *d = NULL;
+    for (i = 0; i < n; ++i)
+        if (strcmp(rows[i].scene, scene) == 0 && rows[i].is_default) {
+            if (strcmp(rows[i].precision, "float") == 0)
+                *f = &rows[i];
+            else
+                *d = &rows[i];
+        }
+}
+
 static int report(const char *dir, char **knob_csv, int knob_count, const char *passes_csv)
 {
     static row rows[MAX_ROWS];
@@ -637,14 +651,8 @@ static int report(const char *dir, char **knob_csv, int knob_count, const char *
     out2(md, "## Defaults\n\n| scene | figure | float ms/step | float error | double ms/step | double error |\n"
              "|---|---|---|---|---|---|\n");
     for (s = 0; s < SCENE_COUNT; ++s) {
-        const row *f = NULL, *d = NULL;
-        for (i = 0; i < n; ++i)
-            if (strcmp(rows[i].scene, SCENES[s].name) == 0 && rows[i].is_default) {
-                if (strcmp(rows[i].precision, "float") == 0)
-                    f = &rows[i];
-                else
-                    d = &rows[i];
-            }
+        const row *f, *d;
+        default_rows(rows, n, SCENES[s].name, &f, &d);
         if (!f) continue;
         out2(md, "| %s | %s | %.4g | %.3g |", SCENES[s].name, figure_of(&SCENES[s]), f->ms, f->error);
         if (d)
@@ -679,14 +687,8 @@ static int report(const char *dir, char **knob_csv, int knob_count, const char *
             }
         }
     for (s = 0; s < SCENE_COUNT; ++s) {
-        const row *f = NULL, *d = NULL;
-        for (i = 0; i < n; ++i)
-            if (strcmp(rows[i].scene, SCENES[s].name) == 0 && rows[i].is_default) {
-                if (strcmp(rows[i].precision, "float") == 0)
-                    f = &rows[i];
-                else
-                    d = &rows[i];
-            }
+        const row *f, *d;
+        default_rows(rows, n, SCENES[s].name, &f, &d);
         if (f && d)
             out2(md, "| precision | double | %s | %.4g | %.2f | %.3g | %.3g | %s |\n", d->scene, d->ms, d->ms / f->ms,
                  d->error, f->error > 0 ? d->error / f->error : (double)NAN,
