@@ -2130,7 +2130,8 @@ typedef struct ga2d__body {
     ga2d_filter filter;
     int proxy;                   /* leaf in trees[type != static] */
     int in_move;                 /* queued for pair finding */
-    int contact_head;            /* first link of its contact list, or -1 */
+    int contact_head;            /* first (oldest) link of its contact list, or -1 */
+    int contact_tail;            /* last (newest) link, or -1 */
     ga2d_vec center0;            /* where the step began (solver) */
     ga2d_rotor q0;
     ga2d_rotor dq;               /* q q0~: its turn since then, per solver pass */
@@ -2276,14 +2277,17 @@ static void ga2d__pairs_remove(ga2d_world *w, uint64_t key)
 }
 
 /* ------------------------------------------------------ contact lifetime */
+/* A body's list holds its contacts oldest first: a new one goes at the
+   tail (the solver takes them in this order, see ga2d__prepare_contacts). */
 static void ga2d__link_contact(ga2d_world *w, int ci, int side)
 {
     ga2d__contact *c = &w->contacts[ci];
     ga2d__body *b = &w->bodies[side ? c->b : c->a];
-    c->prev[side] = -1;
-    c->next[side] = b->contact_head;
-    if (b->contact_head >= 0) w->contacts[b->contact_head >> 1].prev[b->contact_head & 1] = 2 * ci + side;
-    b->contact_head = 2 * ci + side;
+    c->prev[side] = b->contact_tail;
+    c->next[side] = -1;
+    if (b->contact_tail >= 0) w->contacts[b->contact_tail >> 1].next[b->contact_tail & 1] = 2 * ci + side;
+    else b->contact_head = 2 * ci + side;
+    b->contact_tail = 2 * ci + side;
 }
 
 static void ga2d__unlink_contact(ga2d_world *w, int ci, int side)
@@ -2293,6 +2297,7 @@ static void ga2d__unlink_contact(ga2d_world *w, int ci, int side)
     if (c->prev[side] >= 0) w->contacts[c->prev[side] >> 1].next[c->prev[side] & 1] = c->next[side];
     else b->contact_head = c->next[side];
     if (c->next[side] >= 0) w->contacts[c->next[side] >> 1].prev[c->next[side] & 1] = c->prev[side];
+    else b->contact_tail = c->prev[side];
 }
 
 /* Friction mixes as sqrt(mu_a mu_b), restitution as max(e_a, e_b). */
@@ -2811,11 +2816,18 @@ static void ga2d__reset_field(ga2d_world *w)
     }
 }
 
-GA2D_API ga2d_result ga2d_world_set_integrator(ga2d_world *w, ga2d_integrator integrator)
+/* Checks a world and an enum value in [0, count) before a setter writes. */
+static ga2d_result ga2d__check_mode(const ga2d_world *w, int value, int count)
 {
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
     if (w->locked) return GA2D_ERR_LOCKED;
-    if ((int)integrator < 0 || (int)integrator >= GA2D_INTEGRATOR_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
+    return value < 0 || value >= count ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_set_integrator(ga2d_world *w, ga2d_integrator integrator)
+{
+    ga2d_result r = ga2d__check_mode(w, (int)integrator, GA2D_INTEGRATOR_COUNT);
+    if (r != GA2D_OK) return r;
     if (integrator == GA2D_INTEGRATOR_RK4 &&
         !ga2d__grow(&w->def.allocator, (void **)&w->rk4, &w->rk4_capacity, w->moving_capacity, sizeof *w->rk4))
         return GA2D_ERR_OUT_OF_MEMORY;
@@ -2826,20 +2838,16 @@ GA2D_API ga2d_result ga2d_world_set_integrator(ga2d_world *w, ga2d_integrator in
 
 GA2D_API ga2d_result ga2d_world_set_rotation_update(ga2d_world *w, ga2d_rotation_update mode)
 {
-    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
-    if ((int)mode < 0 || (int)mode >= GA2D_ROTATION_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
-    w->def.rotation_update = mode;
-    return GA2D_OK;
+    ga2d_result r = ga2d__check_mode(w, (int)mode, GA2D_ROTATION_COUNT);
+    if (r == GA2D_OK) w->def.rotation_update = mode;
+    return r;
 }
 
 GA2D_API ga2d_result ga2d_world_set_solver(ga2d_world *w, ga2d_solver solver)
 {
-    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
-    if ((int)solver < 0 || (int)solver >= GA2D_SOLVER_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
-    w->def.solver = solver;
-    return GA2D_OK;
+    ga2d_result r = ga2d__check_mode(w, (int)solver, GA2D_SOLVER_COUNT);
+    if (r == GA2D_OK) w->def.solver = solver;
+    return r;
 }
 
 /* A world switch: refused while the world steps. */
@@ -3041,7 +3049,7 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
         if (b->awake) ga2d__moving_add(w, slot);
     }
     b->filter = def->filter;
-    b->contact_head = -1;
+    b->contact_head = b->contact_tail = -1;
     b->proxy = ga2d__tree_create(&w->trees[moves], ga2d__fatten(ga2d_polygon_aabb(&poly, ga2d__body_xf(b)), w->aabb_margin), slot);
     ga2d__buffer_move(w, slot);
     ++w->body_count;
@@ -3865,25 +3873,19 @@ static int ga2d__add_constraint(ga2d_world *w, int ci)
    body; static, kinematic and sleeping partners keep their velocities
    (inverse mass and inertia 0 here).  The order is canonical, not the
    pool's: body slots ascending, each body's own contacts (those where it
-   is A, the lower slot) oldest first (its list holds them newest first,
-   so its run is reversed).  Contacts elsewhere in the world, made and
-   freed, shuffle the pool but not this order, so a scene's bits do not
-   depend on them (issue 8's determinism).  Oldest first matters: a
-   pyramid's contacts, made in key order, are then solved bottom up. */
+   is A, the lower slot) oldest first, as its list holds them.  Contacts
+   elsewhere in the world, made and freed, shuffle the pool but not this
+   order, so a scene's bits do not depend on them (issue 8's determinism).
+   Oldest first matters: a pyramid's contacts, made in key order, are then
+   solved bottom up. */
 static void ga2d__prepare_contacts(ga2d_world *w)
 {
     int slot, link;
     w->constraint_count = 0;
     for (slot = 0; slot < w->body_used; ++slot) {
-        int first = w->constraint_count, last;
         if (w->bodies[slot].type < 0) continue;
         for (link = w->bodies[slot].contact_head; link >= 0; link = w->contacts[link >> 1].next[link & 1])
             if ((link & 1) == 0 && !ga2d__add_constraint(w, link >> 1)) return;
-        for (last = w->constraint_count - 1; first < last; ++first, --last) {
-            ga2d__constraint t = w->constraints[first];
-            w->constraints[first] = w->constraints[last];
-            w->constraints[last] = t;
-        }
     }
 }
 
@@ -4573,7 +4575,7 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
         int queued = b->in_move;
         b->island = i;
         b->move_index = -1;
-        b->contact_head = -1;
+        b->contact_head = b->contact_tail = -1;
         b->in_move = 0;
         if (b->type < 0) continue;
         if (!ga2d__get(r, &box, sizeof box) || !ga2d__snap_box_ok(box)) return 0;
