@@ -2097,8 +2097,127 @@ typedef struct ga2d__constraint {
     ga2d_real inv_ma, inv_ia, inv_mb, inv_ib;
     int to_static;               /* the other body cannot move: stiffer */
     int count;
+    int lane;                    /* group * 4 + lane in the four-lane solver */
     ga2d__cpoint p[2];
 } ga2d__constraint;
+
+/* The solver's innermost helpers run hundreds of thousands of times a
+   step; inlined into its passes they cost 10 % less (large_pyramid). */
+#if defined(__GNUC__) || defined(__clang__)
+#define GA2D__HOT inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define GA2D__HOT __forceinline
+#else
+#define GA2D__HOT inline
+#endif
+
+/* ------------------------------------------------- the four-lane solver */
+/* The velocity passes (warm start, solve, relax) run on groups of four
+   constraints that share no body they move, one constraint per lane, so
+   each pass is four independent sequential-impulse updates at once.  A
+   group is solved as a whole and the groups one after the other: still
+   Gauss-Seidel, in an order close to the canonical one.  Under gcc and
+   clang a lane set is a vector of the compiler's (SSE2 on x86-64, NEON on
+   arm64); elsewhere, or with GA2D_NO_SIMD, a struct of four.  Each lane
+   computes exactly what the scalar code would, operation for operation, so
+   both give the same bits (the determinism check builds both). */
+#ifdef GA2D_DOUBLE
+#define GA2D__LANES 2
+#else
+#define GA2D__LANES 4
+#endif
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(GA2D_NO_SIMD)
+/* 16 bytes, the one width every 64-bit target has; aligned to one element,
+   as a user's allocator owes no more */
+#ifdef GA2D_DOUBLE
+typedef double ga2d__w __attribute__((vector_size(16), aligned(8)));
+typedef int64_t ga2d__wmask __attribute__((vector_size(16), aligned(8)));
+#else
+typedef float ga2d__w __attribute__((vector_size(16), aligned(4)));
+typedef int32_t ga2d__wmask __attribute__((vector_size(16), aligned(4)));
+#endif
+#define GA2D__LANE(x, i) (x)[i]
+#define GA2D__WINIT(...) {__VA_ARGS__}
+static GA2D__HOT ga2d__w ga2d__wadd(ga2d__w a, ga2d__w b) { return a + b; }
+static GA2D__HOT ga2d__w ga2d__wsub(ga2d__w a, ga2d__w b) { return a - b; }
+static GA2D__HOT ga2d__w ga2d__wmul(ga2d__w a, ga2d__w b) { return a * b; }
+static GA2D__HOT ga2d__w ga2d__wdiv(ga2d__w a, ga2d__w b) { return a / b; }
+static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a > b); }
+/* m ? a : b, lane by lane (m all ones or all zeros) */
+static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
+{
+    return (ga2d__w)((m & (ga2d__wmask)a) | (~m & (ga2d__wmask)b));
+}
+#else
+typedef struct ga2d__w { ga2d_real lane[GA2D__LANES]; } ga2d__w;
+typedef struct ga2d__wmask { int lane[GA2D__LANES]; } ga2d__wmask;
+#define GA2D__LANE(x, i) (x).lane[i]
+#define GA2D__WINIT(...) {{__VA_ARGS__}}
+#define GA2D__WOP(name, op)                                                                                            \
+    static GA2D__HOT ga2d__w name(ga2d__w a, ga2d__w b)                                                               \
+    {                                                                                                                  \
+        int i;                                                                                                         \
+        for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] op b.lane[i];                                                   \
+        return a;                                                                                                      \
+    }
+GA2D__WOP(ga2d__wadd, +)
+GA2D__WOP(ga2d__wsub, -)
+GA2D__WOP(ga2d__wmul, *)
+GA2D__WOP(ga2d__wdiv, /)
+#undef GA2D__WOP
+static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b)
+{
+    ga2d__wmask m;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] > b.lane[i];
+    return m;
+}
+static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
+{
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = m.lane[i] ? a.lane[i] : b.lane[i];
+    return a;
+}
+#endif
+
+static GA2D__HOT ga2d__w ga2d__wsplat(ga2d_real x)
+{
+    ga2d__w r;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) GA2D__LANE(r, i) = x;
+    return r;
+}
+
+/* a x + b y: the dot product of the lanes' vectors (a, b) and (x, y) */
+static GA2D__HOT ga2d__w ga2d__wdot(ga2d__w a, ga2d__w b, ga2d__w x, ga2d__w y)
+{
+    return ga2d__wadd(ga2d__wmul(a, x), ga2d__wmul(b, y));
+}
+
+/* A body as the passes see it: velocity, spin, and its motion since the
+   step began (displacement dp, turn dq = q q0~).  Bodies that do not move
+   keep v, w and a zero motion; one slot past the last body is a dummy for
+   empty lanes. */
+typedef struct ga2d__sbody {
+    ga2d_real vx, vy, w, pad, dpx, dpy, dqc, dqs;
+} ga2d__sbody;
+
+/* Four constraints, lane by lane: the bodies (the dummy slot in an empty
+   lane), which of them the lane moves, its constraint's index, and the
+   constraint's data.  A one-point contact's second point and an empty lane
+   have zero masses, so their impulses stay zero. */
+typedef struct ga2d__group {
+    int a[GA2D__LANES], b[GA2D__LANES], con[GA2D__LANES];
+    int moves[GA2D__LANES]; /* bit 0: the lane moves A, bit 1: B */
+    int count;              /* lanes in use */
+    int skip;               /* when full: a later group to look at first */
+    ga2d__w nx, ny, friction, ima, iia, imb, iib;
+    ga2d__w dx, dy;         /* centre B - centre A when the step began */
+    ga2d__w soft_rate, soft_mass, soft_impulse;
+    ga2d__w rax[2], ray[2], rbx[2], rby[2], sep[2];
+    ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
+    ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
+} ga2d__group;
 
 /* ======================================================== world and bodies */
 /* A body slot.  State is kept at the centre of mass (position `center`,
@@ -2181,6 +2300,12 @@ struct ga2d_world {
     int error_slot;              /* the first body it contained, or -1 */
     ga2d__constraint *constraints;
     int constraint_count, constraint_capacity;
+    ga2d__group *groups;         /* the four-lane solver's, live during the substeps */
+    int group_count, group_capacity;
+    ga2d__sbody *sbodies;        /* its body state, by slot (one dummy past the end) */
+    int sbody_capacity;
+    int *last_group;             /* by slot: the last group that moves the body */
+    int last_group_capacity;
     int *wake_queue;             /* one entry per body slot */
     int wake_capacity;
 };
@@ -2211,6 +2336,7 @@ static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__bo
 
 static void ga2d__wake(ga2d_world *w, int slot);
 static void ga2d__put_to_sleep(ga2d_world *w, int slot);
+static void ga2d__lane_clear(ga2d_world *w, int lane);
 
 /* ------------------------------------------------------------- pair set */
 /* Which body pairs have a contact: open addressing, linear probing, kept
@@ -2746,6 +2872,9 @@ GA2D_API void ga2d_world_destroy(ga2d_world *w)
     ga2d__free(&a, w->begin_events, (size_t)w->begin_capacity * sizeof *w->begin_events);
     ga2d__free(&a, w->end_events, (size_t)w->end_capacity * sizeof *w->end_events);
     ga2d__free(&a, w->constraints, (size_t)w->constraint_capacity * sizeof *w->constraints);
+    ga2d__free(&a, w->groups, (size_t)w->group_capacity * sizeof *w->groups);
+    ga2d__free(&a, w->sbodies, (size_t)w->sbody_capacity * sizeof *w->sbodies);
+    ga2d__free(&a, w->last_group, (size_t)w->last_group_capacity * sizeof *w->last_group);
     ga2d__free(&a, w->wake_queue, (size_t)w->wake_capacity * sizeof *w->wake_queue);
     ga2d__free(&a, w, sizeof *w);
 }
@@ -3561,6 +3690,7 @@ static void ga2d__contain(ga2d_world *w, int slot)
             ga2d__constraint *c = &w->constraints[i];
             if (c->a != slot && c->b != slot) continue;
             for (k = 0; k < c->count; ++k) c->p[k].normal_impulse = c->p[k].tangent_impulse = c->p[k].restitution_impulse = 0;
+            if (w->group_count > 0) ga2d__lane_clear(w, c->lane);
         }
     }
     if (w->step_error == GA2D_OK) w->step_error = GA2D_ERR_NOT_FINITE;
@@ -3771,15 +3901,6 @@ static ga2d__soft ga2d__make_soft(ga2d_real hertz, ga2d_real zeta, ga2d_real h)
     return s;
 }
 
-/* The solver's innermost helpers run hundreds of thousands of times a
-   step; inlined into its passes they cost 10 % less (large_pyramid). */
-#if defined(__GNUC__) || defined(__clang__)
-#define GA2D__HOT inline __attribute__((always_inline))
-#elif defined(_MSC_VER)
-#define GA2D__HOT __forceinline
-#else
-#define GA2D__HOT inline
-#endif
 
 /* The paper's impulse denominator for a direction d at anchors ra, rb:
    1/m_a + 1/m_b - (r_a ^ d)^2 / I_a - (r_b ^ d)^2 / I_b, where the
@@ -3934,28 +4055,141 @@ static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__constraint *c, const ga2d
     return p->separation + ga2d_dot(ga2d_vec_sub(db, da), c->normal);
 }
 
+
+/* The lanes' bodies in registers. */
+typedef struct ga2d__wbody { ga2d__w vx, vy, w, dpx, dpy, qc, qs; } ga2d__wbody;
+/* A point's anchors now, relative to each centre. */
+typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
+
+/* The lanes' bodies, field by field (each vector made whole at once: the
+   compiler then sees every lane written). */
+#ifdef GA2D_DOUBLE
+#define GA2D__GATHER(s, slot, f) ga2d__wset((s)[(slot)[0]].f, (s)[(slot)[1]].f)
+static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b)
+{
+    ga2d__w r = GA2D__WINIT(a, b);
+    return r;
+}
+#else
+#define GA2D__GATHER(s, slot, f) ga2d__wset((s)[(slot)[0]].f, (s)[(slot)[1]].f, (s)[(slot)[2]].f, (s)[(slot)[3]].f)
+static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b, ga2d_real c, ga2d_real d)
+{
+    ga2d__w r = GA2D__WINIT(a, b, c, d);
+    return r;
+}
+#endif
+
+static GA2D__HOT void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__wbody *o)
+{
+    o->vx = GA2D__GATHER(s, slot, vx);
+    o->vy = GA2D__GATHER(s, slot, vy);
+    o->w = GA2D__GATHER(s, slot, w);
+    o->dpx = GA2D__GATHER(s, slot, dpx);
+    o->dpy = GA2D__GATHER(s, slot, dpy);
+    o->qc = GA2D__GATHER(s, slot, dqc);
+    o->qs = GA2D__GATHER(s, slot, dqs);
+}
+
+/* Velocities back, for the bodies the lanes move (`bit` 1: A, 2: B); a
+   body a lane does not move may be another lane's too, and keeps its own. */
+static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, const int *moves, int bit, const ga2d__wbody *o)
+{
+    int l;
+    for (l = 0; l < GA2D__LANES; ++l) {
+        ga2d__sbody *b = &s[slot[l]];
+        if (!(moves[l] & bit)) continue;
+        b->vx = GA2D__LANE(o->vx, l);
+        b->vy = GA2D__LANE(o->vy, l);
+        b->w = GA2D__LANE(o->w, l);
+    }
+}
+
+/* ga2d__point_now for four lanes (its comment says why): the anchors now
+   and the separation now of point k. */
+static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2d__wbody *A, const ga2d__wbody *B,
+                                          ga2d__wanchors *r)
+{
+    ga2d__w ra1x = ga2d__wsub(ga2d__wmul(A->qc, g->rax[k]), ga2d__wmul(A->qs, g->ray[k]));
+    ga2d__w ra1y = ga2d__wadd(ga2d__wmul(A->qs, g->rax[k]), ga2d__wmul(A->qc, g->ray[k]));
+    ga2d__w rb1x = ga2d__wsub(ga2d__wmul(B->qc, g->rbx[k]), ga2d__wmul(B->qs, g->rby[k]));
+    ga2d__w rb1y = ga2d__wadd(ga2d__wmul(B->qs, g->rbx[k]), ga2d__wmul(B->qc, g->rby[k]));
+    ga2d__w dx = ga2d__wadd(g->dx, ga2d__wsub(B->dpx, A->dpx)), dy = ga2d__wadd(g->dy, ga2d__wsub(B->dpy, A->dpy));
+    ga2d__w dax = ga2d__wadd(A->dpx, ga2d__wsub(ra1x, g->rax[k])), day = ga2d__wadd(A->dpy, ga2d__wsub(ra1y, g->ray[k]));
+    ga2d__w dbx = ga2d__wadd(B->dpx, ga2d__wsub(rb1x, g->rbx[k])), dby = ga2d__wadd(B->dpy, ga2d__wsub(rb1y, g->rby[k]));
+    ga2d__w half = ga2d__wsplat(GA2D__R(0.5));
+    r->ax = ga2d__wadd(ra1x, ga2d__wmul(ga2d__wsub(ga2d__wadd(dx, rb1x), ra1x), half));
+    r->ay = ga2d__wadd(ra1y, ga2d__wmul(ga2d__wsub(ga2d__wadd(dy, rb1y), ra1y), half));
+    r->bx = ga2d__wsub(r->ax, dx);
+    r->by = ga2d__wsub(r->ay, dy);
+    return ga2d__wadd(g->sep[k], ga2d__wdot(ga2d__wsub(dbx, dax), ga2d__wsub(dby, day), g->nx, g->ny));
+}
+
+/* The relative velocity of the anchor points along (ux, uy), as
+   ga2d__relative_velocity. */
+static GA2D__HOT ga2d__w ga2d__wrelative(const ga2d__wbody *A, const ga2d__wbody *B, const ga2d__wanchors *r, ga2d__w ux,
+                                         ga2d__w uy)
+{
+    ga2d__w rvx = ga2d__wsub(ga2d__wsub(B->vx, ga2d__wmul(r->by, B->w)), ga2d__wsub(A->vx, ga2d__wmul(r->ay, A->w)));
+    ga2d__w rvy = ga2d__wsub(ga2d__wadd(B->vy, ga2d__wmul(r->bx, B->w)), ga2d__wadd(A->vy, ga2d__wmul(r->ax, A->w)));
+    return ga2d__wdot(rvx, rvy, ux, uy);
+}
+
+/* The impulse lambda (ux, uy) at the anchors, as ga2d__apply_impulse. */
+static GA2D__HOT void ga2d__wapply(const ga2d__group *g, ga2d__wbody *A, ga2d__wbody *B, const ga2d__wanchors *r,
+                                   ga2d__w px, ga2d__w py)
+{
+    A->vx = ga2d__wsub(A->vx, ga2d__wmul(px, g->ima));
+    A->vy = ga2d__wsub(A->vy, ga2d__wmul(py, g->ima));
+    A->w = ga2d__wsub(A->w, ga2d__wmul(g->iia, ga2d__wsub(ga2d__wmul(r->ax, py), ga2d__wmul(r->ay, px))));
+    B->vx = ga2d__wadd(B->vx, ga2d__wmul(px, g->imb));
+    B->vy = ga2d__wadd(B->vy, ga2d__wmul(py, g->imb));
+    B->w = ga2d__wadd(B->w, ga2d__wmul(g->iib, ga2d__wsub(ga2d__wmul(r->bx, py), ga2d__wmul(r->by, px))));
+}
+
+/* ga2d__effective_mass for four lanes, zero where the point is absent. */
+static GA2D__HOT ga2d__w ga2d__weffective_mass(const ga2d__group *g, int k, const ga2d__wanchors *r, ga2d__w ux, ga2d__w uy)
+{
+    ga2d__w wa = ga2d__wsub(ga2d__wmul(r->ax, uy), ga2d__wmul(r->ay, ux));
+    ga2d__w wb = ga2d__wsub(ga2d__wmul(r->bx, uy), ga2d__wmul(r->by, ux));
+    ga2d__w kk = ga2d__wadd(ga2d__wadd(ga2d__wadd(g->ima, g->imb), ga2d__wmul(ga2d__wmul(g->iia, wa), wa)),
+                            ga2d__wmul(ga2d__wmul(g->iib, wb), wb));
+    ga2d__w zero = ga2d__wsplat(0), one = ga2d__wsplat(1);
+    ga2d__wmask pos = ga2d__wgt(kk, zero);
+    return ga2d__wmul(ga2d__wsel(pos, ga2d__wdiv(one, ga2d__wsel(pos, kk, one)), zero), g->has[k]);
+}
+
+/* x clamped to [lo, hi] lane by lane, as the scalar x > hi ? hi : (x < lo ? lo : x) */
+static GA2D__HOT ga2d__w ga2d__wclamp(ga2d__w x, ga2d__w lo, ga2d__w hi)
+{
+    return ga2d__wsel(ga2d__wgt(x, hi), hi, ga2d__wsel(ga2d__wgt(lo, x), lo, x));
+}
+
+/* Each point's accumulated impulses applied again at its anchors now. */
 static void ga2d__warm_start(ga2d_world *w)
 {
-    int i, k;
-    ga2d__refresh_turns(w);
-    for (i = 0; i < w->constraint_count; ++i) {
-        ga2d__constraint *c = &w->constraints[i];
-        ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
-        ga2d_vec t = ga2d__tangent(c->normal);
-        for (k = 0; k < c->count; ++k) {
-            ga2d__cpoint *p = &c->p[k];
-            ga2d_vec P = ga2d_vec_add(ga2d_vec_scale(c->normal, p->normal_impulse), ga2d_vec_scale(t, p->tangent_impulse));
-            ga2d_vec ra, rb;
-            ga2d__point_now(c, a, b, p, &ra, &rb);
-            ga2d__apply_impulse(c, a, b, ra, rb, P);
+    int gi, k;
+    for (gi = 0; gi < w->group_count; ++gi) {
+        const ga2d__group *g = &w->groups[gi];
+        ga2d__wbody A, B;
+        ga2d__wload(w->sbodies, g->a, &A);
+        ga2d__wload(w->sbodies, g->b, &B);
+        for (k = 0; k < 2; ++k) {
+            ga2d__wanchors r;
+            /* tangent (ny, -nx) */
+            ga2d__w px = ga2d__wadd(ga2d__wmul(g->nx, g->nimp[k]), ga2d__wmul(g->ny, g->timp[k]));
+            ga2d__w py = ga2d__wsub(ga2d__wmul(g->ny, g->nimp[k]), ga2d__wmul(g->nx, g->timp[k]));
+            ga2d__wpoint_now(g, k, &A, &B, &r);
+            ga2d__wapply(g, &A, &B, &r, px, py);
         }
+        ga2d__wstore(w->sbodies, g->a, g->moves, 1, &A);
+        ga2d__wstore(w->sbodies, g->b, g->moves, 2, &B);
     }
 }
 
 enum { GA2D__BIAS_NONE, GA2D__BIAS_SOFT, GA2D__BIAS_BAUMGARTE };
 
-/* One pass of sequential impulses over every constraint: for each point,
-   the normal impulse that makes the approach speed (plus the bias) zero,
+/* One pass of sequential impulses over every group: for each point, the
+   normal impulse that makes the approach speed (plus the bias) zero,
    accumulated and kept >= 0; then Coulomb friction, the tangent impulse
    accumulated within +-mu times the point's normal impulse.  A point still
    apart (separation s > 0) may approach by s in this substep: that is the
@@ -3963,60 +4197,247 @@ enum { GA2D__BIAS_NONE, GA2D__BIAS_SOFT, GA2D__BIAS_BAUMGARTE };
 static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
 {
     ga2d_real inv_h = 1 / h, push = w->def.contact_push_max_velocity * w->def.length_units_per_meter;
-    ga2d_real hz = w->def.contact_hertz < GA2D__R(0.25) * inv_h ? w->def.contact_hertz : GA2D__R(0.25) * inv_h;
-    ga2d__soft soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
-    ga2d__soft stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
-    int i, k, friction = w->def.enable_friction;
+    const ga2d__w zero = ga2d__wsplat(0), one = ga2d__wsplat(1), winv_h = ga2d__wsplat(inv_h);
+    const ga2d__w low = ga2d__wsplat(-push), slop = ga2d__wsplat(w->slop), nslop = ga2d__wsplat(-w->slop);
+    const ga2d__w baumgarte = ga2d__wsplat(GA2D__R(0.2) * inv_h);
+    int gi, k, friction = w->def.enable_friction;
     /* NGS moves bodies by up to 0.2 m a pass, so a point's anchors can end
        far from where its masses were computed; the masses must follow, or
        an impulse several times too large for its lever arm is applied and
        the passes diverge (deep overlaps of small bodies reached NaN) */
     int fresh = w->def.solver == GA2D_SOLVER_PGS_NGS;
-    ga2d__refresh_turns(w);
-    for (i = 0; i < w->constraint_count; ++i) {
-        ga2d__constraint *c = &w->constraints[i];
-        ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
-        const ga2d__soft *sf = c->to_static ? &stiff : &soft;
-        ga2d_vec t = ga2d__tangent(c->normal);
-        ga2d_vec ra[2], rb[2];
-        for (k = 0; k < c->count; ++k) {
-            ga2d__cpoint *p = &c->p[k];
-            ga2d_real s = ga2d__point_now(c, a, b, p, &ra[k], &rb[k]), bias = 0, mass_scale = 1, impulse_scale = 0;
-            ga2d_real vn, lambda, total;
-            if (s > 0) {
-                bias = s * inv_h;
-            } else if (bias_kind == GA2D__BIAS_SOFT) {
-                bias = sf->bias_rate * s;
-                bias = bias < -push ? -push : bias;
-                mass_scale = sf->mass_scale;
-                impulse_scale = sf->impulse_scale;
-            } else if (bias_kind == GA2D__BIAS_BAUMGARTE && s < -w->slop) {
-                bias = GA2D__R(0.2) * inv_h * (s + w->slop);
-                bias = bias < -push ? -push : bias;
+    for (gi = 0; gi < w->group_count; ++gi) {
+        ga2d__group *g = &w->groups[gi];
+        ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
+        ga2d__wbody A, B;
+        ga2d__wanchors r[2];
+        ga2d__wload(w->sbodies, g->a, &A);
+        ga2d__wload(w->sbodies, g->b, &B);
+        for (k = 0; k < 2; ++k) {
+            ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k]);
+            ga2d__wmask apart = ga2d__wgt(s, zero);
+            ga2d__w bias = zero, mass_scale = one, impulse_scale = zero, vn, lambda, total;
+            if (bias_kind == GA2D__BIAS_SOFT) {
+                bias = ga2d__wmul(g->soft_rate, s);
+                bias = ga2d__wsel(ga2d__wgt(low, bias), low, bias);
+                mass_scale = ga2d__wsel(apart, one, g->soft_mass);
+                impulse_scale = ga2d__wsel(apart, zero, g->soft_impulse);
+            } else if (bias_kind == GA2D__BIAS_BAUMGARTE) {
+                bias = ga2d__wmul(baumgarte, ga2d__wadd(s, slop));
+                bias = ga2d__wsel(ga2d__wgt(low, bias), low, bias);
+                bias = ga2d__wsel(ga2d__wgt(nslop, s), bias, zero);
             }
-            vn = ga2d_dot(ga2d__relative_velocity(a, b, ra[k], rb[k]), c->normal);
-            if (fresh) p->normal_mass = ga2d__effective_mass(c, ra[k], rb[k], c->normal);
-            lambda = -p->normal_mass * mass_scale * (vn + bias) - impulse_scale * p->normal_impulse;
-            total = p->normal_impulse + lambda;
-            total = total > 0 ? total : 0;
-            lambda = total - p->normal_impulse;
-            p->normal_impulse = total;
-            ga2d__apply_impulse(c, a, b, ra[k], rb[k], ga2d_vec_scale(c->normal, lambda));
+            bias = ga2d__wsel(apart, ga2d__wmul(s, winv_h), bias);
+            vn = ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny);
+            if (fresh) g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
+            lambda = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(ga2d__wmul(g->nmass[k], mass_scale), ga2d__wadd(vn, bias)),
+                                                 ga2d__wmul(impulse_scale, g->nimp[k])));
+            total = ga2d__wadd(g->nimp[k], lambda);
+            total = ga2d__wsel(ga2d__wgt(total, zero), total, zero);
+            lambda = ga2d__wsub(total, g->nimp[k]);
+            g->nimp[k] = total;
+            ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda), ga2d__wmul(g->ny, lambda));
         }
-        if (!friction) continue;
-        for (k = 0; k < c->count; ++k) {
-            ga2d__cpoint *p = &c->p[k];
-            ga2d_real vt = ga2d_dot(ga2d__relative_velocity(a, b, ra[k], rb[k]), t), lambda, cap;
-            if (fresh) p->tangent_mass = ga2d__effective_mass(c, ra[k], rb[k], t);
-            lambda = -p->tangent_mass * vt;
-            cap = c->friction * p->normal_impulse;
-            ga2d_real total = p->tangent_impulse + lambda;
-            total = total > cap ? cap : (total < -cap ? -cap : total);
-            lambda = total - p->tangent_impulse;
-            p->tangent_impulse = total;
-            ga2d__apply_impulse(c, a, b, ra[k], rb[k], ga2d_vec_scale(t, lambda));
+        for (k = 0; friction && k < 2; ++k) {
+            ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty), lambda, cap, total;
+            if (fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
+            lambda = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
+            cap = ga2d__wmul(g->friction, g->nimp[k]);
+            total = ga2d__wclamp(ga2d__wadd(g->timp[k], lambda), ga2d__wsub(zero, cap), cap);
+            lambda = ga2d__wsub(total, g->timp[k]);
+            g->timp[k] = total;
+            ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, lambda), ga2d__wmul(ty, lambda));
+        }
+        ga2d__wstore(w->sbodies, g->a, g->moves, 1, &A);
+        ga2d__wstore(w->sbodies, g->b, g->moves, 2, &B);
+    }
+}
+
+/* Puts constraint ci into lane g->count of group g. */
+static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__soft *soft, const ga2d__soft *stiff)
+{
+    ga2d__constraint *c = &w->constraints[ci];
+    const ga2d__soft *sf = c->to_static ? stiff : soft;
+    int l = g->count++, k, ends[2], e;
+    g->a[l] = c->a;
+    g->b[l] = c->b;
+    g->con[l] = ci;
+    g->moves[l] = (c->inv_ma != 0 || c->inv_ia != 0) | (c->inv_mb != 0 || c->inv_ib != 0) << 1;
+    c->lane = (int)(g - w->groups) * GA2D__LANES + l;
+    GA2D__LANE(g->nx, l) = c->normal.x;
+    GA2D__LANE(g->ny, l) = c->normal.y;
+    GA2D__LANE(g->friction, l) = c->friction;
+    GA2D__LANE(g->ima, l) = c->inv_ma;
+    GA2D__LANE(g->iia, l) = c->inv_ia;
+    GA2D__LANE(g->imb, l) = c->inv_mb;
+    GA2D__LANE(g->iib, l) = c->inv_ib;
+    GA2D__LANE(g->dx, l) = w->bodies[c->b].center.x - w->bodies[c->a].center.x;
+    GA2D__LANE(g->dy, l) = w->bodies[c->b].center.y - w->bodies[c->a].center.y;
+    GA2D__LANE(g->soft_rate, l) = sf->bias_rate;
+    GA2D__LANE(g->soft_mass, l) = sf->mass_scale;
+    GA2D__LANE(g->soft_impulse, l) = sf->impulse_scale;
+    for (k = 0; k < c->count; ++k) {
+        const ga2d__cpoint *p = &c->p[k];
+        GA2D__LANE(g->rax[k], l) = p->ra.x;
+        GA2D__LANE(g->ray[k], l) = p->ra.y;
+        GA2D__LANE(g->rbx[k], l) = p->rb.x;
+        GA2D__LANE(g->rby[k], l) = p->rb.y;
+        GA2D__LANE(g->sep[k], l) = p->separation;
+        GA2D__LANE(g->has[k], l) = 1;
+        GA2D__LANE(g->nmass[k], l) = p->normal_mass;
+        GA2D__LANE(g->tmass[k], l) = p->tangent_mass;
+        GA2D__LANE(g->nimp[k], l) = p->normal_impulse;
+        GA2D__LANE(g->timp[k], l) = p->tangent_impulse;
+    }
+    /* a body the lane does not move: not gathered per pass (static or
+       asleep), it is seen as it is, at rest where the step began */
+    ends[0] = c->a;
+    ends[1] = c->b;
+    for (e = 0; e < 2; ++e) {
+        const ga2d__body *b = &w->bodies[ends[e]];
+        ga2d__sbody *s = &w->sbodies[ends[e]];
+        if (b->move_index >= 0) continue;
+        s->vx = b->v.x;
+        s->vy = b->v.y;
+        s->w = b->w;
+        s->pad = s->dpx = s->dpy = s->dqs = 0;
+        s->dqc = 1;
+    }
+}
+
+/* An empty group: every lane on the dummy slot, every mass zero. */
+static void ga2d__group_open(ga2d_world *w, ga2d__group *g)
+{
+    int l;
+    memset(g, 0, sizeof *g);
+    for (l = 0; l < GA2D__LANES; ++l) {
+        g->a[l] = g->b[l] = w->body_used;
+        g->con[l] = -1;
+    }
+}
+
+/* The first group from gi on with a free lane (or group_count): full
+   groups point past themselves, and the path is halved as it is walked. */
+static int ga2d__group_free(ga2d_world *w, int gi)
+{
+    while (gi < w->group_count && w->groups[gi].count == GA2D__LANES) {
+        int next = w->groups[gi].skip;
+        if (next < w->group_count && w->groups[next].count == GA2D__LANES) w->groups[gi].skip = w->groups[next].skip;
+        gi = next;
+    }
+    return gi;
+}
+
+/* Packs the constraints, in their canonical order, into groups of lanes
+   that share no moved body.  A constraint goes to the first group with a
+   free lane after the last group that moves either of its bodies (or to a
+   new one), so two constraints on one body are solved in their canonical
+   order: the passes give what one constraint at a time in that order
+   would, up to rounding, and the groups only find what can run side by
+   side.  A pyramid fills nearly every lane.  The solver bodies and the
+   groups are sized here (0 when out of memory). */
+static int ga2d__batch(ga2d_world *w, ga2d_real h)
+{
+    ga2d_real inv_h = 1 / h;
+    ga2d_real hz = w->def.contact_hertz < GA2D__R(0.25) * inv_h ? w->def.contact_hertz : GA2D__R(0.25) * inv_h;
+    ga2d__soft soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
+    ga2d__soft stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
+    int used = w->body_used, i;
+    int *last;
+    ga2d__sbody *dummy;
+    w->group_count = 0;
+    if (w->constraint_count == 0) return 1;
+    if (!ga2d__grow(&w->def.allocator, (void **)&w->groups, &w->group_capacity, w->constraint_count, sizeof *w->groups) ||
+        !ga2d__grow(&w->def.allocator, (void **)&w->sbodies, &w->sbody_capacity, used + 1, sizeof *w->sbodies) ||
+        !ga2d__grow(&w->def.allocator, (void **)&w->last_group, &w->last_group_capacity, used, sizeof *w->last_group)) {
+        w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    last = w->last_group;
+    for (i = 0; i < used; ++i) last[i] = -1;
+    dummy = &w->sbodies[used];
+    memset(dummy, 0, sizeof *dummy);
+    dummy->dqc = 1;
+    for (i = 0; i < w->constraint_count; ++i) {
+        const ga2d__constraint *c = &w->constraints[i];
+        int ma = c->inv_ma != 0 || c->inv_ia != 0, mb = c->inv_mb != 0 || c->inv_ib != 0, gi = 0;
+        ga2d__group *g;
+        if (ma && last[c->a] >= gi) gi = last[c->a] + 1;
+        if (mb && last[c->b] >= gi) gi = last[c->b] + 1;
+        gi = ga2d__group_free(w, gi);
+        if (gi == w->group_count) ga2d__group_open(w, &w->groups[w->group_count++]);
+        g = &w->groups[gi];
+        ga2d__lane_put(w, g, i, &soft, &stiff);
+        if (g->count == GA2D__LANES) g->skip = gi + 1;
+        if (ma) last[c->a] = gi;
+        if (mb) last[c->b] = gi;
+    }
+    return 1;
+}
+
+/* The moving bodies' velocities and motion since the step began, into
+   the solver bodies, before a run of passes. */
+static void ga2d__gather(ga2d_world *w)
+{
+    int k;
+    if (w->group_count == 0) return;
+    for (k = 0; k < w->moving_count; ++k) {
+        int slot = w->moving[k];
+        const ga2d__body *b = &w->bodies[slot];
+        ga2d__sbody *s = &w->sbodies[slot];
+        ga2d_rotor dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0));
+        s->vx = b->v.x;
+        s->vy = b->v.y;
+        s->w = b->w;
+        s->pad = 0;
+        s->dpx = b->center.x - b->center0.x;
+        s->dpy = b->center.y - b->center0.y;
+        s->dqc = dq.c;
+        s->dqs = dq.s;
+    }
+}
+
+/* ... and the velocities back after them. */
+static void ga2d__scatter(ga2d_world *w)
+{
+    int k;
+    if (w->group_count == 0) return;
+    for (k = 0; k < w->moving_count; ++k) {
+        int slot = w->moving[k];
+        ga2d__body *b = &w->bodies[slot];
+        const ga2d__sbody *s = &w->sbodies[slot];
+        if (b->type != GA2D_BODY_DYNAMIC) continue;
+        b->v = ga2d_vec_make(s->vx, s->vy);
+        b->w = s->w;
+    }
+}
+
+/* Lane `lane` (group * 4 + lane) forgets its impulses (containment). */
+static void ga2d__lane_clear(ga2d_world *w, int lane)
+{
+    ga2d__group *g = &w->groups[lane / GA2D__LANES];
+    int k;
+    for (k = 0; k < 2; ++k) {
+        GA2D__LANE(g->nimp[k], lane % GA2D__LANES) = 0;
+        GA2D__LANE(g->timp[k], lane % GA2D__LANES) = 0;
+    }
+}
+
+/* The groups' accumulated impulses back to the constraints. */
+static void ga2d__unbatch(ga2d_world *w)
+{
+    int gi, l, k;
+    for (gi = 0; gi < w->group_count; ++gi) {
+        const ga2d__group *g = &w->groups[gi];
+        for (l = 0; l < g->count; ++l) {
+            ga2d__constraint *c = &w->constraints[g->con[l]];
+            for (k = 0; k < c->count; ++k) {
+                c->p[k].normal_impulse = GA2D__LANE(g->nimp[k], l);
+                c->p[k].tangent_impulse = GA2D__LANE(g->timp[k], l);
+            }
         }
     }
+    w->group_count = 0;
 }
 
 /* Non-linear Gauss-Seidel: moves the bodies apart directly, 0.2 of the
@@ -4286,28 +4707,36 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     ga2d__prepare_contacts(w);
     ga2d__remember_start(w);
     if (w->def.enable_restitution) ga2d__restitute(w, dt);
+    ga2d__batch(w, h);
     t0 = w->time;
     for (s = 0; s < w->def.substeps; ++s) {
         double t = t0 + (double)h * s; /* no drift from summing h */
         ga2d__integrate_velocities(w, h, t);
+        ga2d__gather(w);
         if (w->def.enable_warm_starting) ga2d__warm_start(w);
         switch (w->def.solver) {
         case GA2D_SOLVER_PGS_BAUMGARTE:
             for (it = 0; it < w->def.velocity_iterations; ++it) ga2d__solve_contacts(w, h, GA2D__BIAS_BAUMGARTE);
+            ga2d__scatter(w);
             ga2d__integrate_positions(w, h, t);
             break;
         case GA2D_SOLVER_PGS_NGS:
             for (it = 0; it < w->def.velocity_iterations; ++it) ga2d__solve_contacts(w, h, GA2D__BIAS_NONE);
+            ga2d__scatter(w);
             ga2d__integrate_positions(w, h, t);
             for (it = 0; it < w->def.position_iterations; ++it) ga2d__solve_positions(w);
             break;
         default:
             ga2d__solve_contacts(w, h, GA2D__BIAS_SOFT);
+            ga2d__scatter(w);
             ga2d__integrate_positions(w, h, t);
+            ga2d__gather(w);
             ga2d__solve_contacts(w, h, GA2D__BIAS_NONE); /* relax */
+            ga2d__scatter(w);
             break;
         }
     }
+    ga2d__unbatch(w);
     for (k = 0; k < w->moving_count; ++k) { /* positions too (RK4's own stages, huge coordinates) */
         const ga2d__body *b = &w->bodies[w->moving[k]];
         /* and velocities: a NaN impulse from a contained neighbour's
