@@ -87,9 +87,19 @@ $(BUILD)/readme/quickstart: $(BUILD)/readme/quickstart.c $(HEADER)
 
 # Determinism (issue 8): the mixed scene of tests/determinism_scene.h must
 # hash the same in every build of one precision: gcc and clang, C and C++,
-# -O0, -O2 and -O3 (all with -ffp-contract=off; never -ffast-math).
-DET_VARIANTS := gcc-O0 gcc-O2 gcc-O3 clang-O0 clang-O3 gxx-O2 clangxx-O2
+# -O0, -O2 and -O3 (all with -ffp-contract=off; never -ffast-math), and the
+# solver's lanes as 16-byte compiler vectors, 32-byte ones (AVX2) or, with
+# GA2D_NO_SIMD, plain structs.
+DET_VARIANTS := gcc-O0 gcc-O2 gcc-O3 clang-O0 clang-O3 gxx-O2 clangxx-O2 gccnosimd-O2 clangnosimd-O3
 DET_CC_gcc     := gcc -std=c99
+DET_CC_gccnosimd   := gcc -std=c99 -DGA2D_NO_SIMD
+DET_CC_clangnosimd := clang -std=c99 -DGA2D_NO_SIMD
+# 8 lanes where the processor has AVX2: the lane count changes no bit either
+ifeq ($(shell grep -qw avx2 /proc/cpuinfo 2>/dev/null && echo yes),yes)
+DET_VARIANTS += gccavx2-O2 clangavx2-O3
+endif
+DET_CC_gccavx2     := gcc -std=c99 -mavx2
+DET_CC_clangavx2   := clang -std=c99 -mavx2
 DET_CC_clang   := clang -std=c99
 DET_CC_gxx     := g++ -std=c++11 -x c++
 DET_CC_clangxx := clang++ -std=c++11 -x c++

@@ -1796,6 +1796,16 @@ typedef struct ga2d__closest {
     ga2d_vec on_edge;
 } ga2d__closest;
 
+/* |v| as sqrt(x^2 + y^2) where that neither overflows nor loses bits to
+   underflow (within one rounding of the scaled ga2d_vec_length, at a
+   fraction of its cost); the scaled one elsewhere. */
+static ga2d_real ga2d__length(ga2d_vec v)
+{
+    ga2d_real l2 = v.x * v.x + v.y * v.y;
+    if (l2 > GA2D__R(1e-30) && l2 < GA2D__R(1e30)) return GA2D__SQRT(l2);
+    return ga2d_vec_length(v);
+}
+
 static ga2d__closest ga2d__closest_to_edges(const ga2d__hull *pv, const ga2d__hull *pe, ga2d_real tie)
 {
     ga2d__closest c;
@@ -1810,13 +1820,16 @@ static ga2d__closest ga2d__closest_to_edges(const ga2d__hull *pv, const ga2d__hu
         ga2d_vec e = ga2d_vec_sub(pe->v[j2], pe->v[j]);
         ga2d_real ee = ga2d_dot(e, e);
         for (i = 0; i < pv->count; ++i) {
-            ga2d_real t = ga2d_dot(ga2d_vec_sub(pv->v[i], pe->v[j]), e) / ee, d;
+            ga2d_real t = ga2d_dot(ga2d_vec_sub(pv->v[i], pe->v[j]), e), d;
             int end = -1;
             ga2d_vec q;
-            if (t <= 0) { t = 0; end = j; }
-            else if (t >= 1) { t = 1; end = j2; }
+            /* no nearer than the edge's line: a pair farther than that
+               from the best so far can neither win nor tie */
+            if (GA2D__FABS(ga2d_dot(pe->n[j], ga2d_vec_sub(pv->v[i], pe->v[j]))) > c.dist + tie) continue;
+            if (t <= 0) { t = 0; end = j; } /* ee > 0: the sign is t/ee's */
+            else if ((t /= ee) >= 1) { t = 1; end = j2; }
             q = ga2d_vec_add(pe->v[j], ga2d_vec_scale(e, t));
-            d = ga2d_vec_length(ga2d_vec_sub(pv->v[i], q));
+            d = ga2d__length(ga2d_vec_sub(pv->v[i], q));
             /* nearer by more than `tie` wins; within it, the edge that
                faces the vertex best (a corner is as near to both of its
                edges, and only one of them faces the gap) */
@@ -1914,9 +1927,10 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
         B.n[j] = ga2d_rotate(xf.q, pb->normals[j]);
     }
     sep_a = ga2d__max_separation(&A, &B, &edge_a);
-    sep_b = ga2d__max_separation(&B, &A, &edge_b);
     m->normal = ga2d_rotate(xa.q, A.n[edge_a]);
-    if (sep_a > margin || sep_b > margin) return 0;
+    if (sep_a > margin) return 0; /* apart along one of A's normals: B's need not be tried */
+    sep_b = ga2d__max_separation(&B, &A, &edge_b);
+    if (sep_b > margin) return 0;
 
     flip = sep_b > sep_a + GA2D__R(0.1) * slop;
     ref = flip ? &B : &A;
@@ -2121,20 +2135,24 @@ typedef struct ga2d__constraint {
    arm64); elsewhere, or with GA2D_NO_SIMD, a struct of four.  Each lane
    computes exactly what the scalar code would, operation for operation, so
    both give the same bits (the determinism check builds both). */
-#ifdef GA2D_DOUBLE
-#define GA2D__LANES 2
+/* 16 bytes, the width every 64-bit target has; 32 where the compiler is
+   told of AVX (-mavx2, -march=native).  The width changes no bit of the
+   results: constraints that share no moved body commute exactly, and the
+   groups keep every body's own constraints in order. */
+#if defined(__AVX__) && !defined(GA2D_NO_SIMD)
+#define GA2D__BYTES 32
 #else
-#define GA2D__LANES 4
+#define GA2D__BYTES 16
 #endif
+#define GA2D__LANES (GA2D__BYTES / (int)sizeof(ga2d_real))
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(GA2D_NO_SIMD)
-/* 16 bytes, the one width every 64-bit target has; aligned to one element,
-   as a user's allocator owes no more */
+/* aligned to one element, as a user's allocator owes no more */
 #ifdef GA2D_DOUBLE
-typedef double ga2d__w __attribute__((vector_size(16), aligned(8)));
-typedef int64_t ga2d__wmask __attribute__((vector_size(16), aligned(8)));
+typedef double ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(8)));
+typedef int64_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(8)));
 #else
-typedef float ga2d__w __attribute__((vector_size(16), aligned(4)));
-typedef int32_t ga2d__wmask __attribute__((vector_size(16), aligned(4)));
+typedef float ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(4)));
+typedef int32_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(4)));
 #endif
 #define GA2D__LANE(x, i) (x)[i]
 #define GA2D__WINIT(...) {__VA_ARGS__}
@@ -2214,7 +2232,8 @@ typedef struct ga2d__group {
     ga2d__w nx, ny, friction, ima, iia, imb, iib;
     ga2d__w dx, dy;         /* centre B - centre A when the step began */
     ga2d__w soft_rate, soft_mass, soft_impulse;
-    ga2d__w rax[2], ray[2], rbx[2], rby[2], sep[2];
+    ga2d__w rax[2], ray[2], rbx[2], rby[2];
+    ga2d__w adjust[2];      /* start separation - (d0 + rB - rA).n */
     ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
 } ga2d__group;
@@ -2659,7 +2678,7 @@ static void ga2d__update_contacts(ga2d_world *w)
         {
             /* keep points as far apart as the pair can close in one step:
                speculative points only let bodies approach up to the gap */
-            ga2d_real reach = ga2d_vec_length(ga2d_vec_sub(b->v, a->v)) + GA2D__FABS(a->w) * a->extent +
+            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->v, a->v)) + GA2D__FABS(a->w) * a->extent +
                               GA2D__FABS(b->w) * b->extent;
             ga2d__collide(&a->polygon, ga2d__body_xf(a), &b->polygon, ga2d__body_xf(b), w->slop,
                           w->speculative + reach * w->step_dt, &m);
@@ -3950,6 +3969,7 @@ static int ga2d__add_constraint(ga2d_world *w, int ci)
     const ga2d__contact *ct = &w->contacts[ci];
     const ga2d__body *a, *b;
     ga2d__constraint *c;
+    ga2d_vec ca, cb;
     int i;
     if (!ct->touching) return 1;
     a = &w->bodies[ct->a];
@@ -3973,13 +3993,15 @@ static int ga2d__add_constraint(ga2d_world *w, int ci)
     c->inv_ib = b->awake && b->type == GA2D_BODY_DYNAMIC ? b->inv_inertia : 0;
     c->to_static = c->inv_ma == 0 || c->inv_mb == 0;
     c->count = ct->manifold.count;
+    /* anchors from the centres, taken from the origin-relative ones so
+       that no large coordinates are subtracted */
+    ca = ga2d_rotate(a->q, a->local_center);
+    cb = ga2d_rotate(b->q, b->local_center);
     for (i = 0; i < c->count; ++i) {
         const ga2d_manifold_point *mp = &ct->manifold.points[i];
         ga2d__cpoint *p = &c->p[i];
-        /* anchors from the centres, taken from the origin-relative ones
-           so that no large coordinates are subtracted */
-        p->ra = ga2d_vec_sub(mp->anchor_a, ga2d_rotate(a->q, a->local_center));
-        p->rb = ga2d_vec_sub(mp->anchor_b, ga2d_rotate(b->q, b->local_center));
+        p->ra = ga2d_vec_sub(mp->anchor_a, ca);
+        p->rb = ga2d_vec_sub(mp->anchor_b, cb);
         p->separation = mp->separation;
         p->normal_mass = ga2d__effective_mass(c, p->ra, p->rb, c->normal);
         p->tangent_mass = ga2d__effective_mass(c, p->ra, p->rb, ga2d__tangent(c->normal));
@@ -4063,18 +4085,30 @@ typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
 
 /* The lanes' bodies, field by field (each vector made whole at once: the
    compiler then sees every lane written). */
-#ifdef GA2D_DOUBLE
-#define GA2D__GATHER(s, slot, f) ga2d__wset((s)[(slot)[0]].f, (s)[(slot)[1]].f)
-static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b)
+#define GA2D__G(s, slot, f, i) (s)[(slot)[i]].f
+#if GA2D__BYTES == 32 && !defined(GA2D_DOUBLE)
+#define GA2D__GATHER(s, slot, f)                                                                                       \
+    ga2d__wset(GA2D__G(s, slot, f, 0), GA2D__G(s, slot, f, 1), GA2D__G(s, slot, f, 2), GA2D__G(s, slot, f, 3),          \
+               GA2D__G(s, slot, f, 4), GA2D__G(s, slot, f, 5), GA2D__G(s, slot, f, 6), GA2D__G(s, slot, f, 7))
+static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b, ga2d_real c, ga2d_real d, ga2d_real e, ga2d_real f,
+                                    ga2d_real g, ga2d_real h)
 {
-    ga2d__w r = GA2D__WINIT(a, b);
+    ga2d__w r = GA2D__WINIT(a, b, c, d, e, f, g, h);
     return r;
 }
-#else
-#define GA2D__GATHER(s, slot, f) ga2d__wset((s)[(slot)[0]].f, (s)[(slot)[1]].f, (s)[(slot)[2]].f, (s)[(slot)[3]].f)
+#elif GA2D__BYTES == 32 || !defined(GA2D_DOUBLE)
+#define GA2D__GATHER(s, slot, f)                                                                                       \
+    ga2d__wset(GA2D__G(s, slot, f, 0), GA2D__G(s, slot, f, 1), GA2D__G(s, slot, f, 2), GA2D__G(s, slot, f, 3))
 static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b, ga2d_real c, ga2d_real d)
 {
     ga2d__w r = GA2D__WINIT(a, b, c, d);
+    return r;
+}
+#else
+#define GA2D__GATHER(s, slot, f) ga2d__wset(GA2D__G(s, slot, f, 0), GA2D__G(s, slot, f, 1))
+static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b)
+{
+    ga2d__w r = GA2D__WINIT(a, b);
     return r;
 }
 #endif
@@ -4104,8 +4138,13 @@ static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, const int *m
     }
 }
 
-/* ga2d__point_now for four lanes (its comment says why): the anchors now
-   and the separation now of point k. */
+/* ga2d__point_now for the lanes (its comment says why), rearranged: with
+   e = d + rB' - rA' (d the centres' offset now, r' the anchors turned by
+   the bodies' turns so far), the anchor points have moved apart by
+   e - (d0 + rB - rA), so the separation now is that along n plus the
+   start separation; the second term is constant over the step and kept
+   as `adjust`.  The anchors now are the midpoint's: rA' + e/2 and that
+   less d. */
 static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2d__wbody *A, const ga2d__wbody *B,
                                           ga2d__wanchors *r)
 {
@@ -4114,14 +4153,13 @@ static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2
     ga2d__w rb1x = ga2d__wsub(ga2d__wmul(B->qc, g->rbx[k]), ga2d__wmul(B->qs, g->rby[k]));
     ga2d__w rb1y = ga2d__wadd(ga2d__wmul(B->qs, g->rbx[k]), ga2d__wmul(B->qc, g->rby[k]));
     ga2d__w dx = ga2d__wadd(g->dx, ga2d__wsub(B->dpx, A->dpx)), dy = ga2d__wadd(g->dy, ga2d__wsub(B->dpy, A->dpy));
-    ga2d__w dax = ga2d__wadd(A->dpx, ga2d__wsub(ra1x, g->rax[k])), day = ga2d__wadd(A->dpy, ga2d__wsub(ra1y, g->ray[k]));
-    ga2d__w dbx = ga2d__wadd(B->dpx, ga2d__wsub(rb1x, g->rbx[k])), dby = ga2d__wadd(B->dpy, ga2d__wsub(rb1y, g->rby[k]));
+    ga2d__w ex = ga2d__wsub(ga2d__wadd(dx, rb1x), ra1x), ey = ga2d__wsub(ga2d__wadd(dy, rb1y), ra1y);
     ga2d__w half = ga2d__wsplat(GA2D__R(0.5));
-    r->ax = ga2d__wadd(ra1x, ga2d__wmul(ga2d__wsub(ga2d__wadd(dx, rb1x), ra1x), half));
-    r->ay = ga2d__wadd(ra1y, ga2d__wmul(ga2d__wsub(ga2d__wadd(dy, rb1y), ra1y), half));
+    r->ax = ga2d__wadd(ra1x, ga2d__wmul(ex, half));
+    r->ay = ga2d__wadd(ra1y, ga2d__wmul(ey, half));
     r->bx = ga2d__wsub(r->ax, dx);
     r->by = ga2d__wsub(r->ay, dy);
-    return ga2d__wadd(g->sep[k], ga2d__wdot(ga2d__wsub(dbx, dax), ga2d__wsub(dby, day), g->nx, g->ny));
+    return ga2d__wadd(g->adjust[k], ga2d__wdot(ex, ey, g->nx, g->ny));
 }
 
 /* The relative velocity of the anchor points along (ux, uy), as
@@ -4282,7 +4320,8 @@ static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__so
         GA2D__LANE(g->ray[k], l) = p->ra.y;
         GA2D__LANE(g->rbx[k], l) = p->rb.x;
         GA2D__LANE(g->rby[k], l) = p->rb.y;
-        GA2D__LANE(g->sep[k], l) = p->separation;
+        GA2D__LANE(g->adjust[k], l) = p->separation - ((GA2D__LANE(g->dx, l) + (p->rb.x - p->ra.x)) * c->normal.x +
+                                                       (GA2D__LANE(g->dy, l) + (p->rb.y - p->ra.y)) * c->normal.y);
         GA2D__LANE(g->has[k], l) = 1;
         GA2D__LANE(g->nmass[k], l) = p->normal_mass;
         GA2D__LANE(g->tmass[k], l) = p->tangent_mass;
