@@ -2247,35 +2247,39 @@ typedef struct ga2d__body {
     ga2d_rotor q;
     ga2d_vec v;
     ga2d_real w;
+    ga2d_vec center0;            /* where the step began (solver) */
+    ga2d_rotor q0;
+    ga2d_real inv_mass, inv_inertia;
+    int type;                    /* ga2d_body_type; -1 for a free slot */
+    int awake;
+    int move_index;              /* index in world->moving, or -1 */
     ga2d_vec force;              /* the user's, cleared after each step */
     ga2d_real torque;
+    ga2d_real gravity_scale, linear_damping, angular_damping;
+    ga2d_vec local_center;
+    ga2d_rotor dq;               /* q q0~: its turn since then, per solver pass */
     ga2d_vec field_force;        /* the force callback's, per evaluation */
     ga2d_real field_torque;
     ga2d_vec field_accel;        /* Verlet: the field's acceleration at the */
     ga2d_real field_alpha;       /* current state, reused by the next step */
     int field_valid;
-    ga2d_real mass, inv_mass, inertia, inv_inertia;
-    ga2d_vec local_center;
-    ga2d_real friction, restitution, linear_damping, angular_damping, gravity_scale;
-    ga2d_polygon polygon;
-    void *user_data;
+    ga2d_real mass, inertia;
+    ga2d_real friction, restitution;
     uint32_t generation;
-    int type;                    /* ga2d_body_type; -1 for a free slot */
     int next_free;
-    int move_index;              /* index in world->moving, or -1 */
     int fixed_rotation;
-    int awake;
     ga2d_filter filter;
     int proxy;                   /* leaf in trees[type != static] */
     int in_move;                 /* queued for pair finding */
     int contact_head;            /* first (oldest) link of its contact list, or -1 */
     int contact_tail;            /* last (newest) link, or -1 */
-    ga2d_vec center0;            /* where the step began (solver) */
-    ga2d_rotor q0;
-    ga2d_rotor dq;               /* q q0~: its turn since then, per solver pass */
     ga2d_real extent;            /* farthest vertex from the centre */
     ga2d_real sleep_time, island_rest;
     int island;                  /* union-find parent while islands form */
+    /* last: what a step reads once per contact, not per pass, so that the
+       state above shares fewer cache lines */
+    ga2d_polygon polygon;
+    void *user_data;
 } ga2d__body;
 
 /* RK4's per-body scratch for one substep: the start state, the derivative
@@ -4808,7 +4812,7 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
    pair set, each body's contact list) are rebuilt, and since the lists are
    rebuilt in creation order and pairs and the solver follow canonical
    orders, the loaded world steps bit for bit as the saved one. */
-#define GA2D__SNAP_VERSION 1u
+#define GA2D__SNAP_VERSION 2u /* 2: body fields reordered (0.6.0) */
 
 typedef struct ga2d__snap_header {
     char magic[8];
