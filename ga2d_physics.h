@@ -2123,7 +2123,7 @@ typedef struct ga2d__constraint {
     ga2d_real inv_ma, inv_ia, inv_mb, inv_ib;
     int to_static;               /* the other body cannot move: stiffer */
     int count;
-    int lane;                    /* group * 4 + lane in the four-lane solver */
+    int lane;                    /* group * GA2D__LANES + lane in the lane solver */
     ga2d__cpoint p[2];
 } ga2d__constraint;
 
@@ -2137,7 +2137,7 @@ typedef struct ga2d__constraint {
 #define GA2D__HOT inline
 #endif
 
-/* ------------------------------------------------- the four-lane solver */
+/* ------------------------------------------------------ the lane solver */
 /* The velocity passes (warm start, solve, relax) run on groups of four
    constraints that share no body they move, one constraint per lane, so
    each pass is four independent sequential-impulse updates at once.  A
@@ -2229,10 +2229,10 @@ static GA2D__HOT ga2d__w ga2d__wdot(ga2d__w a, ga2d__w b, ga2d__w x, ga2d__w y)
    keep v, w and a zero motion; one slot past the last body is a dummy for
    empty lanes. */
 typedef struct ga2d__sbody {
-    ga2d_real vx, vy, w, pad, dpx, dpy, dqc, dqs;
+    ga2d_real vx, vy, w, dpx, dpy, dqc, dqs;
 } ga2d__sbody;
 
-/* Four constraints, lane by lane: the bodies (the dummy slot in an empty
+/* GA2D__LANES constraints, lane by lane: the bodies (the dummy slot in an empty
    lane), which of them the lane moves, its constraint's index, and the
    constraint's data.  A one-point contact's second point and an empty lane
    have zero masses, so their impulses stay zero. */
@@ -2335,7 +2335,7 @@ struct ga2d_world {
     int error_slot;              /* the first body it contained, or -1 */
     ga2d__constraint *constraints;
     int constraint_count, constraint_capacity;
-    ga2d__group *groups;         /* the four-lane solver's, live during the substeps */
+    ga2d__group *groups;         /* the lane solver's, live during the substeps */
     int group_count, group_capacity;
     ga2d__sbody *sbodies;        /* its body state, by slot (one dummy past the end) */
     int sbody_capacity;
@@ -4200,7 +4200,7 @@ static GA2D__HOT void ga2d__wapply(const ga2d__group *g, ga2d__wbody *A, ga2d__w
     B->w = ga2d__wadd(B->w, ga2d__wmul(g->iib, ga2d__wsub(ga2d__wmul(r->bx, py), ga2d__wmul(r->by, px))));
 }
 
-/* ga2d__effective_mass for four lanes, zero where the point is absent. */
+/* ga2d__effective_mass for the lanes, zero where the point is absent. */
 static GA2D__HOT ga2d__w ga2d__weffective_mass(const ga2d__group *g, int k, const ga2d__wanchors *r, ga2d__w ux, ga2d__w uy)
 {
     ga2d__w wa = ga2d__wsub(ga2d__wmul(r->ax, uy), ga2d__wmul(r->ay, ux));
@@ -4308,13 +4308,12 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
 }
 
 /* Lane l of group g holds constraint c (d: B's centre less A's), every
-   field written: a point c lacks, and an empty lane (c all zero), get zero
-   masses. */
-static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__constraint *c, ga2d_vec d, const ga2d__soft *sf)
+   field written: a point c lacks takes `none`'s (all zero), and so does an
+   empty lane (c = none), so their masses are zero. */
+static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__constraint *c, ga2d_vec d, const ga2d__soft *sf,
+                             const ga2d__constraint *none)
 {
-    ga2d__cpoint none;
     int k;
-    memset(&none, 0, sizeof none);
     GA2D__LANE(g->nx, l) = c->normal.x;
     GA2D__LANE(g->ny, l) = c->normal.y;
     GA2D__LANE(g->friction, l) = c->friction;
@@ -4328,7 +4327,7 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__constraint *c, g
     GA2D__LANE(g->soft_mass, l) = sf->mass_scale;
     GA2D__LANE(g->soft_impulse, l) = sf->impulse_scale;
     for (k = 0; k < 2; ++k) {
-        const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none;
+        const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
         GA2D__LANE(g->rax[k], l) = p->ra.x;
         GA2D__LANE(g->ray[k], l) = p->ra.y;
         GA2D__LANE(g->rbx[k], l) = p->rb.x;
@@ -4344,7 +4343,8 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__constraint *c, g
 }
 
 /* Puts constraint ci into lane g->count of group g. */
-static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__soft *soft, const ga2d__soft *stiff)
+static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__soft *soft, const ga2d__soft *stiff,
+                           const ga2d__constraint *none)
 {
     ga2d__constraint *c = &w->constraints[ci];
     int l = g->count++, e;
@@ -4353,7 +4353,8 @@ static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__so
     g->con[l] = ci;
     g->moves[l] = (c->inv_ma != 0 || c->inv_ia != 0) | (c->inv_mb != 0 || c->inv_ib != 0) << 1;
     c->lane = (int)(g - w->groups) * GA2D__LANES + l;
-    ga2d__lane_write(g, l, c, ga2d_vec_sub(w->bodies[c->b].center, w->bodies[c->a].center), c->to_static ? stiff : soft);
+    ga2d__lane_write(g, l, c, ga2d_vec_sub(w->bodies[c->b].center, w->bodies[c->a].center), c->to_static ? stiff : soft,
+                     none);
     /* a body the lane does not move: not gathered per pass (static or
        asleep), it is seen as it is, at rest where the step began */
     for (e = 0; e < 2; ++e) {
@@ -4364,24 +4365,20 @@ static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__so
         s->vx = b->v.x;
         s->vy = b->v.y;
         s->w = b->w;
-        s->pad = s->dpx = s->dpy = s->dqs = 0;
+        s->dpx = s->dpy = s->dqs = 0;
         s->dqc = 1;
     }
 }
 
 /* The lanes a group was closed without: the dummy slot, all zero. */
-static void ga2d__group_pad(ga2d_world *w, ga2d__group *g)
+static void ga2d__group_pad(ga2d_world *w, ga2d__group *g, const ga2d__constraint *none, const ga2d__soft *zero)
 {
-    ga2d__constraint none;
-    ga2d__soft zero;
     int l;
-    memset(&none, 0, sizeof none);
-    memset(&zero, 0, sizeof zero);
     for (l = g->count; l < GA2D__LANES; ++l) {
         g->a[l] = g->b[l] = w->body_used;
         g->con[l] = -1;
         g->moves[l] = 0;
-        ga2d__lane_write(g, l, &none, ga2d_vec_make(0, 0), &zero);
+        ga2d__lane_write(g, l, none, ga2d_vec_make(0, 0), zero, none);
     }
 }
 
@@ -4411,8 +4408,9 @@ static int ga2d__group_free(ga2d_world *w, int gi)
    order: the passes give what one constraint at a time in that order
    would, up to rounding, and the groups only find what can run side by
    side.  A pyramid fills nearly every lane.  The solver bodies and the
-   groups are sized here (0 when out of memory). */
-static int ga2d__batch(ga2d_world *w, ga2d_real h)
+   groups are sized here; out of memory, the step reports it and no
+   contact is solved. */
+static void ga2d__batch(ga2d_world *w, ga2d_real h)
 {
     ga2d_real inv_h = 1 / h;
     ga2d_real hz = w->def.contact_hertz < GA2D__R(0.25) * inv_h ? w->def.contact_hertz : GA2D__R(0.25) * inv_h;
@@ -4421,14 +4419,18 @@ static int ga2d__batch(ga2d_world *w, ga2d_real h)
     int used = w->body_used, i;
     int *last;
     ga2d__sbody *dummy;
+    ga2d__constraint none;
+    ga2d__soft zero;
     w->group_count = 0;
-    if (w->constraint_count == 0) return 1;
+    if (w->constraint_count == 0) return;
     if (!ga2d__grow(&w->def.allocator, (void **)&w->groups, &w->group_capacity, w->constraint_count, sizeof *w->groups) ||
         !ga2d__grow(&w->def.allocator, (void **)&w->sbodies, &w->sbody_capacity, used + 1, sizeof *w->sbodies) ||
         !ga2d__grow(&w->def.allocator, (void **)&w->last_group, &w->last_group_capacity, used, sizeof *w->last_group)) {
         w->step_error = GA2D_ERR_OUT_OF_MEMORY;
-        return 0;
+        return;
     }
+    memset(&none, 0, sizeof none);
+    memset(&zero, 0, sizeof zero);
     last = w->last_group;
     for (i = 0; i < used; ++i) last[i] = -1;
     dummy = &w->sbodies[used];
@@ -4443,13 +4445,12 @@ static int ga2d__batch(ga2d_world *w, ga2d_real h)
         gi = ga2d__group_free(w, gi);
         if (gi == w->group_count) ga2d__group_open(&w->groups[w->group_count++]);
         g = &w->groups[gi];
-        ga2d__lane_put(w, g, i, &soft, &stiff);
+        ga2d__lane_put(w, g, i, &soft, &stiff, &none);
         if (g->count == GA2D__LANES) g->skip = gi + 1;
         if (ma) last[c->a] = gi;
         if (mb) last[c->b] = gi;
     }
-    for (i = 0; i < w->group_count; ++i) ga2d__group_pad(w, &w->groups[i]);
-    return 1;
+    for (i = 0; i < w->group_count; ++i) ga2d__group_pad(w, &w->groups[i], &none, &zero);
 }
 
 /* The moving bodies' velocities and motion since the step began, into
@@ -4466,7 +4467,6 @@ static void ga2d__gather(ga2d_world *w)
         s->vx = b->v.x;
         s->vy = b->v.y;
         s->w = b->w;
-        s->pad = 0;
         s->dpx = b->center.x - b->center0.x;
         s->dpy = b->center.y - b->center0.y;
         s->dqc = dq.c;
@@ -4489,7 +4489,7 @@ static void ga2d__scatter(ga2d_world *w)
     }
 }
 
-/* Lane `lane` (group * 4 + lane) forgets its impulses (containment). */
+/* Lane `lane` (group * GA2D__LANES + lane) forgets its impulses (containment). */
 static void ga2d__lane_clear(ga2d_world *w, int lane)
 {
     ga2d__group *g = &w->groups[lane / GA2D__LANES];
