@@ -2173,6 +2173,8 @@ static GA2D__HOT ga2d__w ga2d__wsub(ga2d__w a, ga2d__w b) { return a - b; }
 static GA2D__HOT ga2d__w ga2d__wmul(ga2d__w a, ga2d__w b) { return a * b; }
 static GA2D__HOT ga2d__w ga2d__wdiv(ga2d__w a, ga2d__w b) { return a / b; }
 static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a > b); }
+static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a >= b); }
+static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b) { return a & b; }
 /* m ? a : b, lane by lane (m all ones or all zeros) */
 static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
 {
@@ -2201,6 +2203,19 @@ static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b)
     int i;
     for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] > b.lane[i];
     return m;
+}
+static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b)
+{
+    ga2d__wmask m;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] >= b.lane[i];
+    return m;
+}
+static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b)
+{
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] && b.lane[i];
+    return a;
 }
 static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
 {
@@ -2248,6 +2263,7 @@ typedef struct ga2d__group {
     ga2d__w adjust[2];      /* start separation - (d0 + rB - rA).n */
     ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
+    ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
 } ga2d__group;
 
 /* ======================================================== world and bodies */
@@ -3949,6 +3965,17 @@ static ga2d_real ga2d__effective_mass(const ga2d__constraint *c, ga2d_vec ra, ga
     return k > 0 ? 1 / k : 0;
 }
 
+/* The off-diagonal entry of a two-point manifold's normal matrix K: how
+   fast point 2's approach speed changes under a unit normal impulse at
+   point 1 (and the reverse; K is symmetric).  The points share the pair's
+   masses, so this is near the diagonal's size: why they are solved as a
+   block (ga2d__wblock). */
+static ga2d_real ga2d__coupling(const ga2d__constraint *c, ga2d_vec ra1, ga2d_vec rb1, ga2d_vec ra2, ga2d_vec rb2)
+{
+    return c->inv_ma + c->inv_mb + c->inv_ia * ga2d_wedge(ra1, c->normal) * ga2d_wedge(ra2, c->normal) +
+           c->inv_ib * ga2d_wedge(rb1, c->normal) * ga2d_wedge(rb2, c->normal);
+}
+
 /* Relative velocity of B's anchor point against A's: (vB + rB Omega_B) -
    (vA + rA Omega_A), with r Omega = w perp(r). */
 static GA2D__HOT ga2d_vec ga2d__relative_velocity(const ga2d__body *a, const ga2d__body *b, ga2d_vec ra, ga2d_vec rb)
@@ -4218,6 +4245,67 @@ static GA2D__HOT ga2d__w ga2d__wclamp(ga2d__w x, ga2d__w lo, ga2d__w hi)
     return ga2d__wsel(ga2d__wgt(x, hi), hi, ga2d__wsel(ga2d__wgt(lo, x), lo, x));
 }
 
+/* ga2d__coupling for the lanes, at anchors r (zero where a point is absent). */
+static GA2D__HOT ga2d__w ga2d__wcoupling(const ga2d__group *g, const ga2d__wanchors *r)
+{
+    ga2d__w a1 = ga2d__wsub(ga2d__wmul(r[0].ax, g->ny), ga2d__wmul(r[0].ay, g->nx));
+    ga2d__w a2 = ga2d__wsub(ga2d__wmul(r[1].ax, g->ny), ga2d__wmul(r[1].ay, g->nx));
+    ga2d__w b1 = ga2d__wsub(ga2d__wmul(r[0].bx, g->ny), ga2d__wmul(r[0].by, g->nx));
+    ga2d__w b2 = ga2d__wsub(ga2d__wmul(r[1].bx, g->ny), ga2d__wmul(r[1].by, g->nx));
+    ga2d__w k = ga2d__wadd(ga2d__wadd(ga2d__wadd(g->ima, g->imb), ga2d__wmul(ga2d__wmul(g->iia, a1), a2)),
+                           ga2d__wmul(ga2d__wmul(g->iib, b1), b2));
+    return ga2d__wmul(ga2d__wmul(k, g->has[0]), g->has[1]);
+}
+
+/* The two normal points of each lane solved together, as the linear
+   complementarity problem they are: accumulated impulses x = x0 + lambda
+   >= 0, and where x_k = 0 the point separates (its speed, bias included,
+   >= 0).  Sequential impulses would give the point solved first more than
+   its share and turn the pair, every pass the same way: a large pyramid
+   sheared by metres in 500 steps.  Each row is divided by its own
+   diagonal (with the soft scaling, inv_a = mass_scale / K_kk), so
+   `own` is the point's update alone and p_k = inv_a_k K12 its coupling:
+       lambda_1 + p_1 lambda_2 = own_1,   p_2 lambda_1 + lambda_2 = own_2.
+   The cases in order of preference: both pushing; one alone; neither.  p_1
+   p_2 < 1 (K is positive definite and softness only adds to its
+   diagonal); both pushing is taken only while 1 - p_1 p_2 is not tiny
+   (points nearly one point), and if rounding leaves no case valid, point
+   1 alone, clamped.  A lane with one point has K12 = 0 and nmass_2 = 0,
+   so it reduces to the one-point update. */
+static GA2D__HOT void ga2d__wblock(const ga2d__group *g, const ga2d__w *inv_a, const ga2d__w *own, ga2d__w *lambda)
+{
+    const ga2d__w zero = ga2d__wsplat(0), one = ga2d__wsplat(1), tiny = ga2d__wsplat(GA2D__R(1e-3));
+    ga2d__w p1 = ga2d__wmul(inv_a[0], g->k12), p2 = ga2d__wmul(inv_a[1], g->k12);
+    ga2d__w x01 = g->nimp[0], x02 = g->nimp[1];
+    ga2d__w det = ga2d__wsub(one, ga2d__wmul(p1, p2));
+    ga2d__wmask solid = ga2d__wgt(det, tiny);
+    ga2d__w inv_det = ga2d__wdiv(one, ga2d__wsel(solid, det, one));
+    /* both */
+    ga2d__w b1 = ga2d__wmul(ga2d__wsub(own[0], ga2d__wmul(p1, own[1])), inv_det);
+    ga2d__w b2 = ga2d__wmul(ga2d__wsub(own[1], ga2d__wmul(p2, own[0])), inv_det);
+    ga2d__wmask both = ga2d__wand(solid, ga2d__wand(ga2d__wge(ga2d__wadd(x01, b1), zero), ga2d__wge(ga2d__wadd(x02, b2), zero)));
+    /* point 1 alone (x2 = 0) */
+    ga2d__w o1 = ga2d__wadd(own[0], ga2d__wmul(p1, x02));
+    ga2d__wmask only1 = ga2d__wand(ga2d__wge(ga2d__wadd(x01, o1), zero),
+                                   ga2d__wge(ga2d__wsub(ga2d__wmul(p2, o1), ga2d__wadd(x02, own[1])), zero));
+    /* point 2 alone (x1 = 0) */
+    ga2d__w o2 = ga2d__wadd(own[1], ga2d__wmul(p2, x01));
+    ga2d__wmask only2 = ga2d__wand(ga2d__wge(ga2d__wadd(x02, o2), zero),
+                                   ga2d__wge(ga2d__wsub(ga2d__wmul(p1, o2), ga2d__wadd(x01, own[0])), zero));
+    /* neither; else point 1 alone, clamped */
+    ga2d__wmask none = ga2d__wand(ga2d__wge(ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(p1, x02), ga2d__wadd(x01, own[0]))), zero),
+                                  ga2d__wge(ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(p2, x01), ga2d__wadd(x02, own[1]))), zero));
+    ga2d__w l1 = ga2d__wsel(ga2d__wgt(ga2d__wadd(x01, o1), zero), o1, ga2d__wsub(zero, x01));
+    ga2d__w l2 = ga2d__wsub(zero, x02);
+    l1 = ga2d__wsel(none, ga2d__wsub(zero, x01), l1);
+    l1 = ga2d__wsel(only2, ga2d__wsub(zero, x01), l1);
+    l2 = ga2d__wsel(only2, o2, l2);
+    l1 = ga2d__wsel(only1, o1, l1);
+    l2 = ga2d__wsel(only1, ga2d__wsub(zero, x02), l2);
+    lambda[0] = ga2d__wsel(both, b1, l1);
+    lambda[1] = ga2d__wsel(both, b2, l2);
+}
+
 /* Each point's accumulated impulses applied again at its anchors now. */
 static void ga2d__warm_start(ga2d_world *w)
 {
@@ -4265,12 +4353,13 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
         ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
         ga2d__wbody A, B;
         ga2d__wanchors r[2];
+        ga2d__w inv_a[2], own[2], lambda[2];
         ga2d__wload(w->sbodies, g->a, &A);
         ga2d__wload(w->sbodies, g->b, &B);
         for (k = 0; k < 2; ++k) {
             ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k]);
             ga2d__wmask apart = ga2d__wgt(s, zero);
-            ga2d__w bias = zero, mass_scale = one, impulse_scale = zero, vn, lambda, total;
+            ga2d__w bias = zero, mass_scale = one, impulse_scale = zero;
             if (bias_kind == GA2D__BIAS_SOFT) {
                 bias = ga2d__wmul(g->soft_rate, s);
                 bias = ga2d__wsel(ga2d__wgt(low, bias), low, bias);
@@ -4282,25 +4371,28 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
                 bias = ga2d__wsel(ga2d__wgt(nslop, s), bias, zero);
             }
             bias = ga2d__wsel(apart, ga2d__wmul(s, winv_h), bias);
-            vn = ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny);
             if (fresh) g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
-            lambda = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(ga2d__wmul(g->nmass[k], mass_scale), ga2d__wadd(vn, bias)),
-                                                 ga2d__wmul(impulse_scale, g->nimp[k])));
-            total = ga2d__wadd(g->nimp[k], lambda);
-            total = ga2d__wsel(ga2d__wgt(total, zero), total, zero);
-            lambda = ga2d__wsub(total, g->nimp[k]);
-            g->nimp[k] = total;
-            ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda), ga2d__wmul(g->ny, lambda));
+            /* the point's own update (its impulse alone, unclamped) and
+               its share of the coupling, both in the point's own scale */
+            inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
+            own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny), bias)),
+                                                ga2d__wmul(impulse_scale, g->nimp[k])));
+        }
+        if (fresh) g->k12 = ga2d__wcoupling(g, r);
+        ga2d__wblock(g, inv_a, own, lambda);
+        for (k = 0; k < 2; ++k) {
+            g->nimp[k] = ga2d__wadd(g->nimp[k], lambda[k]);
+            ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda[k]), ga2d__wmul(g->ny, lambda[k]));
         }
         for (k = 0; friction && k < 2; ++k) {
-            ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty), lambda, cap, total;
+            ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty), dt, cap, total;
             if (fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
-            lambda = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
+            dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
             cap = ga2d__wmul(g->friction, g->nimp[k]);
-            total = ga2d__wclamp(ga2d__wadd(g->timp[k], lambda), ga2d__wsub(zero, cap), cap);
-            lambda = ga2d__wsub(total, g->timp[k]);
+            total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
+            dt = ga2d__wsub(total, g->timp[k]);
             g->timp[k] = total;
-            ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, lambda), ga2d__wmul(ty, lambda));
+            ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, dt), ga2d__wmul(ty, dt));
         }
         ga2d__wstore(w->sbodies, g->a, g->moves, 1, &A);
         ga2d__wstore(w->sbodies, g->b, g->moves, 2, &B);
@@ -4326,6 +4418,7 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__constraint *c, g
     GA2D__LANE(g->soft_rate, l) = sf->bias_rate;
     GA2D__LANE(g->soft_mass, l) = sf->mass_scale;
     GA2D__LANE(g->soft_impulse, l) = sf->impulse_scale;
+    GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
         GA2D__LANE(g->rax[k], l) = p->ra.x;

@@ -842,6 +842,59 @@ static void plank_mass_ratio(void)
     }
 }
 
+/* ------------------------------------------------- two points, one pass */
+/* A triangle (0,0) (2,0) (0,1) of density 1 (m = 1 kg, centroid at x =
+   2/3) set on the ground, touching, at rest: its manifold has a point at
+   each end of the bottom edge, x1 = 0 and x2 = 2.  One step of one pass
+   (PGS with Baumgarte, one substep, one iteration, no warm start) must
+   stop it: the two normal impulses solved together give v = w = 0, so
+   they carry the weight's impulse m g h between them by the lever rule,
+       lambda(x1) = m g h (x2 - xc) / (x2 - x1) = 2/3 m g h,
+       lambda(x2) = m g h (xc - x1) / (x2 - x1) = 1/3 m g h.
+   Solved one after the other, point 1 alone takes m_eff g h (m_eff =
+   1 / (1/m + (xc-x1)^2/I), about 0.4 m here) and the triangle turns: w is
+   of order g h / xc, far over the bound.  Tolerance: the separation of a
+   touching point is zero up to rounding (1e-7 m in float), which may read
+   as a speculative gap worth 1e-7/h = 6e-6 m/s against g h = 0.17 m/s, so
+   1e-4 of g h on each impulse, and 1e-4 g h per metre on w. */
+static void two_points_share_the_load(void)
+{
+    static const ga2d_vec tri[3] = {{0, 0}, {2, 0}, {0, 1}};
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_world *w;
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_body_id id;
+    ga2d_contact_data c[2];
+    const double h = DT, load = 1.0 * G * h, tol = 1e-4 * load;
+    double at0 = -1, at2 = -1;
+    int n, k;
+    wd.solver = GA2D_SOLVER_PGS_BAUMGARTE;
+    wd.substeps = 1;
+    wd.velocity_iterations = 1;
+    wd.enable_warm_starting = 0;
+    w = make_world(wd, 0);
+    add_ground(w);
+    d.type = GA2D_BODY_DYNAMIC;
+    CHECK_RESULT(ga2d_polygon_make(tri, 3, &d.polygon), GA2D_OK);
+    id = ga2d_body_create(w, &d);
+    step(w);
+    n = ga2d_world_get_contacts(w, c, 2);
+    CHECK(n == 1 && c[0].manifold.count == 2);
+    for (k = 0; n == 1 && k < c[0].manifold.count; ++k) {
+        const ga2d_manifold_point *p = &c[0].manifold.points[k];
+        if (fabs((double)p->point.x) < 0.01) at0 = (double)p->normal_impulse;
+        if (fabs((double)p->point.x - 2) < 0.01) at2 = (double)p->normal_impulse;
+    }
+    CHECK_NEAR(at0, 2.0 / 3.0 * load, tol);
+    CHECK_NEAR(at2, 1.0 / 3.0 * load, tol);
+    CHECK_NEAR((double)ga2d_body_angular_velocity(w, id), 0, tol); /* per metre of lever */
+    CHECK_NEAR(vel_y(w, id), 0, tol);
+    if (verbose())
+        printf("solver: lever rule in one pass: %.6g and %.6g of m g h (exact 2/3, 1/3), w %.2g rad/s\n", at0 / load,
+               at2 / load, (double)ga2d_body_angular_velocity(w, id));
+    ga2d_world_destroy(w);
+}
+
 /* ------------------------------------------------------- overlap recovery */
 /* Ten 1 m boxes created in a column, each overlapping the one below (the
    lowest: the ground) by 0.25 m.  Within 1 s no pair may overlap by more
@@ -896,4 +949,5 @@ void suite_solver(void)
     test_run("solver: Newton's cradle passes the motion on", newtons_cradle);
     test_run("solver: a heavy plank on light boxes", plank_mass_ratio);
     test_run("solver: overlapped boxes separate gently", overlap_recovery);
+    test_run("solver: a manifold's two points share the load by the lever rule", two_points_share_the_load);
 }
