@@ -3,6 +3,8 @@
 # Makefile; not part of `make test`.  Needs the Debian packages
 # libbox2d-dev and libchipmunk-dev.  BENCH_RUNS=n sets the runs per engine.
 #   ./build/bench/peers [scene] [csv]   runs one scene (default: all)
+# Where the CPU has AVX2, ga2d is also built a second time with -mavx2 and
+# run as a fourth engine, ga2d-avx2 (PEERS_AVX2=0 leaves it out).
 
 PEERS_DIR  := tests/bench/peers
 PEERS_BIN  := $(BUILD)/bench/peers
@@ -12,6 +14,11 @@ PEERS_CC   ?= gcc
 PEERS_CXX  ?= g++
 PEERS_WARN := -Wall -Wextra -Wpedantic -Wshadow -Werror
 PEERS_LIBS := -lbox2d -lchipmunk
+PEERS_AVX2 ?= $(shell grep -qw avx2 /proc/cpuinfo 2>/dev/null && echo 1 || echo 0)
+PEERS_GA2D := $(PEERS_OBJ)/ga2d_peer.o
+ifeq ($(PEERS_AVX2),1)
+PEERS_GA2D += $(PEERS_OBJ)/ga2d_peer_avx2.o
+endif
 
 .PHONY: bench-peers bench-peers-check
 
@@ -33,12 +40,16 @@ $(PEERS_OBJ)/ga2d_peer.o: $(PEERS_DIR)/ga2d_peer.c $(PEERS_DIR)/ga2d_peer.h $(HE
 	@mkdir -p $(dir $@)
 	$(PEERS_CC) -std=c99 $(OPT) $(PEERS_WARN) -Wdouble-promotion $(INC) -c $< -o $@
 
+$(PEERS_OBJ)/ga2d_peer_avx2.o: $(PEERS_DIR)/ga2d_peer.c $(PEERS_DIR)/ga2d_peer.h $(HEADER)
+	@mkdir -p $(dir $@)
+	$(PEERS_CC) -std=c99 $(OPT) -mavx2 -DGA2D_PEER_AVX2 -DGA2D_STATIC $(PEERS_WARN) -Wdouble-promotion $(INC) -c $< -o $@
+
 $(PEERS_OBJ)/bench_peers.o: $(PEERS_DIR)/bench_peers.cpp $(PEERS_DIR)/ga2d_peer.h tests/bench/scenes.h
 	@mkdir -p $(dir $@)
-	$(PEERS_CXX) -std=c++11 $(OPT) $(PEERS_WARN) $(INC) -DPEERS_OPT='"$(OPT)"' \
+	$(PEERS_CXX) -std=c++11 $(OPT) $(PEERS_WARN) $(INC) -DPEERS_OPT='"$(OPT)"' -DPEERS_AVX2=$(PEERS_AVX2) \
 	  -DPEERS_BOX2D_VERSION='"$(shell pkg-config --modversion box2d 2>/dev/null)"' -c $< -o $@
 
-$(PEERS_BIN): $(PEERS_OBJ)/bench_peers.o $(PEERS_OBJ)/ga2d_peer.o
+$(PEERS_BIN): $(PEERS_OBJ)/bench_peers.o $(PEERS_GA2D)
 	$(PEERS_CXX) $^ -o $@ $(PEERS_LIBS) $(LIBS)
 
 bench-peers: bench-peers-check

@@ -3,7 +3,8 @@
 
    Every engine builds the same list of boxes; for each scene the three
    engines run alternately (run r: ga2d, Box2D, Chipmunk, each with a fresh
-   world), so a slow spell of the machine hits all of them.  Only the world
+   world; then ga2d built with -mavx2, where the CPU has AVX2), so a slow
+   spell of the machine hits all of them.  Only the world
    step is timed, and not the first 10 steps (the first broadphase pass and
    warm-up); building, the tumbler's wall velocities and the accuracy
    figure are outside the clock.  Prints a table per scene and writes a CSV.
@@ -27,6 +28,11 @@
 
 #include "../scenes.h"
 #include "ga2d_peer.h"
+
+/* 1 when the Makefile also built ga2d with -mavx2 (the CPU has AVX2) */
+#ifndef PEERS_AVX2
+#define PEERS_AVX2 0
+#endif
 
 /* given by peers.mk: the flags, and Box2D's package version (its 2.4.1
    library still reports b2_version 2.4.0) */
@@ -69,27 +75,46 @@ public:
     virtual bool awake(int i) const = 0;
 };
 
+/* One build of ga2d_peer.c: the generic one, or the -mavx2 one. */
+struct Ga2dBuild {
+    ga2d_peer *(*create)(double gx, double gy, int sleep, int capacity);
+    int (*add_box)(ga2d_peer *p, int type, double x, double y, double hx, double hy, double vx, double vy, double w,
+                   double density, double friction, int asleep);
+    int (*step)(ga2d_peer *p, double dt);
+    void (*pose)(const ga2d_peer *p, int i, double *x, double *y, double *angle);
+    void (*velocity)(const ga2d_peer *p, int i, double *vx, double *vy);
+    int (*is_awake)(const ga2d_peer *p, int i);
+    void (*set_velocity)(ga2d_peer *p, int i, double vx, double vy, double w);
+    void (*destroy)(ga2d_peer *p);
+};
+
+#define GA2D_BUILD(P) {P##create, P##add_box, P##step, P##pose, P##velocity, P##is_awake, P##set_velocity, P##destroy}
+static const Ga2dBuild kGa2dGeneric = GA2D_BUILD(ga2d_peer_);
+#if PEERS_AVX2
+static const Ga2dBuild kGa2dAvx2 = GA2D_BUILD(ga2d_peer_avx2_);
+#endif
+
 class Ga2dWorld : public World {
 public:
-    explicit Ga2dWorld(const bench_scene &s) : p_(ga2d_peer_create(s.gx, s.gy, s.sleep, s.count)), ok_(p_ != NULL)
+    Ga2dWorld(const bench_scene &s, const Ga2dBuild &f) : f_(f), p_(f.create(s.gx, s.gy, s.sleep, s.count)), ok_(p_ != NULL)
     {
         for (int i = 0; ok_ && i < s.count; ++i) {
             const bench_body &b = s.bodies[i];
-            ok_ = ga2d_peer_add_box(p_, b.type, b.x, b.y, b.hx, b.hy, b.vx, b.vy, b.w, b.density, b.friction,
-                                    b.asleep) == i;
+            ok_ = f_.add_box(p_, b.type, b.x, b.y, b.hx, b.hy, b.vx, b.vy, b.w, b.density, b.friction, b.asleep) == i;
         }
     }
-    ~Ga2dWorld() { ga2d_peer_destroy(p_); }
+    ~Ga2dWorld() { f_.destroy(p_); }
     bool ok() const { return ok_; }
-    bool step(double dt) { return ga2d_peer_step(p_, dt) == 0; }
-    void pose(int i, double *x, double *y, double *angle) const { ga2d_peer_pose(p_, i, x, y, angle); }
-    void velocity(int i, double *vx, double *vy) const { ga2d_peer_velocity(p_, i, vx, vy); }
-    void set_velocity(int i, double vx, double vy, double w) { ga2d_peer_set_velocity(p_, i, vx, vy, w); }
-    bool awake(int i) const { return ga2d_peer_is_awake(p_, i) != 0; }
+    bool step(double dt) { return f_.step(p_, dt) == 0; }
+    void pose(int i, double *x, double *y, double *angle) const { f_.pose(p_, i, x, y, angle); }
+    void velocity(int i, double *vx, double *vy) const { f_.velocity(p_, i, vx, vy); }
+    void set_velocity(int i, double vx, double vy, double w) { f_.set_velocity(p_, i, vx, vy, w); }
+    bool awake(int i) const { return f_.is_awake(p_, i) != 0; }
 
 private:
     Ga2dWorld(const Ga2dWorld &);
     Ga2dWorld &operator=(const Ga2dWorld &);
+    const Ga2dBuild &f_;
     ga2d_peer *p_;
     bool ok_;
 };
@@ -233,15 +258,27 @@ private:
 };
 
 template <class W> static World *build(const bench_scene &s) { return new W(s); }
+static World *build_ga2d(const bench_scene &s) { return new Ga2dWorld(s, kGa2dGeneric); }
+#if PEERS_AVX2
+static World *build_ga2d_avx2(const bench_scene &s) { return new Ga2dWorld(s, kGa2dAvx2); }
+#endif
 
 struct Engine {
     const char *name;
     World *(*build)(const bench_scene &s);
 };
 
-static const Engine kEngines[] = {
-    {"ga2d", build<Ga2dWorld>}, {"Box2D", build<Box2dWorld>}, {"Chipmunk", build<ChipmunkWorld>}};
+/* ga2d first (its median is every ratio's numerator); ga2d's AVX2 build,
+   where there is one, last, with its own ratios */
+static const Engine kEngines[] = {{"ga2d", build_ga2d},
+                                  {"Box2D", build<Box2dWorld>},
+                                  {"Chipmunk", build<ChipmunkWorld>},
+#if PEERS_AVX2
+                                  {"ga2d-avx2", build_ga2d_avx2}
+#endif
+};
 static const int kEngineCount = (int)(sizeof kEngines / sizeof kEngines[0]);
+static const int kAvx2 = PEERS_AVX2 ? kEngineCount - 1 : -1; /* ga2d-avx2's index, -1 when not built */
 
 /* ------------------------------------------------------- accuracy figures */
 /* The scene's boxes (their nominal size, no engine's skin) placed by an
@@ -597,6 +634,9 @@ static void print_header(int runs)
     printf("compilers: driver %s (C++, %s); ga2d %s (C99, same flags), ga2d_real = %s;\n"
            "  Box2D and Chipmunk: the system's shared libraries (-lbox2d, -lchipmunk)\n",
            cxx_compiler(), PEERS_OPT, ga2d_peer_compiler(), ga2d_peer_real_is_double() ? "double" : "float");
+    if (PEERS_AVX2)
+        printf("  ga2d-avx2: the same ga2d built again with -mavx2 (8 float lanes; the same results bit for bit),\n"
+               "  the CPU having AVX2; the peers' libraries are the distribution's generic builds\n");
     printf("settings (all: box polygons, density and friction from the scene, restitution 0, sleep per scene):\n");
     printf("  ga2d      %s; sleep: bodies created with is_awake = 0\n", ga2d_peer_settings());
     printf("  Box2D     %d velocity + %d position iterations; SetAsBox (polygon skin %.3f m, linear slop %.3f m);\n"
@@ -643,7 +683,7 @@ int main(int argc, char **argv)
     }
     FILE *csv = fopen(csv_path, "w");
     if (!csv) fprintf(stderr, "peers: cannot write %s; no CSV this time\n", csv_path);
-    if (csv) fprintf(csv, "scene,engine,ms_median,ms_min,figure_name,figure,ratio\n");
+    if (csv) fprintf(csv, "scene,engine,ms_median,ms_min,figure_name,figure,ratio,ratio_avx2\n");
 
     /* Chipmunk greets on its first space; let that happen before the tables */
     cpSpaceFree(cpSpaceNew());
@@ -675,8 +715,10 @@ int main(int argc, char **argv)
                 fig[e].push_back(res.figure);
                 check[e] = res.check;
             }
-        printf("  %-14s %-9s %12s %8s %10s %12s\n", "scene", "engine", "ms/step med", "min", "ga2d/peer", "figure");
+        printf("  %-14s %-9s %12s %8s %10s %12s%s\n", "scene", "engine", "ms/step med", "min", "ga2d/peer", "figure",
+               kAvx2 >= 0 ? "  ga2d-avx2/peer" : "");
         double ga2d_med = ms[0].empty() ? NAN : median(ms[0]);
+        double avx2_med = kAvx2 < 0 || ms[kAvx2].empty() ? NAN : median(ms[kAvx2]);
         std::string notes;
         for (int e = 0; e < kEngineCount; ++e) {
             if (!failed[e].empty()) {
@@ -686,11 +728,15 @@ int main(int argc, char **argv)
             }
             double med = median(ms[e]), lo = minimum(ms[e]), f = median(fig[e]);
             double ratio = ga2d_med / med;
-            char ratio_text[32], fig_text[32];
-            snprintf(ratio_text, sizeof ratio_text, e == 0 ? "-" : "%.2f", ratio);
+            bool own = e == 0 || e == kAvx2; /* a ga2d build: no ratio against itself */
+            char ratio_text[32], fig_text[32], avx2_text[32] = "";
+            snprintf(ratio_text, sizeof ratio_text, own ? "-" : "%.2f", ratio);
+            if (kAvx2 >= 0 && own) snprintf(avx2_text, sizeof avx2_text, "  %15s", "-");
+            if (kAvx2 >= 0 && !own) snprintf(avx2_text, sizeof avx2_text, "  %15.2f", avx2_med / med);
             /* metres to the tenth of a millimetre; the momentum error is relative */
             snprintf(fig_text, sizeof fig_text, s.figure == BENCH_FIG_MOMENTUM ? "%.2e" : "%.4f", f);
-            printf("  %-14s %-9s %12.3f %8.3f %10s %12s\n", s.name, kEngines[e].name, med, lo, ratio_text, fig_text);
+            printf("  %-14s %-9s %12.3f %8.3f %10s %12s%s\n", s.name, kEngines[e].name, med, lo, ratio_text, fig_text,
+                   avx2_text);
             notes += "    " + std::string(kEngines[e].name) + std::string(10 - strlen(kEngines[e].name), ' ') + check[e] + "\n";
             /* the figure is the median over runs; say so when runs disagree */
             double fmin = minimum(fig[e]), fmax = *std::max_element(fig[e].begin(), fig[e].end());
@@ -700,8 +746,8 @@ int main(int argc, char **argv)
                 notes += varies;
             }
             if (csv)
-                fprintf(csv, "%s,%s,%.6f,%.6f,\"%s\",%.9g,%.6f\n", s.name, kEngines[e].name, med, lo,
-                        bench_scene_figure_name(&s), f, e == 0 ? 1.0 : ratio);
+                fprintf(csv, "%s,%s,%.6f,%.6f,\"%s\",%.9g,%.6f,%.6f\n", s.name, kEngines[e].name, med, lo,
+                        bench_scene_figure_name(&s), f, own ? 1.0 : ratio, own || kAvx2 < 0 ? 1.0 : avx2_med / med);
         }
         printf("  check (last run):\n%s", notes.c_str());
         fflush(stdout);

@@ -1,10 +1,18 @@
 /* ga2d_peer.c - the ga2d side of `make bench-peers` (see ga2d_peer.h).
-   Built as C99 with the library's implementation in this unit only. */
+   Built as C99 with the library's implementation in this unit only; built
+   a second time with -mavx2 -DGA2D_PEER_AVX2 -DGA2D_STATIC (the library's
+   functions private to it), its own then named ga2d_peer_avx2_*. */
 #define GA2D_IMPLEMENTATION
 #include "ga2d_physics.h"
 #include "ga2d_peer.h"
 #include <stdio.h>
 #include <stdlib.h>
+
+#ifdef GA2D_PEER_AVX2
+#define GA2D_PEER_FN(name) ga2d_peer_avx2_##name
+#else
+#define GA2D_PEER_FN(name) ga2d_peer_##name
+#endif
 
 struct ga2d_peer {
     ga2d_world *world;
@@ -12,7 +20,7 @@ struct ga2d_peer {
     int count, capacity;
 };
 
-ga2d_peer *ga2d_peer_create(double gx, double gy, int sleep, int capacity)
+ga2d_peer *GA2D_PEER_FN(create)(double gx, double gy, int sleep, int capacity)
 {
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_peer *p = (ga2d_peer *)calloc(1, sizeof *p);
@@ -23,13 +31,13 @@ ga2d_peer *ga2d_peer_create(double gx, double gy, int sleep, int capacity)
     p->ids = (ga2d_body_id *)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof *p->ids);
     p->capacity = capacity;
     if (!p->world || !p->ids) {
-        ga2d_peer_destroy(p);
+        GA2D_PEER_FN(destroy)(p);
         return NULL;
     }
     return p;
 }
 
-int ga2d_peer_add_box(ga2d_peer *p, int type, double x, double y, double hx, double hy, double vx, double vy,
+int GA2D_PEER_FN(add_box)(ga2d_peer *p, int type, double x, double y, double hx, double hy, double vx, double vy,
                       double w, double density, double friction, int asleep)
 {
     ga2d_body_def d = ga2d_default_body_def();
@@ -53,12 +61,12 @@ int ga2d_peer_add_box(ga2d_peer *p, int type, double x, double y, double hx, dou
     return p->count++;
 }
 
-int ga2d_peer_step(ga2d_peer *p, double dt)
+int GA2D_PEER_FN(step)(ga2d_peer *p, double dt)
 {
     return (int)ga2d_world_step(p->world, (ga2d_real)dt);
 }
 
-void ga2d_peer_pose(const ga2d_peer *p, int i, double *x, double *y, double *angle)
+void GA2D_PEER_FN(pose)(const ga2d_peer *p, int i, double *x, double *y, double *angle)
 {
     /* boxes are centred on their origin, so origin = centre */
     ga2d_vec c = ga2d_body_position(p->world, p->ids[i]);
@@ -67,25 +75,25 @@ void ga2d_peer_pose(const ga2d_peer *p, int i, double *x, double *y, double *ang
     *angle = (double)ga2d_body_angle(p->world, p->ids[i]);
 }
 
-void ga2d_peer_velocity(const ga2d_peer *p, int i, double *vx, double *vy)
+void GA2D_PEER_FN(velocity)(const ga2d_peer *p, int i, double *vx, double *vy)
 {
     ga2d_vec v = ga2d_body_velocity(p->world, p->ids[i]);
     *vx = (double)v.x;
     *vy = (double)v.y;
 }
 
-int ga2d_peer_is_awake(const ga2d_peer *p, int i)
+int GA2D_PEER_FN(is_awake)(const ga2d_peer *p, int i)
 {
     return ga2d_body_is_awake(p->world, p->ids[i]);
 }
 
-void ga2d_peer_set_velocity(ga2d_peer *p, int i, double vx, double vy, double w)
+void GA2D_PEER_FN(set_velocity)(ga2d_peer *p, int i, double vx, double vy, double w)
 {
     ga2d_body_set_velocity(p->world, p->ids[i], ga2d_vec_make((ga2d_real)vx, (ga2d_real)vy));
     ga2d_body_set_angular_velocity(p->world, p->ids[i], (ga2d_real)w);
 }
 
-void ga2d_peer_destroy(ga2d_peer *p)
+void GA2D_PEER_FN(destroy)(ga2d_peer *p)
 {
     if (!p) return;
     if (p->world) ga2d_world_destroy(p->world);
@@ -93,7 +101,7 @@ void ga2d_peer_destroy(ga2d_peer *p)
     free(p);
 }
 
-const char *ga2d_peer_compiler(void)
+const char *GA2D_PEER_FN(compiler)(void)
 {
 #if defined(__clang__)
     return "clang " __clang_version__;
@@ -104,12 +112,12 @@ const char *ga2d_peer_compiler(void)
 #endif
 }
 
-int ga2d_peer_real_is_double(void)
+int GA2D_PEER_FN(real_is_double)(void)
 {
     return sizeof(ga2d_real) == sizeof(double);
 }
 
-const char *ga2d_peer_settings(void)
+const char *GA2D_PEER_FN(settings)(void)
 {
     /* read back from the defaults, so the line cannot go stale */
     static char line[200];

@@ -14,23 +14,35 @@ extern "C" {
 
 typedef struct ga2d_peer ga2d_peer;
 
-/* A world from ga2d_default_world_def() with this gravity and sleep
-   switch, room for `capacity` bodies; NULL on failure. */
-ga2d_peer *ga2d_peer_create(double gx, double gy, int sleep, int capacity);
-/* A box body of half-extents hx, hy centred at (x, y); restitution 0.
-   Returns its index, or -1 when ga2d refuses it. */
-int ga2d_peer_add_box(ga2d_peer *p, int type, double x, double y, double hx, double hy, double vx, double vy,
-                      double w, double density, double friction, int asleep);
-int ga2d_peer_step(ga2d_peer *p, double dt); /* 0, or ga2d's error code */
-void ga2d_peer_pose(const ga2d_peer *p, int i, double *x, double *y, double *angle);
-void ga2d_peer_velocity(const ga2d_peer *p, int i, double *vx, double *vy);
-int ga2d_peer_is_awake(const ga2d_peer *p, int i);
-void ga2d_peer_set_velocity(ga2d_peer *p, int i, double vx, double vy, double w);
-void ga2d_peer_destroy(ga2d_peer *p);
+/* The functions, declared once per build of ga2d_peer.c: prefix
+   ga2d_peer_ for the generic build, ga2d_peer_avx2_ for the one compiled
+   with -mavx2 (GA2D_PEER_AVX2 defined; 8 float lanes), which the Makefile
+   adds where the CPU has AVX2.  Per function:
+     create        a world from ga2d_default_world_def() with this gravity
+                   and sleep switch, room for `capacity` bodies; NULL on
+                   failure;
+     add_box       a box body of half-extents hx, hy centred at (x, y),
+                   restitution 0; its index, or -1 when ga2d refuses it;
+     step          0, or ga2d's error code;
+     compiler      the compiler that built ga2d_peer.c;
+     real_is_double  1 under GA2D_DOUBLE, else 0 (float);
+     settings      one line: the world settings used. */
+#define GA2D_PEER_FUNCTIONS(P)                                                                                   \
+    ga2d_peer *P##create(double gx, double gy, int sleep, int capacity);                                         \
+    int P##add_box(ga2d_peer *p, int type, double x, double y, double hx, double hy, double vx, double vy,         \
+                   double w, double density, double friction, int asleep);                                       \
+    int P##step(ga2d_peer *p, double dt);                                                                        \
+    void P##pose(const ga2d_peer *p, int i, double *x, double *y, double *angle);                                \
+    void P##velocity(const ga2d_peer *p, int i, double *vx, double *vy);                                         \
+    int P##is_awake(const ga2d_peer *p, int i);                                                                  \
+    void P##set_velocity(ga2d_peer *p, int i, double vx, double vy, double w);                                   \
+    void P##destroy(ga2d_peer *p);                                                                               \
+    const char *P##compiler(void);                                                                               \
+    int P##real_is_double(void);                                                                                 \
+    const char *P##settings(void);
 
-const char *ga2d_peer_compiler(void); /* the compiler that built ga2d_peer.c */
-int ga2d_peer_real_is_double(void);   /* 1 under GA2D_DOUBLE, else 0 (float) */
-const char *ga2d_peer_settings(void); /* one line: the world settings used */
+GA2D_PEER_FUNCTIONS(ga2d_peer_)
+GA2D_PEER_FUNCTIONS(ga2d_peer_avx2_)
 
 #ifdef __cplusplus
 }
