@@ -1,4 +1,4 @@
-/* ga2d_physics.h - v0.6.0 - 2D rigid-body physics of convex polygons,
+/* ga2d_physics.h - v0.7.0 - 2D rigid-body physics of convex polygons,
    written in the geometric algebra of the plane.   MIT / public domain.
 
    ==========================================================================
@@ -236,6 +236,9 @@
    ==========================================================================
    VERSION HISTORY
    ==========================================================================
+   0.7.0  a manifold's two normal points are solved together (a 2x2
+          complementarity block) instead of one after the other: stacks
+          no longer lean the way the points are ordered.
    0.6.0  the velocity passes run on groups of constraints with no moved
           body in common, a SIMD lane each (4 floats or 2 doubles; 8 or 4
           under AVX), in the same Gauss-Seidel order and with the same bits
@@ -261,7 +264,7 @@
 #include <stdint.h>
 
 #define GA2D_VERSION_MAJOR 0
-#define GA2D_VERSION_MINOR 6
+#define GA2D_VERSION_MINOR 7
 #define GA2D_VERSION_PATCH 0
 
 #ifndef GA2D_MAX_POLYGON_VERTICES
