@@ -434,7 +434,8 @@ GA2D_API ga2d_result ga2d_polygon_make(const ga2d_vec *pts, int n, ga2d_polygon 
    points), COLLINEAR_POINTS, TOO_MANY_POINTS (the hull has more than
    GA2D_MAX_POLYGON_VERTICES), NOT_FINITE, TOO_LARGE or DEGENERATE (also
    for a cloud too small for ga2d_polygon_make, whatever its shape).
-   Needs no memory beyond the stack: gift wrapping, O(n h). */
+   Needs no memory beyond the stack: Andrew's monotone chains, wrapped
+   without sorting, O(n h). */
 GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon *out);
 /* Axis-aligned box centred on the origin; count 0 if a half-extent is not
    finite and positive. */
@@ -1275,62 +1276,52 @@ GA2D_API ga2d_result ga2d_polygon_make(const ga2d_vec *pts, int n, ga2d_polygon 
     return GA2D_OK;
 }
 
-/* One gift-wrapping step from p, reached along direction u (zero at the
-   start): the point q such that no point lies clearly right of p->q.
-   Points within tol of p are welded to it, and points behind p on the line
-   it was reached along (the edge just wrapped) are not candidates.  The
-   most clockwise candidate is found first, with a comparison that orders
-   directions exactly (by their side of u, then by wedge), so the order of
-   the points cannot matter; then the farthest point ahead within tol of
-   that line, so points on an edge are dropped.  Taking a farther point
-   turns the line by up to tol at its distance, which a nearer point can
-   be clearly right of: then that point is the new most clockwise, and the
-   search repeats (each round ends farther out).  -1 if every point welds
-   to p. */
-static int ga2d__hull_behind(ga2d_vec u, ga2d_vec d, ga2d_real tol)
+/* The hull is wrapped as Andrew's two monotone chains, without sorting:
+   the lower chain from the lexicographically smallest point (least x, then
+   least y) to the largest, the upper chain back.  Each step looks only at
+   points lexicographically after p (lower) or before it (upper), so every
+   step makes progress and a chain ends within n steps whatever rounding
+   does to the comparisons (a wrap with tolerances in its choices can
+   cycle when a cloud's features are near tol).  The candidates'
+   directions lie in one half-plane, where the wedge orders them; the most
+   clockwise wins, and of points on one line the farthest, so points on an
+   edge go.  Directions are compared scaled to a largest component of 1:
+   the wedge of two tiny vectors (1e-35 apart in float) would underflow to
+   0 and order nothing.  -1 when p ends its chain. */
+static int ga2d__lex_less(ga2d_vec a, ga2d_vec b)
 {
-    return ga2d_dot(u, d) < 0 && ga2d_wedge(u, d) <= tol * ga2d_vec_length(u);
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
 }
 
-/* 0: clockwise of ref (its right side), 1: on ref or left of it, 2: opposite */
-static int ga2d__hull_side(ga2d_vec ref, ga2d_vec d)
+static ga2d_vec ga2d__direction(ga2d_vec d)
 {
-    ga2d_real w = ga2d_wedge(ref, d);
-    return w < 0 ? 0 : (w > 0 || ga2d_dot(ref, d) > 0) ? 1 : 2;
+    ga2d_real ax = GA2D__FABS(d.x), ay = GA2D__FABS(d.y), m = ax > ay ? ax : ay;
+    return ga2d_vec_make(d.x / m, d.y / m);
 }
 
-static int ga2d__hull_next(const ga2d_vec *pts, int n, ga2d_vec p, ga2d_vec u, ga2d_real tol)
+static int ga2d__hull_step(const ga2d_vec *pts, int n, ga2d_vec p, int upper)
 {
-    int q = -1, best = -1, r, k, sb = 0;
-    /* the start is the lowest of the leftmost points: every other point
-       turns counter-clockwise from straight down by [0, pi] */
-    ga2d_vec ref = (u.x == 0 && u.y == 0) ? ga2d_vec_make(0, -1) : u, db = ga2d_vec_make(0, 0), dq;
-    ga2d_real lq;
+    int q = -1, r;
+    ga2d_vec uq = ga2d_vec_make(0, 0);
+    ga2d_real lq = 0;
     for (r = 0; r < n; ++r) {
-        ga2d_vec d = ga2d_vec_sub(pts[r], p);
-        int sd;
-        if (ga2d_vec_length(d) <= tol || ga2d__hull_behind(u, d, tol)) continue;
-        sd = ga2d__hull_side(ref, d);
-        if (best < 0 || sd < sb || (sd == sb && sd < 2 && ga2d_wedge(db, d) < 0)) { best = r; db = d; sb = sd; }
-    }
-    for (k = 0; best >= 0 && k <= n; ++k) {
-        ga2d_real lb = ga2d_vec_length(db);
-        int right = -1;
-        q = best;
-        dq = db;
-        lq = lb;
-        for (r = 0; r < n; ++r) {
-            ga2d_vec d = ga2d_vec_sub(pts[r], p);
-            ga2d_real lr = ga2d_vec_length(d);
-            if (lr > lq && ga2d_dot(db, d) > 0 && GA2D__FABS(ga2d_wedge(db, d)) <= tol * lb) { q = r; dq = d; lq = lr; }
+        ga2d_vec d, u;
+        ga2d_real w, l;
+        if (upper ? !ga2d__lex_less(pts[r], p) : !ga2d__lex_less(p, pts[r])) continue;
+        d = ga2d_vec_sub(pts[r], p);
+        if (d.x == 0 && d.y == 0) continue; /* apart by less than rounding */
+        u = ga2d__direction(d);
+        l = ga2d_vec_length(d);
+        w = ga2d_wedge(uq, u);
+        /* w == 0: one line, the farther point wins; or nearly opposite
+           directions at the half-plane's two ends (the wedge rounded to
+           0), where the one nearer its start (straight down for the
+           lower chain, up for the upper) is the more clockwise */
+        if (q < 0 || w < 0 || (w == 0 && (ga2d_dot(uq, u) > 0 ? l > lq : upper ? u.y > uq.y : u.y < uq.y))) {
+            q = r;
+            uq = u;
+            lq = l;
         }
-        for (r = 0; r < n && right < 0; ++r) {
-            ga2d_vec d = ga2d_vec_sub(pts[r], p);
-            if (ga2d_wedge(dq, d) < -tol * lq && ga2d_vec_length(d) > tol && !ga2d__hull_behind(u, d, tol)) right = r;
-        }
-        if (right < 0) break;
-        best = right;
-        db = ga2d_vec_sub(pts[right], p);
     }
     return q;
 }
@@ -1343,8 +1334,10 @@ static int ga2d__hull_next(const ga2d_vec *pts, int n, ga2d_vec p, ga2d_vec u, g
 static int ga2d__hull_drop(const ga2d_vec *pts, int n, ga2d_vec a, ga2d_vec v, ga2d_vec b, ga2d_real tol)
 {
     ga2d_vec e = ga2d_vec_sub(b, a);
-    ga2d_real d = ga2d__line_distance(a, b, v), len = ga2d_vec_length(e);
+    ga2d_real len = ga2d_vec_length(e), d;
     int i;
+    if (len == 0) return 0; /* a and b are one point: a segment's far end stays */
+    d = ga2d__line_distance(a, b, v);
     if (d <= tol / 4) return 1;
     if (d > tol) return 0;
     for (i = 0; i < n; ++i)
@@ -1354,11 +1347,12 @@ static int ga2d__hull_drop(const ga2d_vec *pts, int n, ga2d_vec a, ga2d_vec v, g
 
 GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon *out)
 {
-    enum { CAP = GA2D_MAX_POLYGON_VERTICES + 2 };
-    ga2d_vec hull[CAP], u;
+    /* room for both chains' vertices before the last drops */
+    enum { CAP = 2 * GA2D_MAX_POLYGON_VERTICES + 4 };
+    ga2d_vec hull[CAP];
     ga2d_real L, tol;
     ga2d_result r;
-    int i, h = 0, start = 0, p, steps;
+    int i, h = 0, start = 0, p, upper;
     if (!out || (n > 0 && !pts) || n < 0) return GA2D_ERR_INVALID_ARGUMENT;
     r = ga2d__check_points(pts, n, &L);
     if (r != GA2D_OK) return r;
@@ -1368,32 +1362,24 @@ GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon 
         return GA2D_ERR_DEGENERATE;
     tol = 4 * GA2D__POLY_REL_TOL * L;
     for (i = 1; i < n; ++i)
-        if (pts[i].x < pts[start].x || (pts[i].x == pts[start].x && pts[i].y < pts[start].y)) start = i;
+        if (ga2d__lex_less(pts[i], pts[start])) start = i;
+    for (i = 0; i < n && ga2d_vec_length(ga2d_vec_sub(pts[i], pts[start])) <= tol; ++i) {}
+    if (i == n) return GA2D_ERR_TOO_FEW_POINTS; /* all points weld to one */
     hull[h++] = pts[start];
     p = start;
-    u = ga2d_vec_make(0, 0); /* the start is extreme: nothing lies behind it */
-    for (steps = 0;; ++steps) {
-        int q = ga2d__hull_next(pts, n, pts[p], u, tol);
-        if (q < 0 && h == 1) return GA2D_ERR_TOO_FEW_POINTS; /* all points are one */
-        if (q < 0) break; /* everything else lies behind, on one line: a segment */
-        if (q == start) break;
-        /* a point welded to the start closes the loop, unless a point lies
-           clearly outside the closing edge (the wrap reached the start's
-           neighbourhood early, in a cloud whose features are near tol) */
-        if (ga2d_vec_length(ga2d_vec_sub(pts[q], pts[start])) <= tol) {
-            ga2d_vec e = ga2d_vec_sub(pts[start], pts[p]);
-            ga2d_real le = ga2d_vec_length(e);
-            for (i = 0; i < n && ga2d_wedge(e, ga2d_vec_sub(pts[i], pts[p])) >= -tol * le; ++i) {}
-            if (i == n) break;
+    for (upper = 0; upper < 2; ++upper) {
+        int q;
+        while ((q = ga2d__hull_step(pts, n, pts[p], upper)) >= 0) {
+            /* a vertex within tol of the line past it goes at once, so
+               that near-duplicates and points on an edge never fill the
+               array */
+            while (h >= 2 && ga2d__hull_drop(pts, n, hull[h - 2], hull[h - 1], pts[q], tol)) --h;
+            if (h == CAP) return GA2D_ERR_TOO_MANY_POINTS;
+            hull[h++] = pts[q];
+            p = q;
         }
-        if (h == CAP) return GA2D_ERR_TOO_MANY_POINTS;
-        /* exact arithmetic closes the loop within n steps; rounding that
-           does not is a cloud too thin to wrap */
-        if (steps > n) return GA2D_ERR_DEGENERATE;
-        hull[h++] = pts[q];
-        u = ga2d_vec_sub(pts[q], pts[p]);
-        p = q;
     }
+    --h; /* the upper chain ended where the lower began */
     if (h == 2) {
         /* a segment: a third distinct point makes the cloud collinear */
         for (i = 0; i < n; ++i)
