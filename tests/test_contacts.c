@@ -450,6 +450,84 @@ static void debug_draw(void)
     ga2d_world_destroy(w);
 }
 
+/* A resting pair's manifold is carried along while the pair moves by under
+   half a slop, and computed anew beyond that.  A box rests on a static
+   slab, no gravity; it is then placed 0.2 slop right, 0.1 slop up and
+   turned by 2e-4 rad (its points move by under 0.5 slop, the turn times
+   twice its extent is under 0.5 slop): the step carries the manifold, and
+   it must agree with a fresh one on the placed bodies.  Then it is placed
+   0.6 slop farther: the manifold is computed anew, equal to the fresh one. */
+static void carried_manifolds(void)
+{
+    const double slop = GA2D_LINEAR_SLOP, turn = 2e-4;
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_world *w;
+    ga2d_body_id ground, box;
+    ga2d_contact_data cd;
+    ga2d_manifold fresh;
+    const ga2d_polygon *pg, *pb;
+    int k;
+    wd.gravity = ga2d_vec_make(0, 0);
+    w = ga2d_world_create(&wd);
+    bd.position = ga2d_vec_make(0, (ga2d_real)-0.5);
+    bd.polygon = ga2d_polygon_box(5, (ga2d_real)0.5);
+    ground = ga2d_body_create(w, &bd);
+    bd.type = GA2D_BODY_DYNAMIC;
+    bd.position = ga2d_vec_make((ga2d_real)0.3, (ga2d_real)0.5);
+    bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+    box = ga2d_body_create(w, &bd);
+    pg = ga2d_body_polygon(w, ground);
+    pb = ga2d_body_polygon(w, box);
+    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+    CHECK(ga2d_world_get_counters(w).manifolds_carried == 0); /* a new contact */
+    CHECK(ga2d_world_get_contacts(w, &cd, 1) == 1);
+
+    ga2d_body_set_transform(w, box, ga2d_vec_make((ga2d_real)(0.3 + 0.2 * slop), (ga2d_real)(0.5 + 0.1 * slop)),
+                            ga2d_rotor_from_angle((ga2d_real)turn));
+    ga2d_body_set_velocity(w, box, ga2d_vec_make(0, 0));
+    ga2d_body_set_angular_velocity(w, box, 0);
+    CHECK(ga2d_collide_polygons(pg, ga2d_body_transform(w, ground), pb, ga2d_body_transform(w, box), &fresh) == 2);
+    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+    CHECK(ga2d_world_get_counters(w).manifolds_carried == 1);
+    CHECK(ga2d_world_get_contacts(w, &cd, 1) == 1);
+    CHECK(cd.manifold.count == 2);
+    CHECK_NEAR(cd.manifold.normal.x, fresh.normal.x, 16 * REAL_EPS);
+    CHECK_NEAR(cd.manifold.normal.y, fresh.normal.y, 16 * REAL_EPS);
+    for (k = 0; k < 2; ++k) {
+        const ga2d_manifold_point *c = &cd.manifold.points[k], *f = &fresh.points[k];
+        CHECK(c->id == f->id);
+        CHECK(c->persisted);
+        /* the box's corners are the points, and they moved with the box
+           from a separation of 0: the carried separation is the fresh one
+           up to rounding in coordinates of about 1 m (16 eps) */
+        CHECK_NEAR(c->separation, f->separation, 16 * REAL_EPS);
+        /* the carried point lies midway between the slab's surface point,
+           where it was, and the box's, moved on: it trails the fresh one
+           by half the corner's motion along the face, at most 0.2 slop
+           and the turn at the corner's 0.71 m from the centre */
+        CHECK_NEAR(c->point.x, f->point.x, 0.5 * (0.2 * slop + turn * 0.71) + 16 * REAL_EPS);
+        CHECK_NEAR(c->point.y, f->point.y, 16 * REAL_EPS);
+    }
+
+    ga2d_body_set_transform(w, box, ga2d_vec_make((ga2d_real)(0.3 + 0.8 * slop), (ga2d_real)(0.5 + 0.1 * slop)),
+                            ga2d_rotor_from_angle((ga2d_real)turn));
+    ga2d_body_set_velocity(w, box, ga2d_vec_make(0, 0));
+    ga2d_body_set_angular_velocity(w, box, 0);
+    CHECK(ga2d_collide_polygons(pg, ga2d_body_transform(w, ground), pb, ga2d_body_transform(w, box), &fresh) == 2);
+    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+    CHECK(ga2d_world_get_counters(w).manifolds_carried == 0);
+    CHECK(ga2d_world_get_contacts(w, &cd, 1) == 1);
+    CHECK(cd.manifold.count == 2);
+    for (k = 0; k < 2; ++k) {
+        CHECK(cd.manifold.points[k].id == fresh.points[k].id);
+        CHECK(cd.manifold.points[k].separation == fresh.points[k].separation);
+        CHECK(cd.manifold.points[k].point.x == fresh.points[k].point.x);
+        CHECK(cd.manifold.points[k].point.y == fresh.points[k].point.y);
+    }
+    ga2d_world_destroy(w);
+}
+
 void suite_contacts(void)
 {
     test_run("contacts: pair set equals O(n^2) check, 1000 bodies x 200 steps", pairs_match_brute_force);
@@ -460,4 +538,5 @@ void suite_contacts(void)
     test_run("contacts: late static bodies and teleports", teleport_and_new_static);
     test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory);
     test_run("contacts: debug draw", debug_draw);
+    test_run("contacts: a resting pair's manifold is carried, and remade past half a slop", carried_manifolds);
 }
