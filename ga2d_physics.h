@@ -2159,7 +2159,11 @@ typedef struct ga2d__constraint {
 #else
 #define GA2D__BYTES 16
 #endif
-#define GA2D__LANES (GA2D__BYTES / (int)sizeof(ga2d_real))
+#ifdef GA2D_DOUBLE
+#define GA2D__LANES (GA2D__BYTES / 8)
+#else
+#define GA2D__LANES (GA2D__BYTES / 4)
+#endif
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(GA2D_NO_SIMD)
 /* aligned to one element, as a user's allocator owes no more */
 #ifdef GA2D_DOUBLE
@@ -2245,9 +2249,10 @@ static GA2D__HOT ga2d__w ga2d__wdot(ga2d__w a, ga2d__w b, ga2d__w x, ga2d__w y)
 /* A body as the passes see it: velocity, spin, and its motion since the
    step began (displacement dp, turn dq = q q0~).  Bodies that do not move
    keep v, w and a zero motion; one slot past the last body is a dummy for
-   empty lanes. */
+   empty lanes.  Eight reals, so that the lanes' bodies load as whole rows
+   and are transposed in registers (ga2d__wload). */
 typedef struct ga2d__sbody {
-    ga2d_real vx, vy, w, dpx, dpy, dqc, dqs;
+    ga2d_real vx, vy, w, pad, dpx, dpy, dqc, dqs;
 } ga2d__sbody;
 
 /* GA2D__LANES constraints, lane by lane: the bodies (the dummy slot in an empty
@@ -2256,7 +2261,7 @@ typedef struct ga2d__sbody {
    have zero masses, so their impulses stay zero. */
 typedef struct ga2d__group {
     int a[GA2D__LANES], b[GA2D__LANES], con[GA2D__LANES];
-    int moves[GA2D__LANES]; /* bit 0: the lane moves A, bit 1: B */
+    ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
     int count;              /* lanes in use */
     int skip;               /* when full: a later group to look at first */
     ga2d__w nx, ny, friction, ima, iia, imb, iib;
@@ -4184,64 +4189,192 @@ static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__constraint *c, const ga2d
 
 
 /* The lanes' bodies in registers. */
-typedef struct ga2d__wbody { ga2d__w vx, vy, w, dpx, dpy, qc, qs; } ga2d__wbody;
+typedef struct ga2d__wbody { ga2d__w vx, vy, w, pad, dpx, dpy, qc, qs; } ga2d__wbody;
 /* A point's anchors now, relative to each centre. */
 typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
 
-/* The lanes' bodies, field by field (each vector made whole at once: the
-   compiler then sees every lane written). */
-#define GA2D__G(s, slot, f, i) (s)[(slot)[i]].f
-#if GA2D__BYTES == 32 && !defined(GA2D_DOUBLE)
-#define GA2D__GATHER(s, slot, f)                                                                                       \
-    ga2d__wset(GA2D__G(s, slot, f, 0), GA2D__G(s, slot, f, 1), GA2D__G(s, slot, f, 2), GA2D__G(s, slot, f, 3),          \
-               GA2D__G(s, slot, f, 4), GA2D__G(s, slot, f, 5), GA2D__G(s, slot, f, 6), GA2D__G(s, slot, f, 7))
-static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b, ga2d_real c, ga2d_real d, ga2d_real e, ga2d_real f,
-                                    ga2d_real g, ga2d_real h)
+/* The lanes' bodies as whole rows: lane l's body, GA2D__LANES reals at a
+   time, is row l of a square block; transposed in registers, row k holds
+   field k of every lane.  Gathering field by field instead costs a scalar
+   load and an insert per lane and field (large_pyramid: 8 % slower).  It
+   needs the compiler's vector shuffle: clang's and gcc 12's
+   __builtin_shufflevector, or older gcc's __builtin_shuffle in C (its
+   index vector is a compound literal, which C++ lacks). */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(GA2D_NO_SIMD)
+#if defined(__clang__) || __GNUC__ >= 12
+#define GA2D__SHUF(a, b, ...) __builtin_shufflevector(a, b, __VA_ARGS__)
+#elif !defined(__cplusplus)
+#define GA2D__SHUF(a, b, ...) __builtin_shuffle(a, b, (ga2d__wmask){__VA_ARGS__})
+#endif
+#endif
+#ifdef GA2D__SHUF
+static GA2D__HOT ga2d__w ga2d__wrow(const ga2d_real *p)
 {
-    ga2d__w r = GA2D__WINIT(a, b, c, d, e, f, g, h);
+    ga2d__w r;
+    memcpy(&r, p, sizeof r);
     return r;
 }
-#elif GA2D__BYTES == 32 || !defined(GA2D_DOUBLE)
-#define GA2D__GATHER(s, slot, f)                                                                                       \
-    ga2d__wset(GA2D__G(s, slot, f, 0), GA2D__G(s, slot, f, 1), GA2D__G(s, slot, f, 2), GA2D__G(s, slot, f, 3))
-static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b, ga2d_real c, ga2d_real d)
+
+/* r[0 .. GA2D__LANES-1] transposed in place.  Written out, as are the
+   row loops below: gcc -O2 does not unroll them, and rolled they keep
+   the rows in memory. */
+static GA2D__HOT void ga2d__wtranspose(ga2d__w *r)
 {
-    ga2d__w r = GA2D__WINIT(a, b, c, d);
-    return r;
+#if GA2D__LANES == 2
+    ga2d__w t0 = GA2D__SHUF(r[0], r[1], 0, 2), t1 = GA2D__SHUF(r[0], r[1], 1, 3);
+    r[0] = t0;
+    r[1] = t1;
+#elif GA2D__LANES == 4
+    ga2d__w t0 = GA2D__SHUF(r[0], r[1], 0, 4, 1, 5), t1 = GA2D__SHUF(r[2], r[3], 0, 4, 1, 5);
+    ga2d__w t2 = GA2D__SHUF(r[0], r[1], 2, 6, 3, 7), t3 = GA2D__SHUF(r[2], r[3], 2, 6, 3, 7);
+    r[0] = GA2D__SHUF(t0, t1, 0, 1, 4, 5);
+    r[1] = GA2D__SHUF(t0, t1, 2, 3, 6, 7);
+    r[2] = GA2D__SHUF(t2, t3, 0, 1, 4, 5);
+    r[3] = GA2D__SHUF(t2, t3, 2, 3, 6, 7);
+#else /* 8: pairs of rows interleaved, then pairs of pairs, then halves */
+#define GA2D__EVEN 0, 8, 2, 10, 4, 12, 6, 14
+#define GA2D__ODD 1, 9, 3, 11, 5, 13, 7, 15
+#define GA2D__LO2 0, 1, 8, 9, 4, 5, 12, 13
+#define GA2D__HI2 2, 3, 10, 11, 6, 7, 14, 15
+#define GA2D__LO4 0, 1, 2, 3, 8, 9, 10, 11
+#define GA2D__HI4 4, 5, 6, 7, 12, 13, 14, 15
+    ga2d__w u0, u1, u2, u3, u4, u5, u6, u7, v0, v1, v2, v3, v4, v5, v6, v7;
+    u0 = GA2D__SHUF(r[0], r[1], GA2D__EVEN);
+    u1 = GA2D__SHUF(r[0], r[1], GA2D__ODD);
+    u2 = GA2D__SHUF(r[2], r[3], GA2D__EVEN);
+    u3 = GA2D__SHUF(r[2], r[3], GA2D__ODD);
+    u4 = GA2D__SHUF(r[4], r[5], GA2D__EVEN);
+    u5 = GA2D__SHUF(r[4], r[5], GA2D__ODD);
+    u6 = GA2D__SHUF(r[6], r[7], GA2D__EVEN);
+    u7 = GA2D__SHUF(r[6], r[7], GA2D__ODD);
+    v0 = GA2D__SHUF(u0, u2, GA2D__LO2);
+    v2 = GA2D__SHUF(u0, u2, GA2D__HI2);
+    v1 = GA2D__SHUF(u1, u3, GA2D__LO2);
+    v3 = GA2D__SHUF(u1, u3, GA2D__HI2);
+    v4 = GA2D__SHUF(u4, u6, GA2D__LO2);
+    v6 = GA2D__SHUF(u4, u6, GA2D__HI2);
+    v5 = GA2D__SHUF(u5, u7, GA2D__LO2);
+    v7 = GA2D__SHUF(u5, u7, GA2D__HI2);
+    r[0] = GA2D__SHUF(v0, v4, GA2D__LO4);
+    r[4] = GA2D__SHUF(v0, v4, GA2D__HI4);
+    r[1] = GA2D__SHUF(v1, v5, GA2D__LO4);
+    r[5] = GA2D__SHUF(v1, v5, GA2D__HI4);
+    r[2] = GA2D__SHUF(v2, v6, GA2D__LO4);
+    r[6] = GA2D__SHUF(v2, v6, GA2D__HI4);
+    r[3] = GA2D__SHUF(v3, v7, GA2D__LO4);
+    r[7] = GA2D__SHUF(v3, v7, GA2D__HI4);
+#undef GA2D__EVEN
+#undef GA2D__ODD
+#undef GA2D__LO2
+#undef GA2D__HI2
+#undef GA2D__LO4
+#undef GA2D__HI4
+#endif
 }
+
+/* Rows j .. j + GA2D__LANES - 1 of the block: lane l's body from real j
+   on, into f[j + l] (load), or back (store). */
+#define GA2D__ROW(l) f[j + (l)] = ga2d__wrow(&s[slot[l]].vx + j)
+#define GA2D__PUT(l) memcpy(&s[slot[l]].vx + j, &f[j + (l)], sizeof f[0])
+#if GA2D__LANES == 2
+#define GA2D__ROWS(op) op(0); op(1)
+#elif GA2D__LANES == 4
+#define GA2D__ROWS(op) op(0); op(1); op(2); op(3)
 #else
-#define GA2D__GATHER(s, slot, f) ga2d__wset(GA2D__G(s, slot, f, 0), GA2D__G(s, slot, f, 1))
-static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b)
-{
-    ga2d__w r = GA2D__WINIT(a, b);
-    return r;
-}
+#define GA2D__ROWS(op) op(0); op(1); op(2); op(3); op(4); op(5); op(6); op(7)
 #endif
 
-static GA2D__HOT void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__wbody *o)
+static GA2D__HOT void ga2d__wload_block(const ga2d__sbody *s, const int *slot, int j, ga2d__w *f)
 {
-    o->vx = GA2D__GATHER(s, slot, vx);
-    o->vy = GA2D__GATHER(s, slot, vy);
-    o->w = GA2D__GATHER(s, slot, w);
-    o->dpx = GA2D__GATHER(s, slot, dpx);
-    o->dpy = GA2D__GATHER(s, slot, dpy);
-    o->qc = GA2D__GATHER(s, slot, dqc);
-    o->qs = GA2D__GATHER(s, slot, dqs);
+    GA2D__ROWS(GA2D__ROW);
+    ga2d__wtranspose(&f[j]);
 }
 
-/* Velocities back, for the bodies the lanes move (`bit` 1: A, 2: B); a
-   body a lane does not move may be another lane's too, and keeps its own. */
-static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, const int *moves, int bit, const ga2d__wbody *o)
+static GA2D__HOT void ga2d__wstore_block(ga2d__sbody *s, const int *slot, int j, ga2d__w *f)
+{
+    ga2d__wtranspose(&f[j]);
+    GA2D__ROWS(GA2D__PUT);
+}
+
+/* The eight fields of the lanes' bodies, block by block of rows. */
+static GA2D__HOT void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__wbody *o)
+{
+    ga2d__w f[8];
+    ga2d__wload_block(s, slot, 0, f);
+#if GA2D__LANES < 8
+    ga2d__wload_block(s, slot, GA2D__LANES, f);
+#endif
+#if GA2D__LANES == 2
+    ga2d__wload_block(s, slot, 4, f);
+    ga2d__wload_block(s, slot, 6, f);
+#endif
+    o->vx = f[0];
+    o->vy = f[1];
+    o->w = f[2];
+    o->pad = f[3];
+    o->dpx = f[4];
+    o->dpy = f[5];
+    o->qc = f[6];
+    o->qs = f[7];
+}
+
+/* Velocities back where mask m is set (the bodies the lanes move); other
+   lanes write back what they loaded (orig): a body a lane does not move
+   may be another lane's too, and keeps its own.  Only the rows that hold
+   v and w are written (all eight reals with 8 lanes). */
+static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, ga2d__wmask m, const ga2d__wbody *o,
+                                   const ga2d__wbody *orig)
+{
+    ga2d__w f[8];
+    f[0] = ga2d__wsel(m, o->vx, orig->vx);
+    f[1] = ga2d__wsel(m, o->vy, orig->vy);
+    f[2] = ga2d__wsel(m, o->w, orig->w);
+    f[3] = orig->pad;
+#if GA2D__LANES == 8
+    f[4] = orig->dpx;
+    f[5] = orig->dpy;
+    f[6] = orig->qc;
+    f[7] = orig->qs;
+#endif
+    ga2d__wstore_block(s, slot, 0, f);
+#if GA2D__LANES == 2
+    ga2d__wstore_block(s, slot, 2, f);
+#endif
+}
+#undef GA2D__ROW
+#undef GA2D__PUT
+#undef GA2D__ROWS
+#else
+/* Without vector types, field by field. */
+static void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__wbody *o)
 {
     int l;
     for (l = 0; l < GA2D__LANES; ++l) {
+        const ga2d__sbody *b = &s[slot[l]];
+        GA2D__LANE(o->vx, l) = b->vx;
+        GA2D__LANE(o->vy, l) = b->vy;
+        GA2D__LANE(o->w, l) = b->w;
+        GA2D__LANE(o->pad, l) = b->pad;
+        GA2D__LANE(o->dpx, l) = b->dpx;
+        GA2D__LANE(o->dpy, l) = b->dpy;
+        GA2D__LANE(o->qc, l) = b->dqc;
+        GA2D__LANE(o->qs, l) = b->dqs;
+    }
+}
+
+static void ga2d__wstore(ga2d__sbody *s, const int *slot, ga2d__wmask m, const ga2d__wbody *o, const ga2d__wbody *orig)
+{
+    int l;
+    (void)orig;
+    for (l = 0; l < GA2D__LANES; ++l) {
         ga2d__sbody *b = &s[slot[l]];
-        if (!(moves[l] & bit)) continue;
+        if (!GA2D__LANE(m, l)) continue;
         b->vx = GA2D__LANE(o->vx, l);
         b->vy = GA2D__LANE(o->vy, l);
         b->w = GA2D__LANE(o->w, l);
     }
 }
+#endif
 
 /* ga2d__point_now for the lanes (its comment says why), rearranged: with
    e = d + rB' - rA' (d the centres' offset now, r' the anchors turned by
@@ -4374,9 +4507,11 @@ static void ga2d__warm_start(ga2d_world *w)
     int gi, k;
     for (gi = 0; gi < w->group_count; ++gi) {
         const ga2d__group *g = &w->groups[gi];
-        ga2d__wbody A, B;
+        ga2d__wbody A, B, A0, B0;
         ga2d__wload(w->sbodies, g->a, &A);
         ga2d__wload(w->sbodies, g->b, &B);
+        A0 = A;
+        B0 = B;
         for (k = 0; k < 2; ++k) {
             ga2d__wanchors r;
             /* tangent (ny, -nx) */
@@ -4385,8 +4520,8 @@ static void ga2d__warm_start(ga2d_world *w)
             ga2d__wpoint_now(g, k, &A, &B, &r);
             ga2d__wapply(g, &A, &B, &r, px, py);
         }
-        ga2d__wstore(w->sbodies, g->a, g->moves, 1, &A);
-        ga2d__wstore(w->sbodies, g->b, g->moves, 2, &B);
+        ga2d__wstore(w->sbodies, g->a, g->move_a, &A, &A0);
+        ga2d__wstore(w->sbodies, g->b, g->move_b, &B, &B0);
     }
 }
 
@@ -4413,11 +4548,13 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
     for (gi = 0; gi < w->group_count; ++gi) {
         ga2d__group *g = &w->groups[gi];
         ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
-        ga2d__wbody A, B;
+        ga2d__wbody A, B, A0, B0;
         ga2d__wanchors r[2];
         ga2d__w inv_a[2], own[2], lambda[2];
         ga2d__wload(w->sbodies, g->a, &A);
         ga2d__wload(w->sbodies, g->b, &B);
+        A0 = A;
+        B0 = B;
         for (k = 0; k < 2; ++k) {
             ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k]);
             ga2d__wmask apart = ga2d__wgt(s, zero);
@@ -4456,8 +4593,8 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
             g->timp[k] = total;
             ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, dt), ga2d__wmul(ty, dt));
         }
-        ga2d__wstore(w->sbodies, g->a, g->moves, 1, &A);
-        ga2d__wstore(w->sbodies, g->b, g->moves, 2, &B);
+        ga2d__wstore(w->sbodies, g->a, g->move_a, &A, &A0);
+        ga2d__wstore(w->sbodies, g->b, g->move_b, &B, &B0);
     }
 }
 
@@ -4506,7 +4643,8 @@ static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__so
     g->a[l] = c->a;
     g->b[l] = c->b;
     g->con[l] = ci;
-    g->moves[l] = (c->inv_ma != 0 || c->inv_ia != 0) | (c->inv_mb != 0 || c->inv_ib != 0) << 1;
+    GA2D__LANE(g->move_a, l) = -(c->inv_ma != 0 || c->inv_ia != 0);
+    GA2D__LANE(g->move_b, l) = -(c->inv_mb != 0 || c->inv_ib != 0);
     c->lane = (int)(g - w->groups) * GA2D__LANES + l;
     ga2d__lane_write(g, l, c, ga2d_vec_sub(w->bodies[c->b].center, w->bodies[c->a].center), c->to_static ? stiff : soft,
                      none);
@@ -4520,7 +4658,7 @@ static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__so
         s->vx = b->v.x;
         s->vy = b->v.y;
         s->w = b->w;
-        s->dpx = s->dpy = s->dqs = 0;
+        s->pad = s->dpx = s->dpy = s->dqs = 0;
         s->dqc = 1;
     }
 }
@@ -4532,7 +4670,7 @@ static void ga2d__group_pad(ga2d_world *w, ga2d__group *g, const ga2d__constrain
     for (l = g->count; l < GA2D__LANES; ++l) {
         g->a[l] = g->b[l] = w->body_used;
         g->con[l] = -1;
-        g->moves[l] = 0;
+        GA2D__LANE(g->move_a, l) = GA2D__LANE(g->move_b, l) = 0;
         ga2d__lane_write(g, l, none, ga2d_vec_make(0, 0), zero, none);
     }
 }
@@ -4622,6 +4760,7 @@ static void ga2d__gather(ga2d_world *w)
         s->vx = b->v.x;
         s->vy = b->v.y;
         s->w = b->w;
+        s->pad = 0;
         s->dpx = b->center.x - b->center0.x;
         s->dpy = b->center.y - b->center0.y;
         s->dqc = dq.c;
