@@ -2267,6 +2267,7 @@ typedef struct ga2d__sbody {
    have zero masses, so their impulses stay zero. */
 typedef struct ga2d__group {
     int a[GA2D__LANES], b[GA2D__LANES], con[GA2D__LANES];
+    int contact[GA2D__LANES];   /* the constraint's contact (pool index) */
     ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
     int count;              /* lanes in use */
     int skip;               /* when full: a later group to look at first */
@@ -3813,7 +3814,11 @@ static void ga2d__contain(ga2d_world *w, int slot)
         for (i = 0; i < w->constraint_count; ++i) {
             ga2d__constraint *c = &w->constraints[i];
             if (c->a != slot && c->b != slot) continue;
-            for (k = 0; k < c->count; ++k) c->p[k].normal_impulse = c->p[k].tangent_impulse = c->p[k].restitution_impulse = 0;
+            for (k = 0; k < c->count; ++k) {
+                ga2d_manifold_point *mp = &w->contacts[c->contact].manifold.points[k];
+                c->p[k].normal_impulse = c->p[k].tangent_impulse = c->p[k].restitution_impulse = 0;
+                mp->normal_impulse = mp->tangent_impulse = 0;
+            }
             if (w->group_count > 0) ga2d__lane_clear(w, c->lane);
         }
     }
@@ -4631,6 +4636,7 @@ static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__so
     g->a[l] = c->a;
     g->b[l] = c->b;
     g->con[l] = ci;
+    g->contact[l] = c->contact;
     GA2D__LANE(g->move_a, l) = -(c->inv_ma != 0 || c->inv_ia != 0);
     GA2D__LANE(g->move_b, l) = -(c->inv_mb != 0 || c->inv_ib != 0);
     c->lane = (int)(g - w->groups) * GA2D__LANES + l;
@@ -4657,7 +4663,7 @@ static void ga2d__group_pad(ga2d_world *w, ga2d__group *g, const ga2d__constrain
     int l;
     for (l = g->count; l < GA2D__LANES; ++l) {
         g->a[l] = g->b[l] = w->body_used;
-        g->con[l] = -1;
+        g->con[l] = g->contact[l] = -1;
         GA2D__LANE(g->move_a, l) = GA2D__LANE(g->move_b, l) = 0;
         ga2d__lane_write(g, l, none, ga2d_vec_make(0, 0), zero, none);
     }
@@ -4782,17 +4788,19 @@ static void ga2d__lane_clear(ga2d_world *w, int lane)
     }
 }
 
-/* The groups' accumulated impulses back to the constraints. */
+/* The groups' accumulated impulses back to the contacts, to warm-start
+   the next step (straight to the manifolds: one pass over scattered
+   memory, not two). */
 static void ga2d__unbatch(ga2d_world *w)
 {
     int gi, l, k;
     for (gi = 0; gi < w->group_count; ++gi) {
         const ga2d__group *g = &w->groups[gi];
         for (l = 0; l < g->count; ++l) {
-            ga2d__constraint *c = &w->constraints[g->con[l]];
-            for (k = 0; k < c->count; ++k) {
-                c->p[k].normal_impulse = GA2D__LANE(g->nimp[k], l);
-                c->p[k].tangent_impulse = GA2D__LANE(g->timp[k], l);
+            ga2d_manifold *m = &w->contacts[g->contact[l]].manifold;
+            for (k = 0; k < m->count; ++k) {
+                m->points[k].normal_impulse = GA2D__LANE(g->nimp[k], l);
+                m->points[k].tangent_impulse = GA2D__LANE(g->timp[k], l);
             }
         }
     }
@@ -4914,20 +4922,6 @@ static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
                 c->p[k].restitution_impulse += lambda[k];
                 ga2d__apply_impulse(c, a, b, c->p[k].ra, c->p[k].rb, ga2d_vec_scale(c->normal, lambda[k]));
             }
-        }
-    }
-}
-
-/* The impulses go back to the contacts, to warm-start the next step. */
-static void ga2d__store_impulses(ga2d_world *w)
-{
-    int i, k;
-    for (i = 0; i < w->constraint_count; ++i) {
-        const ga2d__constraint *c = &w->constraints[i];
-        ga2d_manifold *m = &w->contacts[c->contact].manifold;
-        for (k = 0; k < c->count; ++k) {
-            m->points[k].normal_impulse = c->p[k].normal_impulse;
-            m->points[k].tangent_impulse = c->p[k].tangent_impulse;
         }
     }
 }
@@ -5097,21 +5091,17 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     }
     ga2d__unbatch(w);
     for (k = 0; k < w->moving_count; ++k) { /* positions too (RK4's own stages, huge coordinates) */
-        const ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d__body *b = &w->bodies[w->moving[k]];
         /* and velocities: a NaN impulse from a contained neighbour's
            contact reaches kinematic bodies too (0 x NaN) */
         if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s) || !ga2d__finite_vec(b->v) ||
             !ga2d__finite(b->w))
             ga2d__contain(w, w->moving[k]);
-    }
-    ga2d__store_impulses(w);
-    w->counters.constraint_count = w->constraint_count;
-    w->time = t0 + (double)dt;
-    for (k = 0; k < w->moving_count; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
         b->force = ga2d_vec_make(0, 0);
         b->torque = 0;
     }
+    w->counters.constraint_count = w->constraint_count;
+    w->time = t0 + (double)dt;
     if (w->def.enable_sleep) ga2d__update_sleep(w, dt);
     ++w->counters.step_count;
     w->locked = 0;
