@@ -2080,6 +2080,16 @@ GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, con
 }
 
 /* ============================================================== contacts */
+/* A touching manifold as ga2d__collide last made it, in A's frame, for
+   ga2d__reuse_manifold: B's placement in that frame then (xa^-1 xb), the
+   normal, each point (midway between the surfaces) and its separation.
+   Valid while the contact touches. */
+typedef struct ga2d__held {
+    ga2d_transform rel;
+    ga2d_vec normal, point[2];
+    ga2d_real separation[2];
+} ga2d__held;
+
 /* A contact joins two bodies whose fat boxes overlap.  Contacts live in a
    pool (stable index, free list) and on both bodies' lists: link value
    2 * contact + side, side 0 on body a's list and 1 on body b's. */
@@ -2090,14 +2100,7 @@ typedef struct ga2d__contact {
     ga2d_real friction, restitution;
     int touching;
     int wakes;               /* touched a sleeping body in this update */
-    /* the touching manifold as ga2d__collide last made it, in A's frame:
-       B's placement in that frame (xa^-1 xb), the normal, each point
-       (midway between the surfaces) and its separation.  held: 0 when
-       there is none (a new contact, or no points). */
-    ga2d_transform rel;
-    ga2d_vec local_normal, local_point[2];
-    ga2d_real local_separation[2];
-    int held;
+    ga2d__held held;         /* the manifold in A's frame, while touching */
     int next_free;           /* -2 while in use */
     uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
 } ga2d__contact;
@@ -2147,13 +2150,13 @@ typedef struct ga2d__constraint {
 #endif
 
 /* ------------------------------------------------------ the lane solver */
-/* The velocity passes (warm start, solve, relax) run on groups of four
+/* The velocity passes (warm start, solve, relax) run on groups of
    constraints that share no body they move, one constraint per lane, so
-   each pass is four independent sequential-impulse updates at once.  A
+   each pass is GA2D__LANES independent sequential-impulse updates at once.  A
    group is solved as a whole and the groups one after the other: still
    Gauss-Seidel, in an order close to the canonical one.  Under gcc and
    clang a lane set is a vector of the compiler's (SSE2 on x86-64, NEON on
-   arm64); elsewhere, or with GA2D_NO_SIMD, a struct of four.  Each lane
+   arm64); elsewhere, or with GA2D_NO_SIMD, a struct of lanes.  Each lane
    computes exactly what the scalar code would, operation for operation, so
    both give the same bits (the determinism check builds both). */
 /* 16 bytes, the width every 64-bit target has; 32 where the compiler is
@@ -2716,38 +2719,38 @@ static void ga2d__update_pairs(ga2d_world *w)
 static int ga2d__reuse_manifold(const ga2d_world *w, ga2d__contact *c, const ga2d__body *a, const ga2d__body *b,
                                 ga2d_transform xa, ga2d_transform xb)
 {
-    ga2d_transform t = ga2d_transform_mul(ga2d_transform_inv_mul(xa, xb), ga2d_transform_inverse(c->rel));
+    const ga2d__held *hd = &c->held;
+    ga2d_transform t = ga2d_transform_mul(ga2d_transform_inv_mul(xa, xb), ga2d_transform_inverse(hd->rel));
     ga2d_real eps = GA2D__R(0.5) * w->slop, reach = 2 * (a->extent < b->extent ? a->extent : b->extent);
     ga2d_vec moved[2], d_ab = ga2d_vec_sub(xb.p, xa.p);
     ga2d_manifold *m = &c->manifold;
     int k;
-    if (!c->held || !(t.q.c > 0) || !(GA2D__FABS(t.q.s) * reach <= eps)) return 0;
+    if (!c->touching || !(t.q.c > 0) || !(GA2D__FABS(t.q.s) * reach <= eps)) return 0;
     for (k = 0; k < m->count; ++k) {
-        moved[k] = ga2d_vec_sub(ga2d_transform_apply(t, c->local_point[k]), c->local_point[k]);
+        moved[k] = ga2d_vec_sub(ga2d_transform_apply(t, hd->point[k]), hd->point[k]);
         if (!(GA2D__FABS(moved[k].x) <= eps && GA2D__FABS(moved[k].y) <= eps)) return 0;
     }
-    m->normal = ga2d_rotate(xa.q, c->local_normal);
+    m->normal = ga2d_rotate(xa.q, hd->normal);
     for (k = 0; k < m->count; ++k) {
         ga2d_manifold_point *p = &m->points[k];
-        p->anchor_a = ga2d_rotate(xa.q, ga2d_vec_add(c->local_point[k], ga2d_vec_scale(moved[k], GA2D__R(0.5))));
+        p->anchor_a = ga2d_rotate(xa.q, ga2d_vec_add(hd->point[k], ga2d_vec_scale(moved[k], GA2D__R(0.5))));
         p->anchor_b = ga2d_vec_sub(p->anchor_a, d_ab);
         p->point = ga2d_vec_add(xa.p, p->anchor_a);
-        p->separation = c->local_separation[k] + ga2d_dot(moved[k], c->local_normal);
+        p->separation = hd->separation[k] + ga2d_dot(moved[k], hd->normal);
         p->persisted = 1;
     }
     return 1;
 }
 
 /* Keeps a new manifold in A's frame (xa: A's placement) for reuse. */
-static void ga2d__hold_manifold(ga2d__contact *c, ga2d_transform xa, ga2d_transform xb, const ga2d_manifold *m)
+static void ga2d__hold_manifold(ga2d__held *hd, ga2d_transform xa, ga2d_transform xb, const ga2d_manifold *m)
 {
     int k;
-    c->held = m->count > 0;
-    c->rel = ga2d_transform_inv_mul(xa, xb);
-    c->local_normal = ga2d_rotate_inv(xa.q, m->normal);
+    hd->rel = ga2d_transform_inv_mul(xa, xb);
+    hd->normal = ga2d_rotate_inv(xa.q, m->normal);
     for (k = 0; k < m->count; ++k) {
-        c->local_point[k] = ga2d_rotate_inv(xa.q, m->points[k].anchor_a);
-        c->local_separation[k] = m->points[k].separation;
+        hd->point[k] = ga2d_rotate_inv(xa.q, m->points[k].anchor_a);
+        hd->separation[k] = m->points[k].separation;
     }
 }
 
@@ -2787,7 +2790,7 @@ static void ga2d__update_contacts(ga2d_world *w)
             ga2d_real reach = ga2d__length(ga2d_vec_sub(b->v, a->v)) + GA2D__FABS(a->w) * a->extent +
                               GA2D__FABS(b->w) * b->extent;
             ga2d__collide(&a->polygon, xa, &b->polygon, xb, w->slop, w->speculative + reach * w->step_dt, &m);
-            ga2d__hold_manifold(c, xa, xb, &m);
+            ga2d__hold_manifold(&c->held, xa, xb, &m);
             for (i = 0; i < m.count; ++i)
                 for (j = 0; j < c->manifold.count; ++j)
                     if (c->manifold.points[j].id == m.points[i].id) {
@@ -4030,7 +4033,6 @@ static ga2d__soft ga2d__make_soft(ga2d_real hertz, ga2d_real zeta, ga2d_real h)
     return s;
 }
 
-
 /* The paper's impulse denominator for a direction d at anchors ra, rb:
    1/m_a + 1/m_b - (r_a ^ d)^2 / I_a - (r_b ^ d)^2 / I_b, where the
    bivector squares are negative ((w e12)^2 = -w^2), so with w = wedge:
@@ -4197,7 +4199,6 @@ static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__constraint *c, const ga2d
     *rb = ga2d_vec_sub(*ra, d);
     return p->separation + ga2d_dot(ga2d_vec_sub(db, da), c->normal);
 }
-
 
 /* The lanes' bodies in registers. */
 typedef struct ga2d__wbody { ga2d__w vx, vy, w, pad, dpx, dpy, qc, qs; } ga2d__wbody;
@@ -5128,12 +5129,10 @@ typedef struct ga2d__snap_header {
 
 /* A contact as saved: what its creation cannot recompute. */
 typedef struct ga2d__snap_contact {
-    int a, b, touching, held;
+    int a, b, touching, reserved;
     ga2d_manifold manifold;
     ga2d_real friction, restitution;
-    ga2d_transform rel;
-    ga2d_vec local_normal, local_point[2];
-    ga2d_real local_separation[2];
+    ga2d__held held;
     uint64_t serial;
 } ga2d__snap_contact;
 
@@ -5227,10 +5226,6 @@ static void ga2d__snap_payload(const ga2d_world *w, ga2d__writer *o, ga2d__snap_
         r->friction = c->friction;
         r->restitution = c->restitution;
         r->held = c->held;
-        r->rel = c->rel;
-        r->local_normal = c->local_normal;
-        memcpy(r->local_point, c->local_point, sizeof r->local_point);
-        memcpy(r->local_separation, c->local_separation, sizeof r->local_separation);
         r->serial = c->serial;
     }
     if (n > 1) qsort(scratch, (size_t)n, sizeof *scratch, ga2d__cmp_serial);
@@ -5372,16 +5367,16 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
     return 1;
 }
 
-/* A held manifold's frame data: finite, its rotor a unit one (what
+/* A touching contact's held manifold: finite, its rotor a unit one (what
    ga2d__reuse_manifold applies); only the manifold's points are read. */
-static int ga2d__snap_held_ok(const ga2d__snap_contact *c)
+static int ga2d__snap_held_ok(const ga2d__held *hd, int count)
 {
     int k;
-    ga2d_real n2 = c->rel.q.c * c->rel.q.c + c->rel.q.s * c->rel.q.s;
-    if (!ga2d__transform_ok(c->rel) || !ga2d__finite_vec(c->local_normal) || !(GA2D__FABS(n2 - 1) <= GA2D__R(1e-3)))
+    ga2d_real n2 = hd->rel.q.c * hd->rel.q.c + hd->rel.q.s * hd->rel.q.s;
+    if (!ga2d__transform_ok(hd->rel) || !ga2d__finite_vec(hd->normal) || !(GA2D__FABS(n2 - 1) <= GA2D__R(1e-3)))
         return 0;
-    for (k = 0; k < c->manifold.count; ++k)
-        if (!ga2d__finite_vec(c->local_point[k]) || !ga2d__finite(c->local_separation[k])) return 0;
+    for (k = 0; k < count; ++k)
+        if (!ga2d__finite_vec(hd->point[k]) || !ga2d__finite(hd->separation[k])) return 0;
     return 1;
 }
 
@@ -5401,8 +5396,7 @@ static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__reader *r)
         if (c.a < 0 || c.b >= t->body_used || c.a >= c.b || t->bodies[c.a].type < 0 || t->bodies[c.b].type < 0) return 0;
         if ((i > 0 && c.serial <= last) || c.serial >= serial) return 0;
         if (m->count < 0 || m->count > 2 || c.touching != (m->count > 0)) return 0;
-        if (c.held != 0 && (c.held != 1 || !c.touching || !ga2d__snap_held_ok(&c)))
-            return 0;
+        if (c.touching && !ga2d__snap_held_ok(&c.held, m->count)) return 0;
         if (!ga2d__finite(m->normal.x) || !ga2d__finite(m->normal.y) || !ga2d__finite(c.friction) ||
             !ga2d__finite(c.restitution) || c.friction < 0 || c.restitution < 0)
             return 0;
@@ -5422,10 +5416,6 @@ static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__reader *r)
         ct->friction = c.friction;
         ct->restitution = c.restitution;
         ct->held = c.held;
-        ct->rel = c.rel;
-        ct->local_normal = c.local_normal;
-        memcpy(ct->local_point, c.local_point, sizeof ct->local_point);
-        memcpy(ct->local_separation, c.local_separation, sizeof ct->local_separation);
         ct->serial = c.serial;
         last = c.serial;
     }

@@ -450,6 +450,24 @@ static void debug_draw(void)
     ga2d_world_destroy(w);
 }
 
+/* Places the box of carried_manifolds at (0.3 + dx, 0.5 + 0.1 slop),
+   turned by `turn`, at rest; the manifold a fresh collision gives there
+   (*fresh), then one step and the world's contact (*cd): both must have
+   two points. */
+static void place_and_step(ga2d_world *w, ga2d_body_id ground, ga2d_body_id box, double dx, double turn,
+                           ga2d_manifold *fresh, ga2d_contact_data *cd)
+{
+    ga2d_body_set_transform(w, box, ga2d_vec_make((ga2d_real)(0.3 + dx), (ga2d_real)(0.5 + 0.1 * GA2D_LINEAR_SLOP)),
+                            ga2d_rotor_from_angle((ga2d_real)turn));
+    ga2d_body_set_velocity(w, box, ga2d_vec_make(0, 0));
+    ga2d_body_set_angular_velocity(w, box, 0);
+    CHECK(ga2d_collide_polygons(ga2d_body_polygon(w, ground), ga2d_body_transform(w, ground), ga2d_body_polygon(w, box),
+                                ga2d_body_transform(w, box), fresh) == 2);
+    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+    CHECK(ga2d_world_get_contacts(w, cd, 1) == 1);
+    CHECK(cd->manifold.count == 2);
+}
+
 /* A resting pair's manifold is carried along while the pair moves by under
    half a slop, and computed anew beyond that.  A box rests on a static
    slab, no gravity; it is then placed 0.2 slop right, 0.1 slop up and
@@ -466,7 +484,6 @@ static void carried_manifolds(void)
     ga2d_body_id ground, box;
     ga2d_contact_data cd;
     ga2d_manifold fresh;
-    const ga2d_polygon *pg, *pb;
     int k;
     wd.gravity = ga2d_vec_make(0, 0);
     w = ga2d_world_create(&wd);
@@ -477,21 +494,12 @@ static void carried_manifolds(void)
     bd.position = ga2d_vec_make((ga2d_real)0.3, (ga2d_real)0.5);
     bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     box = ga2d_body_create(w, &bd);
-    pg = ga2d_body_polygon(w, ground);
-    pb = ga2d_body_polygon(w, box);
     CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
     CHECK(ga2d_world_get_counters(w).manifolds_carried == 0); /* a new contact */
     CHECK(ga2d_world_get_contacts(w, &cd, 1) == 1);
 
-    ga2d_body_set_transform(w, box, ga2d_vec_make((ga2d_real)(0.3 + 0.2 * slop), (ga2d_real)(0.5 + 0.1 * slop)),
-                            ga2d_rotor_from_angle((ga2d_real)turn));
-    ga2d_body_set_velocity(w, box, ga2d_vec_make(0, 0));
-    ga2d_body_set_angular_velocity(w, box, 0);
-    CHECK(ga2d_collide_polygons(pg, ga2d_body_transform(w, ground), pb, ga2d_body_transform(w, box), &fresh) == 2);
-    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+    place_and_step(w, ground, box, 0.2 * slop, turn, &fresh, &cd);
     CHECK(ga2d_world_get_counters(w).manifolds_carried == 1);
-    CHECK(ga2d_world_get_contacts(w, &cd, 1) == 1);
-    CHECK(cd.manifold.count == 2);
     CHECK_NEAR(cd.manifold.normal.x, fresh.normal.x, 16 * REAL_EPS);
     CHECK_NEAR(cd.manifold.normal.y, fresh.normal.y, 16 * REAL_EPS);
     for (k = 0; k < 2; ++k) {
@@ -510,15 +518,8 @@ static void carried_manifolds(void)
         CHECK_NEAR(c->point.y, f->point.y, 16 * REAL_EPS);
     }
 
-    ga2d_body_set_transform(w, box, ga2d_vec_make((ga2d_real)(0.3 + 0.8 * slop), (ga2d_real)(0.5 + 0.1 * slop)),
-                            ga2d_rotor_from_angle((ga2d_real)turn));
-    ga2d_body_set_velocity(w, box, ga2d_vec_make(0, 0));
-    ga2d_body_set_angular_velocity(w, box, 0);
-    CHECK(ga2d_collide_polygons(pg, ga2d_body_transform(w, ground), pb, ga2d_body_transform(w, box), &fresh) == 2);
-    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+    place_and_step(w, ground, box, 0.8 * slop, turn, &fresh, &cd);
     CHECK(ga2d_world_get_counters(w).manifolds_carried == 0);
-    CHECK(ga2d_world_get_contacts(w, &cd, 1) == 1);
-    CHECK(cd.manifold.count == 2);
     for (k = 0; k < 2; ++k) {
         CHECK(cd.manifold.points[k].id == fresh.points[k].id);
         CHECK(cd.manifold.points[k].separation == fresh.points[k].separation);
