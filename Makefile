@@ -28,7 +28,7 @@ TEST_DEP := $(TEST_SRC) tests/test.h $(HEADER)
 # sdl_demo.c needs SDL2: built by `make sdl`, not by `make`
 EXAMPLES := $(filter-out $(BUILD)/examples/sdl_demo,$(patsubst examples/%.c,$(BUILD)/examples/%,$(wildcard examples/*.c)))
 
-.PHONY: all examples demo sdl test test-build test-browser bench clean
+.PHONY: all examples demo sdl test test-build test-browser bench clean check
 
 all: examples
 examples: $(EXAMPLES)
@@ -125,6 +125,10 @@ test:
 	    test "$$n" = 1 || { echo "  determinism FAILED: $$p builds disagree"; exit 1; }; \
 	  done
 	@sh tests/run_all.sh $(TEST_BINS)
+
+# One configuration (C99 float, gcc), for the edit-test loop.
+check: $(BUILD)/tests/gcc-c99-float
+	./$(BUILD)/tests/gcc-c99-float
 
 # --- benchmarks: tests/bench/bench_*.c, each given a CSV path under build/bench
 BENCH_SRC  := $(wildcard tests/bench/bench_*.c)

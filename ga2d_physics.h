@@ -963,19 +963,19 @@ static void ga2d__free(const ga2d_allocator *a, void *p, size_t size)
    the old one is released, so a failure (returns 0) changes nothing. */
 static int ga2d__grow(const ga2d_allocator *a, void **arr, int *cap, int need, size_t elem)
 {
-    int newcap = *cap ? *cap : 16;
-    void *p;
+    int newcap = *cap ? *cap : 16, oldcap = *cap;
+    void *p, *old = *arr;
     if (need <= *cap) return 1;
     if (need > GA2D__MAX_BODIES) return 0;
     while (newcap < need) newcap *= 2;
     p = ga2d__alloc(a, (size_t)newcap * elem);
     if (!p) return 0;
-    if (*arr) {
-        memcpy(p, *arr, (size_t)*cap * elem);
-        ga2d__free(a, *arr, (size_t)*cap * elem);
-    }
+    if (old) memcpy(p, old, (size_t)oldcap * elem);
+    /* the new block is in place before the old one goes: a free hook that
+       reads the world sees whole arrays */
     *arr = p;
     *cap = newcap;
+    ga2d__free(a, old, (size_t)oldcap * elem);
     return 1;
 }
 
@@ -2345,8 +2345,11 @@ struct ga2d_world {
     ga2d__rk4 *rk4;              /* only while the integrator is RK4 */
     int rk4_capacity;
     double time, eval_time;
-    int locked;                  /* inside ga2d_world_step */
-    int in_callback;             /* inside the force callback */
+    int lock;                    /* GA2D__LOCK_* bits: why changes are refused now */
+    int depth;                   /* entry points under way that may run user code */
+    int destroy_pending;         /* ga2d_world_destroy came from user code: at depth 0 */
+    ga2d_allocator mem;          /* the user's allocator behind the lock (ga2d__hook_alloc) */
+    uint32_t tag;                /* this world's mark in its body ids */
     ga2d_world_counters counters;
     /* broadphase: trees[0] static bodies, trees[1] moving ones */
     ga2d__tree trees[2];
@@ -2379,9 +2382,69 @@ struct ga2d_world {
     int wake_capacity;
 };
 
+/* Why a world refuses changes: the bits of ga2d_world.lock.  User code
+   runs inside the library at four places (the force callback, the debug
+   draw's callbacks, the allocator's hooks, and a world being destroyed or
+   loaded); from there, reads are safe and every change is refused with
+   GA2D_ERR_LOCKED, except forces from the force callback, which is what it
+   is for. */
+#define GA2D__LOCK_STEP 1   /* inside ga2d_world_step */
+#define GA2D__LOCK_FIELD 2  /* inside the force callback */
+#define GA2D__LOCK_DRAW 4   /* inside a debug-draw callback */
+#define GA2D__LOCK_ALLOC 8  /* inside the user's allocator, or a world being loaded */
+#define GA2D__LOCK_DEAD 16  /* being destroyed */
+
+/* The world's allocations go through these, so that user code in an
+   allocator hook finds the world locked. */
+static void *ga2d__hook_alloc(size_t size, void *ctx)
+{
+    ga2d_world *w = (ga2d_world *)ctx;
+    int lock = w->lock;
+    void *p;
+    if (!w->def.allocator.alloc) return malloc(size);
+    GA2D_ASSERT(w->depth > 0); /* every entry point that allocates is bracketed */
+    w->lock |= GA2D__LOCK_ALLOC;
+    p = w->def.allocator.alloc(size, w->def.allocator.ctx);
+    w->lock = lock;
+    return p;
+}
+
+static void ga2d__hook_free(void *ptr, size_t size, void *ctx)
+{
+    ga2d_world *w = (ga2d_world *)ctx;
+    int lock = w->lock;
+    if (!w->def.allocator.free) {
+        free(ptr);
+        return;
+    }
+    GA2D_ASSERT(w->depth > 0);
+    w->lock |= GA2D__LOCK_ALLOC;
+    w->def.allocator.free(ptr, size, w->def.allocator.ctx);
+    w->lock = lock;
+}
+
+static void ga2d__destroy_now(ga2d_world *w);
+
+/* An entry point that may run user code (a callback, an allocator hook)
+   brackets that part with enter/leave; a world destroyed from the user
+   code goes when the outermost one leaves.  Nothing may touch w after
+   ga2d__leave. */
+static void ga2d__enter(ga2d_world *w) { ++w->depth; }
+static void ga2d__leave(ga2d_world *w)
+{
+    if (--w->depth == 0 && w->destroy_pending) ga2d__destroy_now(w);
+}
+
 GA2D_API ga2d_body_id ga2d_body_id_null(void) { ga2d_body_id id; id.index1 = 0; id.generation = 0; return id; }
 GA2D_API int ga2d_body_id_is_null(ga2d_body_id id) { return id.index1 == 0; }
 GA2D_API int ga2d_body_id_equal(ga2d_body_id a, ga2d_body_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+
+/* A world's mark in its ids: the id's generation is the slot's generation
+   xor this, so an id from another world is refused (unless two live
+   worlds' 32-bit tags collide, odds 2^-32).  Taken from the world's
+   address (the library keeps no global counter); a snapshot carries it,
+   so the ids of a saved world stay valid in the world that loads it. */
+static uint32_t ga2d__world_tag(const ga2d_world *w) { return ga2d__hash((uint64_t)(uintptr_t)w); }
 
 /* The live body an id names, or NULL: out-of-range, free and reused slots
    are all refused by the index and generation check. */
@@ -2390,7 +2453,7 @@ static ga2d__body *ga2d__lookup(const ga2d_world *w, ga2d_body_id id)
     ga2d__body *b;
     if (!w || id.index1 == 0 || id.index1 > (uint32_t)w->body_used) return NULL;
     b = &w->bodies[id.index1 - 1];
-    if (b->type < 0 || b->generation != id.generation) return NULL;
+    if (b->type < 0 || (b->generation ^ w->tag) != id.generation) return NULL;
     return b;
 }
 
@@ -2398,7 +2461,7 @@ static ga2d__body *ga2d__lookup(const ga2d_world *w, ga2d_body_id id)
 static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__body **out)
 {
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
+    if (w->lock) return GA2D_ERR_LOCKED;
     *out = ga2d__lookup(w, id);
     return *out ? GA2D_OK : GA2D_ERR_STALE_ID;
 }
@@ -2436,20 +2499,24 @@ static int ga2d__pairs_reserve(ga2d_world *w)
     int *vals;
     if (2 * (w->pair_count + 1) <= w->pair_capacity) return 1;
     while (2 * (w->pair_count + 1) > cap) cap *= 2;
-    keys = (uint64_t *)ga2d__alloc(&w->def.allocator, (size_t)cap * sizeof *keys);
-    vals = keys ? (int *)ga2d__alloc(&w->def.allocator, (size_t)cap * sizeof *vals) : NULL;
+    keys = (uint64_t *)ga2d__alloc(&w->mem, (size_t)cap * sizeof *keys);
+    vals = keys ? (int *)ga2d__alloc(&w->mem, (size_t)cap * sizeof *vals) : NULL;
     if (!vals) {
-        ga2d__free(&w->def.allocator, keys, (size_t)cap * sizeof *keys);
+        ga2d__free(&w->mem, keys, (size_t)cap * sizeof *keys);
         return 0;
     }
     memset(keys, 0, (size_t)cap * sizeof *keys);
     for (i = 0; i < w->pair_capacity; ++i)
         if (w->pair_keys[i]) ga2d__pairs_put(keys, vals, cap, w->pair_keys[i], w->pair_vals[i]);
-    ga2d__free(&w->def.allocator, w->pair_keys, (size_t)w->pair_capacity * sizeof *keys);
-    ga2d__free(&w->def.allocator, w->pair_vals, (size_t)w->pair_capacity * sizeof *vals);
-    w->pair_keys = keys;
-    w->pair_vals = vals;
-    w->pair_capacity = cap;
+    {
+        uint64_t *old_keys = w->pair_keys;
+        int *old_vals = w->pair_vals, old_cap = w->pair_capacity;
+        w->pair_keys = keys;
+        w->pair_vals = vals;
+        w->pair_capacity = cap;
+        ga2d__free(&w->mem, old_keys, (size_t)old_cap * sizeof *keys);
+        ga2d__free(&w->mem, old_vals, (size_t)old_cap * sizeof *vals);
+    }
     return 1;
 }
 
@@ -2505,7 +2572,7 @@ static int ga2d__create_contact(ga2d_world *w, int a, int b)
         ci = w->contact_free;
         w->contact_free = w->contacts[ci].next_free;
     } else {
-        if (!ga2d__grow(&w->def.allocator, (void **)&w->contacts, &w->contact_capacity, w->contact_used + 1,
+        if (!ga2d__grow(&w->mem, (void **)&w->contacts, &w->contact_capacity, w->contact_used + 1,
                         sizeof *w->contacts))
             return 0;
         ci = w->contact_used++;
@@ -2541,7 +2608,7 @@ static ga2d_body_id ga2d__id_of(const ga2d_world *w, int slot)
 {
     ga2d_body_id id;
     id.index1 = (uint32_t)slot + 1;
-    id.generation = w->bodies[slot].generation;
+    id.generation = w->bodies[slot].generation ^ w->tag;
     return id;
 }
 
@@ -2557,7 +2624,7 @@ static void ga2d__push_event(ga2d_world *w, int end, const ga2d__contact *c)
 {
     ga2d_contact_data **arr = end ? &w->end_events : &w->begin_events;
     int *count = end ? &w->end_count : &w->begin_count, *cap = end ? &w->end_capacity : &w->begin_capacity;
-    if (!ga2d__grow(&w->def.allocator, (void **)arr, cap, *count + 1, sizeof **arr)) {
+    if (!ga2d__grow(&w->mem, (void **)arr, cap, *count + 1, sizeof **arr)) {
         w->step_error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
@@ -2646,7 +2713,7 @@ static void ga2d__pair_found(void *ctx, int other)
     /* both queued: the one queued first (smaller slot) finds the pair */
     if (w->bodies[other].in_move && other < q->self) return;
     if (!ga2d__pair_wanted(w, a, b) || ga2d__pairs_find(w, ga2d__pair_key(a, b)) >= 0) return;
-    if (!ga2d__grow(&w->def.allocator, (void **)&w->new_pairs, &w->new_pair_capacity, w->new_pair_count + 1,
+    if (!ga2d__grow(&w->mem, (void **)&w->new_pairs, &w->new_pair_capacity, w->new_pair_count + 1,
                     sizeof *w->new_pairs)) {
         w->step_error = GA2D_ERR_OUT_OF_MEMORY;
         return;
@@ -2970,6 +3037,10 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     if (!w) return NULL;
     memset(w, 0, sizeof *w);
     w->def = d;
+    w->mem.alloc = ga2d__hook_alloc;
+    w->mem.free = ga2d__hook_free;
+    w->mem.ctx = w;
+    w->tag = ga2d__world_tag(w);
     w->free_head = -1;
     w->trees[0].root = w->trees[0].free_list = -1;
     w->trees[1].root = w->trees[1].free_list = -1;
@@ -2982,44 +3053,66 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     return w;
 }
 
+/* Frees everything.  The arrays are taken out of the world first, so a
+   free hook that reads the world finds it empty (and locked), never freed
+   memory. */
+static void ga2d__destroy_now(ga2d_world *w)
+{
+    ga2d_world dead = *w;
+    ga2d_allocator user = w->def.allocator, *a = &w->mem;
+    memset(w, 0, sizeof *w);
+    w->def = dead.def;
+    w->mem = dead.mem;
+    w->free_head = w->contact_free = w->error_slot = -1;
+    w->trees[0].root = w->trees[0].free_list = w->trees[1].root = w->trees[1].free_list = -1;
+    w->lock = GA2D__LOCK_DEAD;
+    w->depth = 1; /* a destroy from a free hook changes nothing */
+    w->destroy_pending = 1;
+    w = &dead;
+    ga2d__free(a, w->bodies, (size_t)w->body_capacity * sizeof *w->bodies);
+    ga2d__free(a, w->moving, (size_t)w->moving_capacity * sizeof *w->moving);
+    ga2d__free(a, w->rk4, (size_t)w->rk4_capacity * sizeof *w->rk4);
+    ga2d__tree_release(a, &w->trees[0]);
+    ga2d__tree_release(a, &w->trees[1]);
+    ga2d__free(a, w->move_buf, (size_t)w->move_capacity * sizeof *w->move_buf);
+    ga2d__free(a, w->new_pairs, (size_t)w->new_pair_capacity * sizeof *w->new_pairs);
+    ga2d__free(a, w->contacts, (size_t)w->contact_capacity * sizeof *w->contacts);
+    ga2d__free(a, w->pair_keys, (size_t)w->pair_capacity * sizeof *w->pair_keys);
+    ga2d__free(a, w->pair_vals, (size_t)w->pair_capacity * sizeof *w->pair_vals);
+    ga2d__free(a, w->begin_events, (size_t)w->begin_capacity * sizeof *w->begin_events);
+    ga2d__free(a, w->end_events, (size_t)w->end_capacity * sizeof *w->end_events);
+    ga2d__free(a, w->constraints, (size_t)w->constraint_capacity * sizeof *w->constraints);
+    ga2d__free(a, w->groups, (size_t)w->group_capacity * sizeof *w->groups);
+    ga2d__free(a, w->sbodies, (size_t)w->sbody_capacity * sizeof *w->sbodies);
+    ga2d__free(a, w->last_group, (size_t)w->last_group_capacity * sizeof *w->last_group);
+    ga2d__free(a, w->wake_queue, (size_t)w->wake_capacity * sizeof *w->wake_queue);
+    ga2d__free(&user, a->ctx, sizeof *w);
+}
+
+/* From user code that the library runs (a callback, an allocator hook)
+   the world goes when that library call returns: the call finishes
+   without calling back again, then frees the world. */
 GA2D_API void ga2d_world_destroy(ga2d_world *w)
 {
-    ga2d_allocator a;
     if (!w) return;
-    a = w->def.allocator;
-    ga2d__free(&a, w->bodies, (size_t)w->body_capacity * sizeof *w->bodies);
-    ga2d__free(&a, w->moving, (size_t)w->moving_capacity * sizeof *w->moving);
-    ga2d__free(&a, w->rk4, (size_t)w->rk4_capacity * sizeof *w->rk4);
-    ga2d__tree_release(&a, &w->trees[0]);
-    ga2d__tree_release(&a, &w->trees[1]);
-    ga2d__free(&a, w->move_buf, (size_t)w->move_capacity * sizeof *w->move_buf);
-    ga2d__free(&a, w->new_pairs, (size_t)w->new_pair_capacity * sizeof *w->new_pairs);
-    ga2d__free(&a, w->contacts, (size_t)w->contact_capacity * sizeof *w->contacts);
-    ga2d__free(&a, w->pair_keys, (size_t)w->pair_capacity * sizeof *w->pair_keys);
-    ga2d__free(&a, w->pair_vals, (size_t)w->pair_capacity * sizeof *w->pair_vals);
-    ga2d__free(&a, w->begin_events, (size_t)w->begin_capacity * sizeof *w->begin_events);
-    ga2d__free(&a, w->end_events, (size_t)w->end_capacity * sizeof *w->end_events);
-    ga2d__free(&a, w->constraints, (size_t)w->constraint_capacity * sizeof *w->constraints);
-    ga2d__free(&a, w->groups, (size_t)w->group_capacity * sizeof *w->groups);
-    ga2d__free(&a, w->sbodies, (size_t)w->sbody_capacity * sizeof *w->sbodies);
-    ga2d__free(&a, w->last_group, (size_t)w->last_group_capacity * sizeof *w->last_group);
-    ga2d__free(&a, w->wake_queue, (size_t)w->wake_capacity * sizeof *w->wake_queue);
-    ga2d__free(&a, w, sizeof *w);
+    if (w->depth > 0) {
+        w->destroy_pending = 1;
+        return;
+    }
+    ga2d__destroy_now(w);
 }
 
 GA2D_API ga2d_body_id ga2d_world_error_body(const ga2d_world *w)
 {
     ga2d_body_id id = ga2d_body_id_null();
     if (!w || w->error_slot < 0 || w->error_slot >= w->body_used || w->bodies[w->error_slot].type < 0) return id;
-    id.index1 = (uint32_t)w->error_slot + 1;
-    id.generation = w->bodies[w->error_slot].generation;
-    return id;
+    return ga2d__id_of(w, w->error_slot);
 }
 
 GA2D_API double ga2d_world_time(const ga2d_world *w)
 {
     if (!w) return 0;
-    return w->in_callback ? w->eval_time : w->time;
+    return (w->lock & GA2D__LOCK_FIELD) ? w->eval_time : w->time;
 }
 
 GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w)
@@ -3045,7 +3138,7 @@ GA2D_API ga2d_vec ga2d_world_gravity(const ga2d_world *w) { return w ? w->def.gr
 GA2D_API ga2d_result ga2d_world_set_gravity(ga2d_world *w, ga2d_vec g)
 {
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
+    if (w->lock) return GA2D_ERR_LOCKED;
     if (!ga2d__finite_vec(g)) return GA2D_ERR_NOT_FINITE;
     w->def.gravity = g;
     return GA2D_OK;
@@ -3054,7 +3147,7 @@ GA2D_API ga2d_result ga2d_world_set_gravity(ga2d_world *w, ga2d_vec g)
 GA2D_API ga2d_result ga2d_world_set_substeps(ga2d_world *w, int substeps)
 {
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
+    if (w->lock) return GA2D_ERR_LOCKED;
     if (substeps < 1 || substeps > 1024) return GA2D_ERR_INVALID_ARGUMENT;
     w->def.substeps = substeps;
     return GA2D_OK;
@@ -3077,7 +3170,7 @@ static void ga2d__reset_field(ga2d_world *w)
 static ga2d_result ga2d__check_mode(const ga2d_world *w, int value, int count)
 {
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
+    if (w->lock) return GA2D_ERR_LOCKED;
     return value < 0 || value >= count ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK;
 }
 
@@ -3085,9 +3178,18 @@ GA2D_API ga2d_result ga2d_world_set_integrator(ga2d_world *w, ga2d_integrator in
 {
     ga2d_result r = ga2d__check_mode(w, (int)integrator, GA2D_INTEGRATOR_COUNT);
     if (r != GA2D_OK) return r;
-    if (integrator == GA2D_INTEGRATOR_RK4 &&
-        !ga2d__grow(&w->def.allocator, (void **)&w->rk4, &w->rk4_capacity, w->moving_capacity, sizeof *w->rk4))
-        return GA2D_ERR_OUT_OF_MEMORY;
+    if (integrator == GA2D_INTEGRATOR_RK4) {
+        int ok;
+        ga2d__enter(w);
+        ok = ga2d__grow(&w->mem, (void **)&w->rk4, &w->rk4_capacity, w->moving_capacity, sizeof *w->rk4);
+        /* the world may have been destroyed from the allocator: it is
+           still here until the leave, and it is not touched after it */
+        if (!ok || w->destroy_pending) {
+            ga2d__leave(w);
+            return ok ? GA2D_OK : GA2D_ERR_OUT_OF_MEMORY;
+        }
+        ga2d__leave(w);
+    }
     w->def.integrator = integrator;
     ga2d__reset_field(w); /* other integrators moved bodies without it */
     return GA2D_OK;
@@ -3110,7 +3212,7 @@ GA2D_API ga2d_result ga2d_world_set_solver(ga2d_world *w, ga2d_solver solver)
 /* A world switch: refused while the world steps. */
 static ga2d_result ga2d__set_switch(ga2d_world *w, int *field, int on)
 {
-    if (w->locked) return GA2D_ERR_LOCKED;
+    if (w->lock) return GA2D_ERR_LOCKED;
     *field = on != 0;
     return GA2D_OK;
 }
@@ -3152,7 +3254,7 @@ GA2D_API ga2d_world_def ga2d_accurate_world_def(void)
 GA2D_API ga2d_result ga2d_world_set_force_callback(ga2d_world *w, ga2d_force_fn *fn, void *context)
 {
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
+    if (w->lock) return GA2D_ERR_LOCKED;
     w->def.force_callback = fn;
     w->def.force_context = context;
     ga2d__reset_field(w);
@@ -3227,29 +3329,28 @@ static void ga2d__moving_remove(ga2d_world *w, int i)
     w->bodies[i].move_index = -1;
 }
 
-GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
+static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
 {
     ga2d_body_id id = ga2d_body_id_null();
     ga2d_polygon poly;
     ga2d_mass m;
     ga2d__body *b;
     int slot, moves;
-    if (!w || w->locked || ga2d_body_def_validate(def) != GA2D_OK) return id;
     moves = def->type != GA2D_BODY_STATIC;
     /* every allocation first: a failure leaves the world as it was */
     slot = w->free_head >= 0 ? w->free_head : w->body_used;
-    if (!ga2d__grow(&w->def.allocator, (void **)&w->bodies, &w->body_capacity, slot + 1, sizeof *w->bodies)) return id;
-    if (!ga2d__grow(&w->def.allocator, (void **)&w->move_buf, &w->move_capacity, w->body_used + 1, sizeof *w->move_buf))
+    if (!ga2d__grow(&w->mem, (void **)&w->bodies, &w->body_capacity, slot + 1, sizeof *w->bodies)) return id;
+    if (!ga2d__grow(&w->mem, (void **)&w->move_buf, &w->move_capacity, w->body_used + 1, sizeof *w->move_buf))
         return id;
-    if (!ga2d__grow(&w->def.allocator, (void **)&w->wake_queue, &w->wake_capacity, w->body_used + 1, sizeof *w->wake_queue))
+    if (!ga2d__grow(&w->mem, (void **)&w->wake_queue, &w->wake_capacity, w->body_used + 1, sizeof *w->wake_queue))
         return id;
-    if (!ga2d__tree_reserve(&w->def.allocator, &w->trees[moves], 1)) return id;
+    if (!ga2d__tree_reserve(&w->mem, &w->trees[moves], 1)) return id;
     if (moves) {
         /* room for every slot: sleeping bodies come back without allocating */
-        if (!ga2d__grow(&w->def.allocator, (void **)&w->moving, &w->moving_capacity, w->body_used + 1, sizeof *w->moving))
+        if (!ga2d__grow(&w->mem, (void **)&w->moving, &w->moving_capacity, w->body_used + 1, sizeof *w->moving))
             return id;
         if (w->def.integrator == GA2D_INTEGRATOR_RK4 &&
-            !ga2d__grow(&w->def.allocator, (void **)&w->rk4, &w->rk4_capacity, w->moving_capacity, sizeof *w->rk4))
+            !ga2d__grow(&w->mem, (void **)&w->rk4, &w->rk4_capacity, w->moving_capacity, sizeof *w->rk4))
             return id;
     }
     ga2d_polygon_make(def->polygon.vertices, def->polygon.count, &poly); /* validated above */
@@ -3310,8 +3411,16 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
     b->proxy = ga2d__tree_create(&w->trees[moves], ga2d__fatten(ga2d_polygon_aabb(&poly, ga2d__body_xf(b)), w->aabb_margin), slot);
     ga2d__buffer_move(w, slot);
     ++w->body_count;
-    id.index1 = (uint32_t)slot + 1;
-    id.generation = b->generation;
+    return ga2d__id_of(w, slot);
+}
+
+GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
+{
+    ga2d_body_id id = ga2d_body_id_null();
+    if (!w || w->lock || ga2d_body_def_validate(def) != GA2D_OK) return id;
+    ga2d__enter(w);
+    id = ga2d__body_create(w, def);
+    ga2d__leave(w);
     return id;
 }
 
@@ -3597,7 +3706,7 @@ GA2D_API ga2d_result ga2d_body_set_user_data(ga2d_world *w, ga2d_body_id id, voi
 static ga2d_result ga2d__force_target(ga2d_world *w, ga2d_body_id id, ga2d__body **out)
 {
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked && !w->in_callback) return GA2D_ERR_LOCKED;
+    if (w->lock && w->lock != (GA2D__LOCK_STEP | GA2D__LOCK_FIELD)) return GA2D_ERR_LOCKED;
     *out = ga2d__lookup(w, id);
     return *out ? GA2D_OK : GA2D_ERR_STALE_ID;
 }
@@ -3612,13 +3721,13 @@ GA2D_API ga2d_result ga2d_body_apply_force(ga2d_world *w, ga2d_body_id id, ga2d_
     if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
     tau = ga2d_wedge(ga2d_vec_sub(point, b->center), force); /* r ^ F */
     {
-        ga2d_vec *f = w->in_callback ? &b->field_force : &b->force;
-        ga2d_real *t = w->in_callback ? &b->field_torque : &b->torque;
+        ga2d_vec *f = (w->lock & GA2D__LOCK_FIELD) ? &b->field_force : &b->force;
+        ga2d_real *t = (w->lock & GA2D__LOCK_FIELD) ? &b->field_torque : &b->torque;
         ga2d_vec nf = ga2d_vec_add(*f, force);
         ga2d_real nt = *t + tau;
         /* finite inputs can still overflow the sums: refuse, keep the old */
         if (!ga2d__finite_vec(nf) || !ga2d__finite(nt)) return GA2D_ERR_NOT_FINITE;
-        if (!w->in_callback) ga2d__wake(w, (int)id.index1 - 1);
+        if (!(w->lock & GA2D__LOCK_FIELD)) ga2d__wake(w, (int)id.index1 - 1);
         *f = nf;
         *t = nt;
     }
@@ -3641,9 +3750,9 @@ GA2D_API ga2d_result ga2d_body_apply_torque(ga2d_world *w, ga2d_body_id id, ga2d
     if (!ga2d__finite(torque)) return GA2D_ERR_NOT_FINITE;
     if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
     {
-        ga2d_real *t = w->in_callback ? &b->field_torque : &b->torque;
+        ga2d_real *t = (w->lock & GA2D__LOCK_FIELD) ? &b->field_torque : &b->torque;
         if (!ga2d__finite(*t + torque)) return GA2D_ERR_NOT_FINITE;
-        if (!w->in_callback) ga2d__wake(w, (int)id.index1 - 1);
+        if (!(w->lock & GA2D__LOCK_FIELD)) ga2d__wake(w, (int)id.index1 - 1);
         *t += torque;
     }
     return GA2D_OK;
@@ -3745,16 +3854,16 @@ static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update
 static void ga2d__eval_field(ga2d_world *w, double t)
 {
     int k;
-    if (!w->def.force_callback) return;
+    if (!w->def.force_callback || w->destroy_pending) return; /* destroyed from it: no more calls */
     for (k = 0; k < w->moving_count; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
         b->field_force = ga2d_vec_make(0, 0);
         b->field_torque = 0;
     }
-    w->in_callback = 1;
+    w->lock |= GA2D__LOCK_FIELD;
     w->eval_time = t;
     w->def.force_callback(w, w->def.force_context);
-    w->in_callback = 0;
+    w->lock &= ~GA2D__LOCK_FIELD;
     ++w->counters.force_evaluations;
 }
 
@@ -4098,7 +4207,7 @@ static int ga2d__add_constraint(ga2d_world *w, int ci)
     a = &w->bodies[ct->a];
     b = &w->bodies[ct->b];
     if (!((a->type == GA2D_BODY_DYNAMIC && a->awake) || (b->type == GA2D_BODY_DYNAMIC && b->awake))) return 1;
-    if (!ga2d__grow(&w->def.allocator, (void **)&w->constraints, &w->constraint_capacity, w->constraint_count + 1,
+    if (!ga2d__grow(&w->mem, (void **)&w->constraints, &w->constraint_capacity, w->constraint_count + 1,
                     sizeof *w->constraints)) {
         w->step_error = GA2D_ERR_OUT_OF_MEMORY;
         return 0;
@@ -4711,9 +4820,9 @@ static void ga2d__batch(ga2d_world *w, ga2d_real h)
     ga2d__soft zero;
     w->group_count = 0;
     if (w->constraint_count == 0) return;
-    if (!ga2d__grow(&w->def.allocator, (void **)&w->groups, &w->group_capacity, w->constraint_count, sizeof *w->groups) ||
-        !ga2d__grow(&w->def.allocator, (void **)&w->sbodies, &w->sbody_capacity, used + 1, sizeof *w->sbodies) ||
-        !ga2d__grow(&w->def.allocator, (void **)&w->last_group, &w->last_group_capacity, used, sizeof *w->last_group)) {
+    if (!ga2d__grow(&w->mem, (void **)&w->groups, &w->group_capacity, w->constraint_count, sizeof *w->groups) ||
+        !ga2d__grow(&w->mem, (void **)&w->sbodies, &w->sbody_capacity, used + 1, sizeof *w->sbodies) ||
+        !ga2d__grow(&w->mem, (void **)&w->last_group, &w->last_group_capacity, used, sizeof *w->last_group)) {
         w->step_error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
@@ -5039,17 +5148,10 @@ static void ga2d__update_sleep(ga2d_world *w, ga2d_real dt)
    substep: velocities, warm start, solve, positions, relax (soft step) or
    the PGS kinds' passes; then restitution, the impulses stored for the
    next step, and sleep. */
-GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
+static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
 {
-    ga2d_real h;
     double t0;
     int s, k, it;
-    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
-    if (!ga2d__finite(dt) || !(dt > 0)) return GA2D_ERR_INVALID_ARGUMENT;
-    h = dt / (ga2d_real)w->def.substeps;
-    if (!(h > 0)) return GA2D_ERR_INVALID_ARGUMENT; /* dt underflows when split */
-    w->locked = 1;
     w->step_error = GA2D_OK;
     w->error_slot = -1;
     w->step_dt = dt;
@@ -5105,8 +5207,24 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     w->time = t0 + (double)dt;
     if (w->def.enable_sleep) ga2d__update_sleep(w, dt);
     ++w->counters.step_count;
-    w->locked = 0;
-    return w->step_error;
+}
+
+GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
+{
+    ga2d_real h;
+    ga2d_result r;
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->lock) return GA2D_ERR_LOCKED;
+    if (!ga2d__finite(dt) || !(dt > 0)) return GA2D_ERR_INVALID_ARGUMENT;
+    h = dt / (ga2d_real)w->def.substeps;
+    if (!(h > 0)) return GA2D_ERR_INVALID_ARGUMENT; /* dt underflows when split */
+    w->lock = GA2D__LOCK_STEP;
+    ga2d__enter(w);
+    ga2d__step(w, dt, h);
+    r = w->step_error;
+    w->lock = 0;
+    ga2d__leave(w); /* destroyed from the force callback or an allocator hook: gone now */
+    return r;
 }
 
 /* ============================================================= snapshots */
@@ -5119,7 +5237,9 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
    pair set, each body's contact list) are rebuilt, and since the lists are
    rebuilt in creation order and pairs and the solver follow canonical
    orders, the loaded world steps bit for bit as the saved one. */
-#define GA2D__SNAP_VERSION 3u /* 2: body fields reordered (0.6.0); 3: held manifolds (0.8.0) */
+/* 2: body fields reordered (0.6.0); 3: held manifolds (0.8.0); 4: the
+   world's id tag, body and def fields (0.8.1) */
+#define GA2D__SNAP_VERSION 4u
 
 typedef struct ga2d__snap_header {
     char magic[8];
@@ -5199,6 +5319,7 @@ static void ga2d__snap_payload(const ga2d_world *w, ga2d__writer *o, ga2d__snap_
     ga2d__put(o, &w->time, sizeof w->time);
     ga2d__put(o, &w->step_dt, sizeof w->step_dt);
     ga2d__put(o, &w->counters, sizeof w->counters);
+    ga2d__put(o, &w->tag, sizeof w->tag);
     ga2d__put(o, &w->body_used, sizeof w->body_used);
     ga2d__put(o, &w->free_head, sizeof w->free_head);
     ga2d__put(o, &w->body_count, sizeof w->body_count);
@@ -5249,18 +5370,29 @@ GA2D_API ga2d_result ga2d_world_snapshot_save(const ga2d_world *w, void *buf, si
     ga2d__writer o;
     size_t size, scratch_bytes;
     if (!w || !buf) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
+    if (w->lock) return GA2D_ERR_LOCKED;
     size = ga2d_world_snapshot_size(w);
     if (cap < size) return GA2D_ERR_BUFFER_TOO_SMALL;
     scratch_bytes = (size_t)w->contact_count * sizeof *scratch;
     if (scratch_bytes > 0) {
-        scratch = (ga2d__snap_contact *)ga2d__alloc(&w->def.allocator, scratch_bytes);
+        /* the world is const to the caller, not in memory: its lock and
+           depth count the user code that the allocator hooks run */
+        ga2d_world *mw = (ga2d_world *)w;
+        ga2d__enter(mw);
+        scratch = (ga2d__snap_contact *)ga2d__alloc(&mw->mem, scratch_bytes);
+        if (scratch) {
+            o.p = (unsigned char *)buf + sizeof h;
+            o.n = 0;
+            ga2d__snap_payload(w, &o, scratch);
+            ga2d__free(&mw->mem, scratch, scratch_bytes);
+        }
+        ga2d__leave(mw); /* nothing below reads the world */
         if (!scratch) return GA2D_ERR_OUT_OF_MEMORY;
+    } else {
+        o.p = (unsigned char *)buf + sizeof h;
+        o.n = 0;
+        ga2d__snap_payload(w, &o, NULL);
     }
-    o.p = (unsigned char *)buf + sizeof h;
-    o.n = 0;
-    ga2d__snap_payload(w, &o, scratch);
-    ga2d__free(&w->def.allocator, scratch, scratch_bytes);
     h = ga2d__snap_header_make((uint64_t)o.n);
     h.checksum = ga2d__fnv1a(o.p, o.n);
     memcpy(buf, &h, sizeof h);
@@ -5320,13 +5452,13 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
         (size_t)used > (r->n - r->at) / sizeof *t->bodies)
         return 0;
     if (used == 0) return free_head == -1 && count == 0;
-    if (!ga2d__grow(&t->def.allocator, (void **)&t->bodies, &t->body_capacity, used, sizeof *t->bodies) ||
-        !ga2d__grow(&t->def.allocator, (void **)&t->move_buf, &t->move_capacity, used, sizeof *t->move_buf) ||
-        !ga2d__grow(&t->def.allocator, (void **)&t->wake_queue, &t->wake_capacity, used, sizeof *t->wake_queue) ||
-        !ga2d__grow(&t->def.allocator, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving))
+    if (!ga2d__grow(&t->mem, (void **)&t->bodies, &t->body_capacity, used, sizeof *t->bodies) ||
+        !ga2d__grow(&t->mem, (void **)&t->move_buf, &t->move_capacity, used, sizeof *t->move_buf) ||
+        !ga2d__grow(&t->mem, (void **)&t->wake_queue, &t->wake_capacity, used, sizeof *t->wake_queue) ||
+        !ga2d__grow(&t->mem, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving))
         return -1;
     if (t->def.integrator == GA2D_INTEGRATOR_RK4 &&
-        !ga2d__grow(&t->def.allocator, (void **)&t->rk4, &t->rk4_capacity, t->moving_capacity, sizeof *t->rk4))
+        !ga2d__grow(&t->mem, (void **)&t->rk4, &t->rk4_capacity, t->moving_capacity, sizeof *t->rk4))
         return -1;
     ga2d__get(r, t->bodies, (size_t)used * sizeof *t->bodies);
     t->body_used = used;
@@ -5347,8 +5479,8 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
         t->bodies[i].island = 1;
     }
     if (frees != used - count) return 0;
-    if (!ga2d__tree_reserve(&t->def.allocator, &t->trees[0], count - moves) ||
-        !ga2d__tree_reserve(&t->def.allocator, &t->trees[1], moves))
+    if (!ga2d__tree_reserve(&t->mem, &t->trees[0], count - moves) ||
+        !ga2d__tree_reserve(&t->mem, &t->trees[1], moves))
         return -1;
     for (i = 0; i < used; ++i) {
         ga2d__body *b = &t->bodies[i];
@@ -5431,7 +5563,7 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
     ga2d_world *t, swap;
     int ok;
     if (!w || !buf) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
+    if (w->lock) return GA2D_ERR_LOCKED;
     if (size < sizeof h) return GA2D_ERR_BAD_SNAPSHOT;
     memcpy(&h, buf, sizeof h);
     want = ga2d__snap_header_make(h.payload_size);
@@ -5447,23 +5579,41 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
     d.force_callback = w->def.force_callback;
     d.force_context = w->def.force_context;
     if (ga2d_world_def_validate(&d) != GA2D_OK || d.substeps == 0 || d.length_units_per_meter == 0) return GA2D_ERR_BAD_SNAPSHOT;
+    /* t's allocations run the user's hooks: w is locked meanwhile */
+    w->lock = GA2D__LOCK_ALLOC;
+    ga2d__enter(w);
     t = ga2d_world_create(&d);
-    if (!t) return GA2D_ERR_OUT_OF_MEMORY;
+    if (!t) {
+        w->lock = 0;
+        ga2d__leave(w);
+        return GA2D_ERR_OUT_OF_MEMORY;
+    }
+    ga2d__enter(t);
     ok = ga2d__get(&r, &t->time, sizeof t->time) && ga2d__get(&r, &t->step_dt, sizeof t->step_dt) &&
-         ga2d__get(&r, &t->counters, sizeof t->counters) && t->time == t->time && ga2d__finite(t->step_dt) &&
+         ga2d__get(&r, &t->counters, sizeof t->counters) && ga2d__get(&r, &t->tag, sizeof t->tag) && t->time == t->time && ga2d__finite(t->step_dt) &&
          t->step_dt > 0;
     if (ok) ok = ga2d__snap_read_bodies(t, &r);
     if (ok == 1) ok = ga2d__snap_read_contacts(t, &r);
     if (ok == 1 && r.at != r.n) ok = 0;
-    if (ok != 1) {
-        ga2d_world_destroy(t);
-        return ok < 0 ? GA2D_ERR_OUT_OF_MEMORY : GA2D_ERR_BAD_SNAPSHOT;
+    --t->depth;
+    if (ok == 1 && !w->destroy_pending) {
+        /* all checked: the new state goes into w, the old one is freed
+           with t; each keeps its own hooks and bookkeeping */
+        swap = *w;
+        *w = *t;
+        *t = swap;
+        w->mem.ctx = w;
+        t->mem.ctx = t;
+        w->lock = t->lock;
+        w->depth = t->depth;
+        w->destroy_pending = 0;
+        t->lock = 0;
+        t->depth = 0;
     }
-    /* all checked: the new state goes into w, the old one is freed with t */
-    swap = *w;
-    *w = *t;
-    *t = swap;
-    ga2d_world_destroy(t);
+    ga2d_world_destroy(t); /* the rejected new state, or the old one */
+    w->lock = 0;
+    ga2d__leave(w);
+    if (ok != 1) return ok < 0 ? GA2D_ERR_OUT_OF_MEMORY : GA2D_ERR_BAD_SNAPSHOT;
     return GA2D_OK;
 }
 
@@ -5476,6 +5626,8 @@ GA2D_API ga2d_debug_draw ga2d_default_debug_draw(void)
     return d;
 }
 
+static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d);
+
 static uint32_t ga2d__state_color(const ga2d__body *b)
 {
     if (b->type == GA2D_BODY_STATIC) return GA2D_COLOR_STATIC;
@@ -5483,12 +5635,28 @@ static uint32_t ga2d__state_color(const ga2d__body *b)
     return b->awake ? GA2D_COLOR_AWAKE : GA2D_COLOR_ASLEEP;
 }
 
-GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw *d)
+/* The callbacks are user code: the world is locked while they run (it is
+   const to the caller, not in memory), so nothing they call can move the
+   arrays read here; a world destroyed from one goes once the draw ends. */
+GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *cw, const ga2d_debug_draw *d)
+{
+    ga2d_world *w = (ga2d_world *)cw;
+    if (!w || !d) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->lock) return GA2D_ERR_LOCKED;
+    w->lock = GA2D__LOCK_DRAW;
+    ga2d__enter(w);
+    ga2d__draw(w, d);
+    w->lock = 0;
+    ga2d__leave(w);
+    return GA2D_OK;
+}
+
+/* Every live body in slot order, then the touching contacts' points; it
+   stops calling back once the world is destroyed from a callback. */
+static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
 {
     int s, ci, k;
-    if (!w || !d) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->locked) return GA2D_ERR_LOCKED;
-    for (s = 0; s < w->body_used; ++s) {
+    for (s = 0; s < w->body_used && !w->destroy_pending; ++s) {
         const ga2d__body *b = &w->bodies[s];
         if (b->type < 0) continue;
         if (d->draw_bodies && d->polygon)
@@ -5498,14 +5666,13 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
         if (d->draw_centers && d->point) d->point(b->center, GA2D__R(0.05) * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
     }
     if (d->draw_contacts && d->contact)
-        for (ci = 0; ci < w->contact_used; ++ci) {
+        for (ci = 0; ci < w->contact_used && !w->destroy_pending; ++ci) {
             const ga2d__contact *c = &w->contacts[ci];
             if (c->next_free != -2 || !c->touching) continue;
             for (k = 0; k < c->manifold.count; ++k)
                 d->contact(c->manifold.points[k].point, c->manifold.normal, c->manifold.points[k].separation,
                            GA2D_COLOR_CONTACT, d->context);
         }
-    return GA2D_OK;
 }
 
 #ifdef __cplusplus
