@@ -2682,22 +2682,36 @@ static void ga2d__buffer_move(ga2d_world *w, int slot)
     w->move_buf[w->move_count++] = slot;
 }
 
-/* Re-fit a body's fat box if it left it, and queue it for pair finding.
-   The new box is grown by the margin and stretched along the distance the
-   body will cover in a step, so a fast body's pairs exist before it
-   arrives (Box2D 2.4's predictive boxes). */
+/* The box a body can reach within a step: its AABB swept along v dt, and
+   grown by how far a vertex can swing (extent |w| dt, at most the
+   extent).  Forces change v within the step by g dt (2.8 mm at 1/60 s
+   under 10 m/s^2), which the margin covers. */
+static ga2d_aabb ga2d__reach_box(const ga2d__body *b, ga2d_aabb box, ga2d_real dt)
+{
+    ga2d_vec d = ga2d_vec_scale(b->v, dt);
+    ga2d_real turn = GA2D__FABS(b->w) * dt, swing = b->extent * (turn < 1 ? turn : 1);
+    if (d.x < 0) box.lower.x += d.x; else box.upper.x += d.x;
+    if (d.y < 0) box.lower.y += d.y; else box.upper.y += d.y;
+    return ga2d__fatten(box, swing);
+}
+
+/* Re-fit a body's fat box when it no longer holds all the body can reach
+   in this step, and queue the body for pair finding: then every pair the
+   step can bring into touch exists before the narrowphase runs.  The new
+   box is the reach grown by the margin and stretched along one more step
+   of motion, so a body flying steadily re-fits every other step; a box
+   more than four margins larger than that (a fast body that has slowed)
+   is re-fitted too, or it would hold pairs it can no longer reach. */
 static void ga2d__update_proxy(ga2d_world *w, int slot)
 {
     ga2d__body *b = &w->bodies[slot];
     ga2d__tree *t = ga2d__tree_of(w, b);
-    ga2d_aabb box = ga2d_polygon_aabb(&b->polygon, ga2d__body_xf(b));
-    ga2d_vec d;
-    if (ga2d_aabb_contains(t->nodes[b->proxy].box, box)) return;
-    box = ga2d__fatten(box, w->aabb_margin);
-    d = ga2d_vec_scale(b->v, w->step_dt);
-    if (d.x < 0) box.lower.x += d.x; else box.upper.x += d.x;
-    if (d.y < 0) box.lower.y += d.y; else box.upper.y += d.y;
-    ga2d__tree_move(t, b->proxy, box);
+    ga2d_aabb now = ga2d_polygon_aabb(&b->polygon, ga2d__body_xf(b));
+    ga2d_aabb reach = ga2d__reach_box(b, now, w->step_dt), fat;
+    const ga2d_aabb *box = &t->nodes[b->proxy].box;
+    fat = ga2d__fatten(ga2d__reach_box(b, reach, w->step_dt), w->aabb_margin);
+    if (ga2d_aabb_contains(*box, reach) && ga2d_aabb_contains(ga2d__fatten(fat, 4 * w->aabb_margin), *box)) return;
+    ga2d__tree_move(t, b->proxy, fat);
     ga2d__buffer_move(w, slot);
 }
 
@@ -5093,10 +5107,21 @@ static int ga2d__find(ga2d_world *w, int s)
     return s;
 }
 
+/* A contact overlapped deeper than this (in slops: the speculative
+   distance) keeps its bodies awake: the solver pushes overlap out over
+   several steps, and the relax pass takes the push-out speed out of v, so
+   a body still being pushed out looks at rest.  Resting contacts settle
+   within one slop (the soft contact's target); a 100:1 plank on two boxes
+   settles 1.6 slops deep and sleeps, a 200:1 one 3.2 slops deep sleeps
+   too, a 300:1 one (6.8 slops) stays awake, still being pushed. */
+#define GA2D__SLEEP_MAX_OVERLAP 4
+
 /* Islands of awake dynamic bodies joined by touching contacts (static and
    kinematic bodies do not join them).  A body rests while max(|v|,
-   extent |w|) stays under 5 cm/s (in metres); an island whose every body
-   has rested for 0.5 s falls asleep and costs nothing until woken. */
+   extent |w|) stays under 5 cm/s (in metres) and none of its contacts is
+   overlapped by more than GA2D__SLEEP_MAX_OVERLAP slops; an island whose
+   every body has rested for 0.5 s falls asleep and costs nothing until
+   woken. */
 static void ga2d__update_sleep(ga2d_world *w, ga2d_real dt)
 {
     ga2d_real tol = GA2D__R(0.05) * w->def.length_units_per_meter;
@@ -5109,6 +5134,14 @@ static void ga2d__update_sleep(ga2d_world *w, ga2d_real dt)
         if (b->type != GA2D_BODY_DYNAMIC) continue;
         if (speed2 > tol * tol || spin * spin > tol * tol) b->sleep_time = 0;
         else b->sleep_time += dt;
+    }
+    for (i = 0; i < w->constraint_count; ++i) {
+        const ga2d__constraint *c = &w->constraints[i];
+        for (k = 0; k < c->count; ++k)
+            if (c->p[k].separation < -GA2D__SLEEP_MAX_OVERLAP * w->slop) {
+                w->bodies[c->a].sleep_time = 0; /* static ones never sleep: harmless */
+                w->bodies[c->b].sleep_time = 0;
+            }
     }
     for (i = 0; i < w->constraint_count; ++i) {
         const ga2d__constraint *c = &w->constraints[i];
