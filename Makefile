@@ -24,7 +24,7 @@ HEADER  := ga2d_physics.h
 NPROC   := $(shell nproc 2>/dev/null || echo 2)
 
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
-TEST_DEP := $(TEST_SRC) tests/test.h $(HEADER)
+TEST_DEP := $(TEST_SRC) tests/test.h $(wildcard tests/*.h tests/fuzz/*.h) $(HEADER)
 # sdl_demo.c needs SDL2: built by `make sdl`, not by `make`
 EXAMPLES := $(filter-out $(BUILD)/examples/sdl_demo,$(patsubst examples/%.c,$(BUILD)/examples/%,$(wildcard examples/*.c)))
 

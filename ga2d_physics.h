@@ -236,6 +236,37 @@
    Constructors that return a value (ga2d_polygon_box, ..._regular) return
    a polygon with count 0 for bad input, which every other function refuses.
 
+   Bounds: coordinates within GA2D_MAX_COORDINATE; a step of at most
+   GA2D_MAX_TIME_STEP whose substep h keeps |g| h^2 within a linear slop;
+   |g| within GA2D_MAX_GRAVITY.  Beyond them: GA2D_ERR_TOO_LARGE.  A body
+   driven past 400 m/s (or a quarter turn per substep) is capped, and
+   counters.speed_caps counts it: a program that sees it nonzero after a
+   step knows something in the scene is blowing up.
+
+   Calls from inside the library's callbacks.  User code runs inside the
+   library in four places: the force callback (during ga2d_world_step),
+   the debug-draw callbacks (during ga2d_world_draw), the allocator's
+   alloc and free (during any call that allocates, and ga2d_world_destroy),
+   and nowhere else.  From there, on the same world:
+     - getters, counters, contact lists and ga2d_world_snapshot_size read
+       the world as it is (mid-step, from the force callback or an
+       allocation inside a step);
+     - ga2d_body_apply_force, _apply_force_to_center and _apply_torque
+       work from the force callback (they add to the field's force) and
+       are refused elsewhere;
+     - every other call that would change the world (creating or
+       destroying bodies, setters, impulses, stepping, drawing, snapshot
+       save and load, the world's set_ and enable_ calls) is refused with
+       GA2D_ERR_LOCKED (ga2d_body_create returns the null id) and changes
+       nothing;
+     - ga2d_world_destroy is deferred: the library call under way finishes
+       without calling back again and returns as usual, then the world is
+       freed (do not use it after that call returns).  From a free hook of
+       ga2d_world_destroy itself it does nothing; the world then reads as
+       empty.
+   Other worlds are unaffected: creating or stepping a second world from a
+   callback is fine.
+
    ==========================================================================
    VERSION HISTORY
    ==========================================================================
@@ -312,7 +343,10 @@ typedef enum ga2d_result {
     GA2D_ERR_NOT_FINITE,        /* a NaN or an infinity in the input        */
     GA2D_ERR_TOO_FEW_POINTS,    /* fewer than 3 (distinct) points           */
     GA2D_ERR_TOO_MANY_POINTS,   /* more than GA2D_MAX_POLYGON_VERTICES      */
-    GA2D_ERR_TOO_LARGE,         /* coordinates large enough to overflow     */
+    GA2D_ERR_TOO_LARGE,         /* beyond a documented bound: a coordinate
+                                   (GA2D_MAX_COORDINATE), a step
+                                   (GA2D_MAX_TIME_STEP, g h^2 <= slop), a
+                                   gravity (GA2D_MAX_GRAVITY)              */
     GA2D_ERR_REPEATED_POINTS,   /* two points closer than the tolerance     */
     GA2D_ERR_COLLINEAR_POINTS,  /* a vertex on the line of its neighbours,
                                    or every point on one line               */
@@ -558,11 +592,24 @@ typedef enum ga2d_body_type {
    Inside it, the getters (ga2d_body_center, _velocity, ...) return the
    state being evaluated and ga2d_world_time the time of that state;
    ga2d_body_apply_force / _apply_torque add to the field's force.  Any
-   other change to the world is refused with GA2D_ERR_LOCKED. */
+   other change to the world is refused with GA2D_ERR_LOCKED, and
+   ga2d_world_destroy waits for the step to end (see ERRORS above). */
 typedef void ga2d_force_fn(ga2d_world *world, void *context);
 
+/* Bounds on a step, in seconds and metres (gravity scales with
+   length_units_per_meter).  A step longer than GA2D_MAX_TIME_STEP (the
+   sleep timer's span: a longer one is a pause, not a step) is refused with
+   GA2D_ERR_TOO_LARGE, and so is one whose substep h lets gravity move a
+   body from rest by more than a linear slop (|g| h^2 > GA2D_LINEAR_SLOP):
+   the contact under a resting body could no longer hold it within the
+   slop, and a stack sinks.  At g = 10 that is h <= 22 ms (dt <= 89 ms
+   with 4 substeps); raise substeps for longer steps.  GA2D_MAX_GRAVITY is
+   the most that 1024 substeps of the longest step keep within that. */
+#define GA2D_MAX_TIME_STEP 0.5
+#define GA2D_MAX_GRAVITY (GA2D_LINEAR_SLOP * (1024 / GA2D_MAX_TIME_STEP) * (1024 / GA2D_MAX_TIME_STEP))
+
 typedef struct ga2d_world_def {
-    ga2d_vec gravity;                     /* m/s^2; default (0, -10) */
+    ga2d_vec gravity;                     /* m/s^2; default (0, -10), |g| <= GA2D_MAX_GRAVITY */
     int substeps;                         /* per step; 0 means 4 */
     ga2d_integrator integrator;           /* default symplectic Euler */
     ga2d_rotation_update rotation_update; /* default exact */
@@ -629,6 +676,13 @@ typedef struct ga2d_world_counters {
     int constraint_count;   /* contacts solved in the last step */
     int awake_body_count;   /* dynamic bodies awake */
     int island_count;       /* islands found in the last step (sleep on) */
+    int speed_caps;         /* times the last step capped a body's speed
+                               (400 m/s) or turn (a quarter turn per
+                               substep), per body and substep: a body
+                               driven that fast is blowing up, and this is
+                               how a program notices (the step still
+                               returns GA2D_OK; NaN and Inf are reported
+                               by the step itself) */
     int manifolds_carried;  /* touching manifolds the last step carried
                                along rather than computed anew (pairs that
                                moved by under half a slop) */
@@ -691,8 +745,8 @@ GA2D_API ga2d_result ga2d_world_snapshot_save(const ga2d_world *w, void *buf, si
 GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, size_t size);
 
 GA2D_API ga2d_body_def ga2d_default_body_def(void);
-/* Why a def would be refused: NOT_FINITE anywhere, INVALID_ARGUMENT for a
-   bad type, a density <= 0 (dynamic bodies), a negative friction,
+/* Why a def would be refused: NOT_FINITE anywhere, TOO_LARGE for a
+   position beyond GA2D_MAX_COORDINATE, INVALID_ARGUMENT for a bad type, a density <= 0 (dynamic bodies), a negative friction,
    restitution or damping, a rotor too small to normalize; the polygon's
    own error from ga2d_polygon_make; DEGENERATE for a mass or inertia
    whose inverse overflows. */
@@ -720,6 +774,9 @@ GA2D_API ga2d_real ga2d_body_angular_velocity(const ga2d_world *w, ga2d_body_id 
 GA2D_API ga2d_vec ga2d_body_velocity_at(const ga2d_world *w, ga2d_body_id id, ga2d_vec p);
 GA2D_API ga2d_mass ga2d_body_mass_data(const ga2d_world *w, ga2d_body_id id); /* center in body frame */
 GA2D_API ga2d_real ga2d_body_kinetic_energy(const ga2d_world *w, ga2d_body_id id);
+/* Points into the world: valid until the next call that creates a body
+   or loads a snapshot (either may move the world's arrays), or until the
+   body or the world is destroyed.  Copy the polygon to keep it. */
 GA2D_API const ga2d_polygon *ga2d_body_polygon(const ga2d_world *w, ga2d_body_id id);
 GA2D_API void *ga2d_body_user_data(const ga2d_world *w, ga2d_body_id id);
 
@@ -729,7 +786,9 @@ GA2D_API void *ga2d_body_user_data(const ga2d_world *w, ga2d_body_id id);
    that cannot turn (fixed rotation, or inertia 0) takes no angular
    velocity but 0.  Forces, torques and impulses whose sums would overflow
    are refused with NOT_FINITE, as are a transform or mass data that would
-   put the centre of mass beyond the largest finite number. */
+   put the centre of mass beyond the largest finite number; a position or
+   a centre of mass (in the body frame) beyond GA2D_MAX_COORDINATE is
+   TOO_LARGE. */
 GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2d_vec position, ga2d_rotor q);
 GA2D_API ga2d_result ga2d_body_set_velocity(ga2d_world *w, ga2d_body_id id, ga2d_vec v);
 GA2D_API ga2d_result ga2d_body_set_angular_velocity(ga2d_world *w, ga2d_body_id id, ga2d_real omega);
@@ -786,8 +845,12 @@ typedef struct ga2d_manifold {
 /* The contact manifold of polygon a placed by xa and polygon b placed by
    xb, keeping points up to GA2D_SPECULATIVE_DISTANCE apart.  Returns the
    number of points (0: farther apart than that; *out then has count 0), or
-   a negative -GA2D_ERR_* for bad input (NULL, a polygon whose count is out
-   of range, a non-finite transform), with *out untouched.  Needs no world. */
+   a negative -GA2D_ERR_* for bad input, with *out untouched: NULL, a
+   polygon whose count is out of range or which ga2d_polygon_make could
+   not have made (zero edges, normals not unit or not out of their edges:
+   INVALID_ARGUMENT), a rotor whose |q|^2 is off 1 by more than 1e-4
+   (INVALID_ARGUMENT), a non-finite transform or vertex (NOT_FINITE).
+   The normal is then unit within that rotor tolerance.  Needs no world. */
 GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
                                    ga2d_transform xb, ga2d_manifold *out);
 /* The same with the tolerances of a world whose length unit is
@@ -814,8 +877,9 @@ typedef struct ga2d_contact_data {
     ga2d_manifold manifold;
 } ga2d_contact_data;
 
-/* The bodies that began and ended touching in the last step (valid until
-   the next step or until the world is destroyed).  An end event carries
+/* The bodies that began and ended touching in the last step.  The arrays
+   are the world's: valid until the next step, snapshot load or world
+   destroy (read them after the step, not from inside it).  An end event carries
    the last manifold that touched.  Destroying a body ends its contacts
    without an event. */
 typedef struct ga2d_contact_events {
@@ -847,7 +911,8 @@ GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_c
 
 /* What ga2d_world_draw hands a renderer: any callback may be NULL, and the
    switches choose what is drawn.  A polygon comes with its body's id and
-   placement, so a renderer can keep one shape per body across frames. */
+   placement, so a renderer can keep one shape per body across frames; its
+   pointer is valid during that call only. */
 typedef struct ga2d_debug_draw {
     void (*polygon)(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform x, uint32_t color, void *context);
     void (*segment)(ga2d_vec a, ga2d_vec b, uint32_t color, void *context);
@@ -864,8 +929,13 @@ typedef struct ga2d_debug_draw {
 
 GA2D_API ga2d_debug_draw ga2d_default_debug_draw(void);
 /* Calls the callbacks for every live body (in slot order) and, when asked,
-   every touching contact point, fat box and centre.  Read-only; refused
-   (LOCKED) from inside a step. */
+   every touching contact point, fat box and centre.  Read-only: refused
+   (LOCKED) from inside a step or any callback, and the world is locked
+   while the callbacks run, so from them every change (creating,
+   destroying, setting, stepping, loading) is refused with LOCKED and the
+   getters read the world as it is.  ga2d_world_destroy from a callback
+   ends the drawing at the next body and frees the world when the draw
+   returns. */
 GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw *draw);
 
 #ifdef __cplusplus
@@ -924,7 +994,7 @@ GA2D_API const char *ga2d_result_string(ga2d_result r)
     case GA2D_ERR_NOT_FINITE: return "a value is NaN or infinite";
     case GA2D_ERR_TOO_FEW_POINTS: return "fewer than 3 distinct points";
     case GA2D_ERR_TOO_MANY_POINTS: return "more than GA2D_MAX_POLYGON_VERTICES points";
-    case GA2D_ERR_TOO_LARGE: return "coordinates beyond GA2D_MAX_COORDINATE";
+    case GA2D_ERR_TOO_LARGE: return "beyond a documented bound (coordinate, time step or gravity)";
     case GA2D_ERR_REPEATED_POINTS: return "two points coincide within the tolerance";
     case GA2D_ERR_COLLINEAR_POINTS: return "points are collinear within the tolerance";
     case GA2D_ERR_DEGENERATE: return "zero or near-zero area";
@@ -1872,13 +1942,19 @@ static ga2d_real ga2d__face_gap(const ga2d__hull *p, int i, const ga2d__hull *ot
     return lo;
 }
 
-/* The incident edge: the one whose normal is most against n. */
+/* The incident edge: the one whose normal m is most against n, measured
+   as |m + n|^2 = 2 sin(angle/2)^2 from -n.  The dot n.m = -cos(angle)
+   says the same in exact arithmetic, but rounds to -1 for every edge
+   within sqrt(eps) of -n (3e-4 rad in float): the edges of a thin, gently
+   curved polygon all tie there, and the first in index order, not the
+   lowest, was taken.  m + n keeps the small angle to full precision. */
 static int ga2d__incident_edge(const ga2d__hull *inc, ga2d_vec n)
 {
     ga2d_real lo = GA2D__MAX;
     int j, best = 0;
     for (j = 0; j < inc->count; ++j) {
-        ga2d_real d = ga2d_dot(n, inc->n[j]);
+        ga2d_vec m = ga2d_vec_add(n, inc->n[j]);
+        ga2d_real d = ga2d_dot(m, m);
         if (d < lo) {
             lo = d;
             best = j;
@@ -2060,12 +2136,48 @@ static int ga2d__transform_ok(ga2d_transform x)
     return ga2d__finite_vec(x.p) && ga2d__finite(x.q.c) && ga2d__finite(x.q.s);
 }
 
+/* How far |n|^2 (a normal's, a rotor's) may be from 1: a rotor that far
+   off scales what it turns by 5e-5, 50 um on a metre, a hundredth of the
+   slop; rotors from ga2d_rotor_from_angle, the world's bodies and short
+   products of them are within a few eps. */
+#define GA2D__UNIT_TOL 1e-4
+
+static int ga2d__unit_ok(ga2d_real x2) { return GA2D__FABS(x2 - 1) <= GA2D__R(GA2D__UNIT_TOL); }
+
+/* A polygon as ga2d_polygon_make leaves it, checked in O(n) for the
+   world-free collider (a hand-filled struct could be anything): finite
+   vertices, nonzero edges, and each normal a unit vector pointing out of
+   its edge (perpendicular within the unit tolerance).  0 for NOT_FINITE,
+   -1 for an inconsistent polygon, 1 when fine. */
+static int ga2d__polygon_consistent(const ga2d_polygon *p)
+{
+    int i;
+    for (i = 0; i < p->count; ++i)
+        if (!ga2d__finite_vec(p->vertices[i]) || !ga2d__finite_vec(p->normals[i])) return 0;
+    for (i = 0; i < p->count; ++i) {
+        ga2d_vec e = ga2d_vec_sub(p->vertices[i + 1 < p->count ? i + 1 : 0], p->vertices[i]), n = p->normals[i];
+        ga2d_real len = ga2d_vec_length(e);
+        if (!(len > 0) || !ga2d__unit_ok(ga2d_dot(n, n))) return -1;
+        /* outward: n ^ e > 0 for a CCW edge; perpendicular: |n . e| small */
+        if (!(ga2d_wedge(n, e) > 0) || GA2D__FABS(ga2d_dot(n, e)) > GA2D__R(GA2D__UNIT_TOL) * len) return -1;
+    }
+    return 1;
+}
+
 GA2D_API int ga2d_collide_polygons_scaled(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
                                           ga2d_transform xb, ga2d_real units, ga2d_manifold *out)
 {
     ga2d_manifold m;
+    int ca, cb;
     if (!out || !ga2d__polygon_ok(a) || !ga2d__polygon_ok(b)) return -(int)GA2D_ERR_INVALID_ARGUMENT;
     if (!ga2d__transform_ok(xa) || !ga2d__transform_ok(xb) || !ga2d__finite(units)) return -(int)GA2D_ERR_NOT_FINITE;
+    ca = ga2d__polygon_consistent(a);
+    cb = ga2d__polygon_consistent(b);
+    if (ca == 0 || cb == 0) return -(int)GA2D_ERR_NOT_FINITE;
+    if (ca < 0 || cb < 0) return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    /* the normal is promised unit: it is turned by these rotors */
+    if (!ga2d__unit_ok(xa.q.c * xa.q.c + xa.q.s * xa.q.s) || !ga2d__unit_ok(xb.q.c * xb.q.c + xb.q.s * xb.q.s))
+        return -(int)GA2D_ERR_INVALID_ARGUMENT;
     if (!(units > 0)) return -(int)GA2D_ERR_INVALID_ARGUMENT;
     memset(&m, 0, sizeof m);
     ga2d__collide(a, xa, b, xb, GA2D__R(GA2D_LINEAR_SLOP) * units, GA2D__R(GA2D_SPECULATIVE_DISTANCE) * units, &m);
@@ -3014,6 +3126,12 @@ GA2D_API ga2d_world_def ga2d_default_world_def(void)
     return d;
 }
 
+/* |g| within GA2D_MAX_GRAVITY (in the world's length units) */
+static int ga2d__gravity_ok(ga2d_vec g, ga2d_real units)
+{
+    return ga2d_vec_length(g) <= GA2D__R(GA2D_MAX_GRAVITY) * units;
+}
+
 GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *d)
 {
     if (!d) return GA2D_ERR_INVALID_ARGUMENT;
@@ -3022,6 +3140,8 @@ GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *d)
     if ((int)d->integrator < 0 || (int)d->integrator >= GA2D_INTEGRATOR_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
     if ((int)d->rotation_update < 0 || (int)d->rotation_update >= GA2D_ROTATION_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
     if (d->length_units_per_meter < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__gravity_ok(d->gravity, d->length_units_per_meter > 0 ? d->length_units_per_meter : 1))
+        return GA2D_ERR_TOO_LARGE;
     if (!ga2d__finite(d->contact_hertz) || !ga2d__finite(d->contact_damping_ratio) ||
         !ga2d__finite(d->contact_push_max_velocity) || !ga2d__finite(d->restitution_threshold))
         return GA2D_ERR_NOT_FINITE;
@@ -3149,11 +3269,18 @@ GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w)
 
 GA2D_API ga2d_vec ga2d_world_gravity(const ga2d_world *w) { return w ? w->def.gravity : ga2d_vec_make(0, 0); }
 
+/* within GA2D_MAX_COORDINATE, as a polygon's vertices are */
+static int ga2d__coordinate_ok(ga2d_vec p)
+{
+    return GA2D__FABS(p.x) <= GA2D__R(GA2D_MAX_COORDINATE) && GA2D__FABS(p.y) <= GA2D__R(GA2D_MAX_COORDINATE);
+}
+
 GA2D_API ga2d_result ga2d_world_set_gravity(ga2d_world *w, ga2d_vec g)
 {
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
     if (w->lock) return GA2D_ERR_LOCKED;
     if (!ga2d__finite_vec(g)) return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__gravity_ok(g, w->def.length_units_per_meter)) return GA2D_ERR_TOO_LARGE;
     w->def.gravity = g;
     return GA2D_OK;
 }
@@ -3306,6 +3433,7 @@ GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *d)
         !ga2d__finite(d->friction) || !ga2d__finite(d->restitution) || !ga2d__finite(d->linear_damping) ||
         !ga2d__finite(d->angular_damping) || !ga2d__finite(d->gravity_scale))
         return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__coordinate_ok(d->position)) return GA2D_ERR_TOO_LARGE;
     if (d->type == GA2D_BODY_DYNAMIC && !(d->density > 0)) return GA2D_ERR_INVALID_ARGUMENT;
     if (d->density < 0 || d->friction < 0 || d->restitution < 0 || d->linear_damping < 0 || d->angular_damping < 0)
         return GA2D_ERR_INVALID_ARGUMENT;
@@ -3608,6 +3736,7 @@ GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2
     ga2d_result r = ga2d__writable(w, id, &b);
     if (r != GA2D_OK) return r;
     if (!ga2d__finite_vec(position) || !ga2d__finite(q.c) || !ga2d__finite(q.s)) return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__coordinate_ok(position)) return GA2D_ERR_TOO_LARGE;
     {
         ga2d_vec u, c;
         /* zero, or too small to normalize (subnormal): no direction */
@@ -3661,6 +3790,7 @@ GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2
     ga2d_result r = ga2d__writable(w, id, &b);
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(m.mass) || !ga2d__finite(m.inertia) || !ga2d__finite_vec(m.center)) return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__coordinate_ok(m.center)) return GA2D_ERR_TOO_LARGE;
     if (b->type != GA2D_BODY_DYNAMIC || !(m.mass > 0) || m.inertia < 0) return GA2D_ERR_INVALID_ARGUMENT;
     if (!ga2d__finite(1 / m.mass) || (m.inertia > 0 && !ga2d__finite(1 / m.inertia))) return GA2D_ERR_INVALID_ARGUMENT;
     center = ga2d_vec_add(ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)), ga2d_rotate(b->q, m.center));
@@ -3957,7 +4087,7 @@ static void ga2d__contain(ga2d_world *w, int slot)
    The length is taken after scaling by the larger component, so a huge
    but finite velocity is capped, not turned into inf or NaN.  Returns 0
    for a velocity that is not finite. */
-static int ga2d__clamp_velocity(const ga2d_world *w, ga2d__body *b, ga2d_real h)
+static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
 {
     ga2d_real vmax = 400 * w->def.length_units_per_meter, wmax = GA2D__R(0.25) * GA2D__PI / h;
     ga2d_real ax = GA2D__FABS(b->v.x), ay = GA2D__FABS(b->v.y), m = ax > ay ? ax : ay;
@@ -3965,10 +4095,15 @@ static int ga2d__clamp_velocity(const ga2d_world *w, ga2d__body *b, ga2d_real h)
     if (m > vmax * GA2D__R(0.7)) { /* |v| may exceed vmax: measure it safely */
         ga2d_vec u = ga2d_vec_scale(b->v, 1 / m);
         ga2d_real len = m * GA2D__SQRT(ga2d_dot(u, u));
-        if (len > vmax) b->v = ga2d_vec_scale(u, m * (vmax / len));
+        if (len > vmax) {
+            b->v = ga2d_vec_scale(u, m * (vmax / len));
+            ++w->counters.speed_caps;
+        }
     }
-    if (b->w > wmax) b->w = wmax;
-    if (b->w < -wmax) b->w = -wmax;
+    if (b->w > wmax || b->w < -wmax) {
+        b->w = b->w > 0 ? wmax : -wmax;
+        ++w->counters.speed_caps;
+    }
     return 1;
 }
 
@@ -5191,6 +5326,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     w->counters.integrated_bodies = 0;
     w->counters.force_evaluations = 0;
     w->counters.rotation_updates = 0;
+    w->counters.speed_caps = 0;
     ga2d__update_pairs(w);
     ga2d__update_contacts(w);
     ga2d__prepare_contacts(w);
@@ -5251,6 +5387,9 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     if (!ga2d__finite(dt) || !(dt > 0)) return GA2D_ERR_INVALID_ARGUMENT;
     h = dt / (ga2d_real)w->def.substeps;
     if (!(h > 0)) return GA2D_ERR_INVALID_ARGUMENT; /* dt underflows when split */
+    /* the bounds of GA2D_MAX_TIME_STEP: g h^2 is how far gravity moves a
+       body from rest in a substep, before its contact pushes back */
+    if (dt > GA2D__R(GA2D_MAX_TIME_STEP) || ga2d_vec_length(w->def.gravity) * h * h > w->slop) return GA2D_ERR_TOO_LARGE;
     w->lock = GA2D__LOCK_STEP;
     ga2d__enter(w);
     ga2d__step(w, dt, h);

@@ -12,10 +12,11 @@
    tower), the lowest row 0.3 m above a static ground box between two
    static walls.  Default world def (4 substeps, soft step, sleep on),
    dt = 1/60, stepped until the pile settles (every body asleep, or none
-   faster than 5 cm/s, the sleep threshold) or MAX_SETTLE_STEPS, whichever
-   comes first.  Then every body but each tenth is destroyed and the world
-   stepped 10 more times, to see whether the memory follows the pair count
-   down; a 0.9 header's ga2d_world_compact is called after that, if any.
+   faster than 5 cm/s, the sleep threshold) or 300 steps (120 above 30 000
+   bodies, for time), whichever comes first.  Then every body but each
+   tenth is destroyed and the world stepped 10 more times, to see whether
+   the memory follows the pair count down; a 0.9 header's
+   ga2d_world_compact is called after that, if any.
 
    All the world's memory comes through ga2d_world_def.allocator, here a
    counting allocator: ga2d's free gets the size that was asked for, so
@@ -44,11 +45,15 @@
 #include <string.h>
 #include <time.h>
 
-/* 300 steps (5 s) is enough for every size here: the heap lands after
-   ~0.25 s and the default sizes settle, or give up, well within it.  The
-   whole default run (10k + 30k + 100k) takes about 2 minutes on the
-   development machine, the 100 000 row most of it; see the report. */
+/* Settling stops at 300 steps (5 s), or at 120 above 30 000 bodies: the
+   100 000 pile never sleeps (it is one island) and costs 0.3-1 s a step
+   here, 203 s for 300 steps alone.  Its peak is set at step ~22 (the
+   contact array doubling) and its pair count tops out near step 124;
+   memory only grows, so the later steps would change no byte figure, only
+   the end counters.  With 120 the default run takes ~2.5 min. */
 #define MAX_SETTLE_STEPS 300
+#define LARGE_SETTLE_STEPS 120
+#define LARGE_N 30000
 #define AFTER_DESTROY_STEPS 10
 #define SETTLE_SPEED 0.05 /* m/s: ga2d's sleep threshold */
 #define MAX_N 2000000     /* keeps the grid and the id array sane */
@@ -93,7 +98,8 @@ static void count_free(void *ptr, size_t size, void *ctx)
 
 /* ------------------------------------------------------------------- a run */
 typedef struct run_result {
-    int n, steps, settled;
+    int n, steps, settled, awake_end;
+    int peak_step, max_pairs_step;   /* the settle step (1-based) that set each */
     size_t peak, end, after_destroy, after_compact, largest;
     int have_compact;
     long long allocs;
@@ -135,6 +141,7 @@ static int run(int n, run_result *r)
     ga2d_world *w;
     ga2d_body_id *ids = (ga2d_body_id *)malloc((size_t)n * sizeof *ids);
     ga2d_body_def bd = ga2d_default_body_def();
+    const int max_steps = n > LARGE_N ? LARGE_SETTLE_STEPS : MAX_SETTLE_STEPS;
     double t0 = now_ms();
     int i, s;
 
@@ -170,13 +177,19 @@ static int run(int n, run_result *r)
 
     /* Settle.  The peak can only rise inside a step, so the counters read
        after the step that raised it are the nearest to the peak moment. */
-    for (s = 0; s < MAX_SETTLE_STEPS && !r->failed; ++s) {
+    for (s = 0; s < max_steps && !r->failed; ++s) {
         const size_t before = c.peak;
         ga2d_world_counters k;
         if (ga2d_world_step(w, (ga2d_real)(1.0 / 60)) != GA2D_OK) r->failed = 1;
         k = ga2d_world_get_counters(w);
-        if (c.peak > before || s == 0) r->at_peak = k;
-        if (k.pair_count > r->max_pairs) r->max_pairs = k.pair_count;
+        if (c.peak > before || s == 0) {
+            r->at_peak = k;
+            r->peak_step = s + 1;
+        }
+        if (k.pair_count > r->max_pairs) {
+            r->max_pairs = k.pair_count;
+            r->max_pairs_step = s + 1;
+        }
         if (k.touching_count > r->max_touching) r->max_touching = k.touching_count;
         r->steps = s + 1;
         if (settled(w, ids, n)) {
@@ -231,15 +244,18 @@ static void print_row(const run_result *r)
 
 static void print_detail(const run_result *r)
 {
-    printf("  N=%d: %d steps, %s; %.1f s; end %.0f KB; largest block %.0f KB; %lld allocations\n", r->n, r->steps,
-           r->settled ? "settled" : "NOT settled", r->seconds, kb(r->end), kb(r->largest), r->allocs);
-    printf("    pairs/touching: end %d/%d, most %d/%d, after the peak step %d/%d (%d awake); "
+    printf("  N=%d: %d steps, %s (%d awake); %.1f s; peak at step %d, end %.0f KB; largest block %.0f KB; "
+           "%lld allocations\n",
+           r->n, r->steps, r->settled ? "settled" : "NOT settled", r->at_end.awake_body_count, r->seconds,
+           r->peak_step, kb(r->end), kb(r->largest), r->allocs);
+    printf("    pairs/touching: end %d/%d, most pairs %d (step %d), most touching %d, after the peak step %d/%d; "
            "after destroying 90%%: %d/%d of %d bodies\n",
-           r->at_end.pair_count, r->at_end.touching_count, r->max_pairs, r->max_touching, r->at_peak.pair_count,
-           r->at_peak.touching_count, r->at_peak.awake_body_count, r->after_destroy_c.pair_count,
+           r->at_end.pair_count, r->at_end.touching_count, r->max_pairs, r->max_pairs_step, r->max_touching,
+           r->at_peak.pair_count, r->at_peak.touching_count, r->after_destroy_c.pair_count,
            r->after_destroy_c.touching_count, r->after_destroy_c.body_count);
     if (r->failed) printf("    FAILED (a body, step or destroy was refused)\n");
-    if (r->leaked || r->bad_free) printf("    %zu bytes not given back%s\n", r->leaked, r->bad_free ? ", sizes disagree" : "");
+    if (r->leaked || r->bad_free)
+        printf("    %zu bytes not given back%s\n", r->leaked, r->bad_free ? ", sizes disagree" : "");
 }
 
 /* after_compact_bytes is left empty when the header has no compact. */
@@ -247,9 +263,9 @@ static void write_csv(FILE *csv, const run_result *r)
 {
     char compact[32] = "";
     if (r->have_compact) snprintf(compact, sizeof compact, "%zu", r->after_compact);
-    fprintf(csv, "%d,%d,%d,%.2f,%zu,%.1f,%zu,%d,%d,%d,%d,%d,%d,%zu,%d,%d,%s,%zu,%lld,%zu,%d\n", r->n, r->steps,
-            r->settled, r->seconds, r->peak, (double)r->peak / r->n, r->end, r->at_end.pair_count,
-            r->at_end.touching_count, r->max_pairs, r->max_touching, r->at_peak.pair_count,
+    fprintf(csv, "%d,%d,%d,%d,%d,%d,%.2f,%zu,%.1f,%zu,%d,%d,%d,%d,%d,%d,%zu,%d,%d,%s,%zu,%lld,%zu,%d\n", r->n,
+            r->steps, r->settled, r->at_end.awake_body_count, r->peak_step, r->max_pairs_step, r->seconds, r->peak,
+            (double)r->peak / r->n, r->end, r->at_end.pair_count, r->at_end.touching_count, r->max_pairs, r->max_touching, r->at_peak.pair_count,
             r->at_peak.touching_count, r->after_destroy, r->after_destroy_c.pair_count,
             r->after_destroy_c.touching_count, compact, r->largest, r->allocs, r->leaked, r->failed);
 }
@@ -296,7 +312,7 @@ int main(int argc, char **argv)
            AFTER_DESTROY_STEPS);
 
     if (csv) {
-        fprintf(csv, "bodies,steps,settled,seconds,peak_bytes,peak_bytes_per_body,end_bytes,pairs_end,touching_end,"
+        fprintf(csv, "bodies,steps,settled,awake_end,peak_step,pairs_max_step,seconds,peak_bytes,peak_bytes_per_body,end_bytes,pairs_end,touching_end,"
                      "pairs_max,touching_max,pairs_at_peak,touching_at_peak,after_destroy_bytes,pairs_after_destroy,"
                      "touching_after_destroy,after_compact_bytes,largest_block_bytes,allocations,leaked_bytes,failed\n");
         for (i = 0; i < count; ++i) write_csv(csv, &res[i]);

@@ -48,6 +48,7 @@ typedef struct fw_state {
     int nids;
     /* what the world was told, for the work budget */
     int substeps, passes, rk4;
+    double units; /* length units per metre: the step's and gravity's bounds scale with it */
     long work;
     /* the force field */
     int field_kind, field_forbidden, field_calls;
@@ -353,6 +354,16 @@ static void fw_check_step(fw_state *s, ga2d_result r, long failures_before)
     if (r == GA2D_OK || r == GA2D_ERR_NOT_FINITE) fw_check_finite(s);
 }
 
+/* The bounds of GA2D_MAX_TIME_STEP and GA2D_MAX_GRAVITY, with a margin of
+   a part in 1e3 either side for the library's own rounding. */
+static double fw_max_gravity(const fw_state *s) { return GA2D_MAX_GRAVITY * s->units; }
+static int fw_step_too_large(const fw_state *s, double dt, double tol)
+{
+    ga2d_vec g = ga2d_world_gravity(s->w);
+    double h = dt / s->substeps;
+    return dt > GA2D_MAX_TIME_STEP * tol || hypot((double)g.x, (double)g.y) * h * h > GA2D_LINEAR_SLOP * s->units * tol;
+}
+
 /* ---------------------------------------------------------------- step */
 static void fw_step(fw_state *s)
 {
@@ -381,6 +392,13 @@ static void fw_step(fw_state *s)
         FUZZ_CHECK(ga2d_world_get_counters(s->w).step_count == steps_before);
         return;
     }
+    if (r == GA2D_ERR_TOO_LARGE) {
+        /* refused: beyond the step's bounds, and nothing changed */
+        FUZZ_CHECK(fw_step_too_large(s, (double)dt, 0.999));
+        FUZZ_CHECK(ga2d_world_get_counters(s->w).step_count == steps_before);
+        return;
+    }
+    FUZZ_CHECK(!fw_step_too_large(s, (double)dt, 1.001));
     FUZZ_CHECK(ga2d_world_get_counters(s->w).step_count == steps_before + 1);
     fw_check_step(s, r, failures);
 }
@@ -558,7 +576,8 @@ static void fw_world_op(fw_state *s, int op)
         int wild = k < 40;
         ga2d_vec g = fw_vec(s, 20, wild);
         r = ga2d_world_set_gravity(s->w, g);
-        FUZZ_CHECK(r == (fz_finite_vec(g) ? GA2D_OK : GA2D_ERR_NOT_FINITE));
+        if (!fz_finite_vec(g)) FUZZ_CHECK(r == GA2D_ERR_NOT_FINITE);
+        else FUZZ_CHECK(r == (hypot((double)g.x, (double)g.y) > fw_max_gravity(s) ? GA2D_ERR_TOO_LARGE : GA2D_OK));
         if (r == GA2D_OK) FUZZ_CHECK(ga2d_world_gravity(s->w).x == g.x && ga2d_world_gravity(s->w).y == g.y);
         break;
     }
@@ -680,6 +699,7 @@ static int fuzz_world_one(const uint8_t *data, size_t size)
     }
     FUZZ_CHECK(valid == GA2D_OK);
     s.substeps = d.substeps ? d.substeps : 4;
+    s.units = d.length_units_per_meter > 0 ? (double)d.length_units_per_meter : 1;
     s.passes = d.solver == GA2D_SOLVER_SOFT_STEP ? 2
                : (d.velocity_iterations ? d.velocity_iterations : 8) + (d.position_iterations ? d.position_iterations : 3);
     if (s.passes < 2) s.passes = 2;
