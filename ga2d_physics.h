@@ -3899,8 +3899,8 @@ GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2
     ga2d_result r = ga2d__writable(w, id, &b);
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(m.mass) || !ga2d__finite(m.inertia) || !ga2d__finite_vec(m.center)) return GA2D_ERR_NOT_FINITE;
-    if (!ga2d__coordinate_ok(m.center)) return GA2D_ERR_TOO_LARGE;
     if (b->type != GA2D_BODY_DYNAMIC || !(m.mass > 0) || m.inertia < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__coordinate_ok(m.center)) return GA2D_ERR_TOO_LARGE;
     if (!ga2d__finite(1 / m.mass) || (m.inertia > 0 && !ga2d__finite(1 / m.inertia))) return GA2D_ERR_INVALID_ARGUMENT;
     center = ga2d_vec_add(ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)), ga2d_rotate(b->q, m.center));
     /* the new centre moves with the rigid motion: v + (c' - c) Omega */

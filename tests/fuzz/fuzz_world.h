@@ -620,6 +620,15 @@ static void fw_world_op(fw_state *s, int op)
         FUZZ_CHECK(r == GA2D_OK);
         break;
     }
+    case 6: {
+        /* compaction gives memory back; only an allocation can fail it */
+        long failures = s->alloc.failures;
+        r = ga2d_world_compact(s->w);
+        FUZZ_CHECK(r == GA2D_OK || r == GA2D_ERR_OUT_OF_MEMORY);
+        FUZZ_CHECK((r == GA2D_ERR_OUT_OF_MEMORY) == (s->alloc.failures != failures));
+        fw_check_counts(s);
+        break;
+    }
     default:
         s->field_kind = k % 3;
         s->field_forbidden = (k >> 2) & 1;
@@ -714,7 +723,7 @@ static int fuzz_world_one(const uint8_t *data, size_t size)
         if (op < 10) fw_step(&s);
         else if (op < 13) fw_create(&s);
         else if (op < 28) fw_body_op(&s, op - 13);
-        else if (op < 31) fw_world_op(&s, fz_pick(&s.rd, 7));
+        else if (op < 31) fw_world_op(&s, fz_pick(&s.rd, 8));
         else fw_queries(&s);
     }
     /* always end with a couple of ordinary steps and the queries */
@@ -727,6 +736,7 @@ static int fuzz_world_one(const uint8_t *data, size_t size)
         r = ga2d_world_step(s.w, (ga2d_real)(1.0 / 60));
         FW_TRACE((stderr, "final step: %s\n", ga2d_result_string(r)));
         if (r == GA2D_ERR_INVALID_ARGUMENT) FUZZ_CHECK(!((ga2d_real)(1.0 / 60) / (ga2d_real)s.substeps > 0));
+        else if (r == GA2D_ERR_TOO_LARGE) FUZZ_CHECK(fw_step_too_large(&s, (double)(ga2d_real)(1.0 / 60), 0.999));
         else fw_check_step(&s, r, failures);
     }
     fw_queries(&s);
