@@ -1,4 +1,4 @@
-/* ga2d_physics.h - v0.8.0 - 2D rigid-body physics of convex polygons,
+/* ga2d_physics.h - v0.8.1 - 2D rigid-body physics of convex polygons,
    written in the geometric algebra of the plane.   MIT / public domain.
 
    ==========================================================================
@@ -270,6 +270,16 @@
    ==========================================================================
    VERSION HISTORY
    ==========================================================================
+   0.8.1  hostile input: user code run from the force callback, the debug
+          draw or the allocator hooks finds the world locked, and a world
+          destroyed from it goes when the library call returns; fat boxes
+          hold all a body can reach in the step (fast bodies passed thin
+          walls every other step); a contact deeper than the speculative
+          distance keeps its island awake; the incident edge is chosen to
+          full precision (a thin arc rocked and sank in float); ids carry
+          their world's tag; bounds on coordinates, the step and gravity
+          (TOO_LARGE); counters.speed_caps; ga2d_world_compact; the margin
+          of a small body's fat box scales with it; snapshot version 4.
    0.8.0  a touching pair that moved by under half a slop keeps its
           manifold, carried along with the bodies (no separating-axis
           search); solver bodies load into the lanes as whole rows; the
@@ -305,7 +315,7 @@
 
 #define GA2D_VERSION_MAJOR 0
 #define GA2D_VERSION_MINOR 8
-#define GA2D_VERSION_PATCH 0
+#define GA2D_VERSION_PATCH 1
 
 #ifndef GA2D_MAX_POLYGON_VERTICES
 #define GA2D_MAX_POLYGON_VERTICES 8

@@ -58,6 +58,7 @@ void suite_containment(void);
 void suite_fuzz_regress(void);
 void suite_failinject(void);
 void suite_extremes(void);
+void suite_hostile(void);
 
 #ifdef __cplusplus
 }

@@ -77,6 +77,7 @@ int main(void)
     suite_fuzz_regress();
     suite_failinject();
     suite_extremes();
+    suite_hostile();
     printf("%d passed, %d failed\n", g_passed, g_failed);
     return g_failed ? 1 : 0;
 }
