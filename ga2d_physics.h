@@ -5088,8 +5088,10 @@ static void ga2d__batch(ga2d_world *w, ga2d_real h)
     ga2d__soft zero;
     w->group_count = 0;
     if (w->constraint_count == 0) return;
-    if (!ga2d__grow(&w->mem, (void **)&w->groups, &w->group_capacity, w->constraint_count, sizeof *w->groups) ||
-        !ga2d__grow(&w->mem, (void **)&w->sbodies, &w->sbody_capacity, used + 1, sizeof *w->sbodies) ||
+    /* groups grow as they open (below): a group holds up to GA2D__LANES
+       constraints, so room for one per constraint (the worst case, every
+       constraint on one body) was 632 bytes per touching contact */
+    if (!ga2d__grow(&w->mem, (void **)&w->sbodies, &w->sbody_capacity, used + 1, sizeof *w->sbodies) ||
         !ga2d__grow(&w->mem, (void **)&w->last_group, &w->last_group_capacity, used, sizeof *w->last_group)) {
         w->step_error = GA2D_ERR_OUT_OF_MEMORY;
         return;
@@ -5108,7 +5110,14 @@ static void ga2d__batch(ga2d_world *w, ga2d_real h)
         if (ma && last[c->a] >= gi) gi = last[c->a] + 1;
         if (mb && last[c->b] >= gi) gi = last[c->b] + 1;
         gi = ga2d__group_free(w, gi);
-        if (gi == w->group_count) ga2d__group_open(&w->groups[w->group_count++]);
+        if (gi == w->group_count) {
+            if (!ga2d__grow(&w->mem, (void **)&w->groups, &w->group_capacity, w->group_count + 1, sizeof *w->groups)) {
+                w->group_count = 0;
+                w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+                return;
+            }
+            ga2d__group_open(&w->groups[w->group_count++]);
+        }
         g = &w->groups[gi];
         ga2d__lane_put(w, g, i, &soft, &stiff, &none);
         if (g->count == GA2D__LANES) g->skip = gi + 1;
