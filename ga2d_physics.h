@@ -708,9 +708,10 @@ GA2D_API void ga2d_world_destroy(ga2d_world *w);
 /* Advances by dt seconds in substeps.  A dt that is not finite and > 0 is
    refused (GA2D_ERR_INVALID_ARGUMENT) and nothing changes. */
 GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt);
-/* After a step that returned GA2D_ERR_NOT_FINITE: the first body whose
-   state the step found not finite (a user force, impulse or field drove it
-   there).  The step put it back where the step began, at rest, its forces
+/* After a step that returned GA2D_ERR_NOT_FINITE: a body whose state the
+   step found not finite (a user force, impulse or field drove it there);
+   of several, the one of lowest id index, whatever order the step met
+   them in (a world loaded from a snapshot names the same one).  The step put it back where the step began, at rest, its forces
    cleared, before its neighbours could see it (they stay finite); the rest
    of the step moved it as any body.  The null id when the last step
    contained nothing. */
@@ -957,8 +958,8 @@ GA2D_API ga2d_debug_draw ga2d_default_debug_draw(void);
    while the callbacks run, so from them every change (creating,
    destroying, setting, stepping, loading) is refused with LOCKED and the
    getters read the world as it is.  ga2d_world_destroy from a callback
-   ends the drawing at the next body and frees the world when the draw
-   returns. */
+   ends the drawing there (no callback comes after it) and frees the world
+   when the draw returns. */
 GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw *draw);
 
 #ifdef __cplusplus
@@ -1003,6 +1004,11 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
 #endif
 #define GA2D__R(x) ((ga2d_real)(x))
 #define GA2D__PI GA2D__R(3.14159265358979323846)
+/* Box2D's caps on motion: a body faster than GA2D__MAX_SPEED (m/s, times
+   length_units_per_meter) or turning more than GA2D__MAX_TURN (rad) in a
+   substep tunnels anyway; capped, a blow-up stays finite and is counted. */
+#define GA2D__MAX_SPEED GA2D__R(400)
+#define GA2D__MAX_TURN (GA2D__R(0.25) * GA2D__PI)
 
 #ifdef __cplusplus
 extern "C" {
@@ -4114,6 +4120,10 @@ static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update
 }
 
 /* Runs the force callback at time t on the bodies' current state. */
+static void ga2d__contain(ga2d_world *w, int slot);
+
+/* The field never reads a state that is not finite: a body the solver's
+   last pass drove there is contained first. */
 static void ga2d__eval_field(ga2d_world *w, double t)
 {
     int k;
@@ -4122,6 +4132,7 @@ static void ga2d__eval_field(ga2d_world *w, double t)
         ga2d__body *b = &w->bodies[w->moving[k]];
         b->field_force = ga2d_vec_make(0, 0);
         b->field_torque = 0;
+        if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w) || !ga2d__finite_vec(b->center)) ga2d__contain(w, w->moving[k]);
     }
     w->lock |= GA2D__LOCK_FIELD;
     w->eval_time = t;
@@ -4169,7 +4180,8 @@ static void ga2d__drift(ga2d_world *w, ga2d__body *b, ga2d_real h)
    impulse or field drove it there) is put back where the step began, at
    rest and without forces, before anything it touches can see it; the
    step reports GA2D_ERR_NOT_FINITE and ga2d_world_error_body names the
-   first such body.  Its neighbours stay finite. */
+   lowest slot of them (not the first met: the moving list's order is not
+   a snapshot's).  Its neighbours stay finite. */
 static void ga2d__contain(ga2d_world *w, int slot)
 {
     ga2d__body *b = &w->bodies[slot];
@@ -4198,31 +4210,41 @@ static void ga2d__contain(ga2d_world *w, int slot)
         }
     }
     if (w->step_error == GA2D_OK) w->step_error = GA2D_ERR_NOT_FINITE;
-    if (w->error_slot < 0) w->error_slot = slot;
+    if (w->error_slot < 0 || slot < w->error_slot) w->error_slot = slot;
 }
 
-/* The velocity cap (400 m/s in metres) and the largest turn per substep
-   (a quarter of pi), as Box2D: beyond them a body is tunnelling anyway.
-   The length is taken after scaling by the larger component, so a huge
-   but finite velocity is capped, not turned into inf or NaN.  Returns 0
-   for a velocity that is not finite. */
-static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
+/* Shortens *v to length max if longer (returns 1 then); the length is
+   taken after scaling by the larger component, so a huge but finite v is
+   capped, not turned into inf or NaN. */
+static int ga2d__cap_length(ga2d_vec *v, ga2d_real max)
 {
-    ga2d_real vmax = 400 * w->def.length_units_per_meter, wmax = GA2D__R(0.25) * GA2D__PI / h;
-    ga2d_real ax = GA2D__FABS(b->v.x), ay = GA2D__FABS(b->v.y), m = ax > ay ? ax : ay;
-    if (!ga2d__finite(m) || !ga2d__finite(b->w)) return 0;
-    if (m > vmax * GA2D__R(0.7)) { /* |v| may exceed vmax: measure it safely */
-        ga2d_vec u = ga2d_vec_scale(b->v, 1 / m);
+    ga2d_real ax = GA2D__FABS(v->x), ay = GA2D__FABS(v->y), m = ax > ay ? ax : ay;
+    if (m > max * GA2D__R(0.7)) { /* |v| may exceed max: measure it safely */
+        ga2d_vec u = ga2d_vec_scale(*v, 1 / m);
         ga2d_real len = m * GA2D__SQRT(ga2d_dot(u, u));
-        if (len > vmax) {
-            b->v = ga2d_vec_scale(u, m * (vmax / len));
-            ++w->counters.speed_caps;
+        if (len > max) {
+            *v = ga2d_vec_scale(u, m * (max / len));
+            return 1;
         }
     }
-    if (b->w > wmax || b->w < -wmax) {
-        b->w = b->w > 0 ? wmax : -wmax;
-        ++w->counters.speed_caps;
-    }
+    return 0;
+}
+
+static int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
+{
+    if (!(*th > max || *th < -max)) return 0;
+    *th = *th > 0 ? max : -max;
+    return 1;
+}
+
+/* The velocity cap and the largest turn per substep, as Box2D: beyond
+   them a body is tunnelling anyway; each capped body counts in
+   speed_caps.  Returns 0 for a velocity that is not finite. */
+static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
+{
+    if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) return 0;
+    w->counters.speed_caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
+    w->counters.speed_caps += ga2d__cap_turn(&b->w, GA2D__MAX_TURN / h);
     return 1;
 }
 
@@ -4276,6 +4298,15 @@ static void ga2d__rk4_velocities(ga2d_world *w, ga2d_real h, double t)
                 b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, c));
                 b->w = s[k].w0 + s[k].kw * c;
                 b->q = s[k].kth * c != 0 ? ga2d__turn(s[k].q0, s[k].kth * c, w->def.rotation_update) : s[k].q0;
+                if (!ga2d__finite_vec(b->center) || !ga2d__finite_vec(b->v) || !ga2d__finite(b->w) ||
+                    !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) {
+                    /* an overflowed stage: the field reads the start state
+                       (the end velocity overflows too, and is contained) */
+                    b->center = s[k].x0;
+                    b->q = s[k].q0;
+                    b->v = s[k].v0;
+                    b->w = s[k].w0;
+                }
             }
             ga2d__eval_field(w, t + (double)c);
         }
@@ -4353,10 +4384,16 @@ static void ga2d__integrate_positions(ga2d_world *w, ga2d_real h, double t)
         ga2d__rk4 *s = w->rk4;
         for (k = 0; k < w->moving_count; ++k) {
             ga2d__body *b = &w->bodies[w->moving[k]];
-            /* RK4's displacement plus h times what the contacts changed */
+            /* RK4's displacement plus h times what the contacts changed,
+               under the caps the velocities have (the stages' own
+               velocities are not capped) */
             ga2d_real th = s[k].sth * (h / 6) + (b->w - s[k].kw) * h;
+            ga2d_vec d;
             b->center = ga2d_vec_add(ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].sx, h / 6)),
                                      ga2d_vec_scale(ga2d_vec_sub(b->v, s[k].kv), h));
+            d = ga2d_vec_sub(b->center, s[k].x0);
+            if (ga2d__cap_length(&d, GA2D__MAX_SPEED * w->def.length_units_per_meter * h)) b->center = ga2d_vec_add(s[k].x0, d);
+            ga2d__cap_turn(&th, GA2D__MAX_TURN);
             if (th != 0) {
                 b->q = ga2d__turn(s[k].q0, th, w->def.rotation_update);
                 ++w->counters.rotation_updates;
@@ -4443,13 +4480,20 @@ static GA2D__HOT ga2d_vec ga2d__relative_velocity(const ga2d__body *a, const ga2
 }
 
 /* An impulse P at the anchors: B gains it, A loses it (dv = P/m,
-   dOmega = I^-1 (r ^ P)). */
+   dOmega = I^-1 (r ^ P)).  A side the impulse cannot move (static or
+   kinematic: zero inverse mass and inertia) is not written, so a NaN from
+   a blown-up body stops there instead of reaching the ground (0 NaN = NaN)
+   and from it every body resting on it. */
 static GA2D__HOT void ga2d__apply_impulse(const ga2d__constraint *c, ga2d__body *a, ga2d__body *b, ga2d_vec ra, ga2d_vec rb, ga2d_vec P)
 {
-    a->v = ga2d_vec_sub(a->v, ga2d_vec_scale(P, c->inv_ma));
-    a->w -= c->inv_ia * ga2d_wedge(ra, P);
-    b->v = ga2d_vec_add(b->v, ga2d_vec_scale(P, c->inv_mb));
-    b->w += c->inv_ib * ga2d_wedge(rb, P);
+    if (c->inv_ma != 0 || c->inv_ia != 0) {
+        a->v = ga2d_vec_sub(a->v, ga2d_vec_scale(P, c->inv_ma));
+        a->w -= c->inv_ia * ga2d_wedge(ra, P);
+    }
+    if (c->inv_mb != 0 || c->inv_ib != 0) {
+        b->v = ga2d_vec_add(b->v, ga2d_vec_scale(P, c->inv_mb));
+        b->w += c->inv_ib * ga2d_wedge(rb, P);
+    }
 }
 
 /* The tangent of a contact: the normal turned clockwise. */
@@ -5311,6 +5355,13 @@ static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
             }
         }
     }
+    /* passes of a restitution above 1 multiply a speed: one that overflowed
+       is contained now, before the force field would read it (a second
+       pass ran only if the first collided) */
+    for (k = 0; k < w->moving_count && pass > 1; ++k) {
+        const ga2d__body *b = &w->bodies[w->moving[k]];
+        if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) ga2d__contain(w, w->moving[k]);
+    }
 }
 
 /* ================================================================ sleep */
@@ -5951,25 +6002,27 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *cw, const ga2d_debug_draw
     return GA2D_OK;
 }
 
-/* Every live body in slot order, then the touching contacts' points; it
-   stops calling back once the world is destroyed from a callback. */
+/* Every live body in slot order, then the touching contacts' points.  A
+   world destroyed from a callback gets no further callback: each call is
+   made only while no destruction is pending. */
 static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
 {
     int s, ci, k;
     for (s = 0; s < w->body_used && !w->destroy_pending; ++s) {
         const ga2d__body *b = &w->bodies[s];
         if (b->type < 0) continue;
-        if (d->draw_bodies && d->polygon)
+        if (d->draw_bodies && d->polygon && !w->destroy_pending)
             d->polygon(ga2d__id_of(w, s), &b->polygon, ga2d__body_xf(b), ga2d__state_color(b), d->context);
-        if (d->draw_aabbs && d->aabb)
+        if (d->draw_aabbs && d->aabb && !w->destroy_pending)
             d->aabb(w->trees[b->type != GA2D_BODY_STATIC].nodes[b->proxy].box, GA2D_COLOR_AABB, d->context);
-        if (d->draw_centers && d->point) d->point(b->center, GA2D__R(0.05) * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
+        if (d->draw_centers && d->point && !w->destroy_pending)
+            d->point(b->center, GA2D__R(0.05) * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
     }
     if (d->draw_contacts && d->contact)
         for (ci = 0; ci < w->contact_used && !w->destroy_pending; ++ci) {
             const ga2d__contact *c = &w->contacts[ci];
             if (c->next_free != -2 || !c->touching) continue;
-            for (k = 0; k < c->manifold.count; ++k)
+            for (k = 0; k < c->manifold.count && !w->destroy_pending; ++k)
                 d->contact(c->manifold.points[k].point, c->manifold.normal, c->manifold.points[k].separation,
                            GA2D_COLOR_CONTACT, d->context);
         }

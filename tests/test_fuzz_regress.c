@@ -2,7 +2,7 @@
    tests/fuzz/regress/<harness>/ (one per finding, each fixed in the
    header) and the small seed corpus in tests/fuzz/seeds/<harness>/, run
    through the same per-input functions the libFuzzer drivers call
-   (polygon, world and snapshot-loader harnesses)
+   (polygon, world, snapshot-loader and re-entry harnesses)
    (tests/fuzz/fuzz_<harness>.h), in this build's configuration.  A
    violated invariant is a failed check here; a memory or UB error stops
    the sanitizer builds.  `make test` runs from the repository root, where
@@ -19,6 +19,7 @@
 #include "fuzz/fuzz_polygon.h"
 #include "fuzz/fuzz_world.h"
 #include "fuzz/fuzz_snapshot.h"
+#include "fuzz/fuzz_reentry.h"
 
 #if !defined(_WIN32)
 #include <dirent.h>
@@ -107,10 +108,12 @@ static void replay(const char *harness, fuzz_one_fn *fn)
 static int polygon_one(const uint8_t *data, size_t size) { return fuzz_polygon_one(data, size); }
 static int world_one(const uint8_t *data, size_t size) { return fuzz_world_one(data, size); }
 static int snapshot_one(const uint8_t *data, size_t size) { return fuzz_snapshot_one(data, size); }
+static int reentry_one(const uint8_t *data, size_t size) { return fuzz_reentry_one(data, size); }
 
 static void regress_polygon(void) { replay("polygon", polygon_one); }
 static void regress_world(void) { replay("world", world_one); }
 static void regress_snapshot(void) { replay("snapshot", snapshot_one); }
+static void regress_reentry(void) { replay("reentry", reentry_one); }
 
 /* The empty input and a few fixed ones, which need no files. */
 static void fixed_inputs(void)
@@ -128,6 +131,9 @@ static void fixed_inputs(void)
     fuzz_snapshot_one(NULL, 0);
     fuzz_snapshot_one(zeros, sizeof zeros);
     fuzz_snapshot_one(ramp, sizeof ramp);
+    fuzz_reentry_one(NULL, 0);
+    fuzz_reentry_one(zeros, sizeof zeros);
+    fuzz_reentry_one(ramp, sizeof ramp);
 }
 
 void suite_fuzz_regress(void)
@@ -136,4 +142,5 @@ void suite_fuzz_regress(void)
     test_run("fuzz regress: polygon findings and seeds", regress_polygon);
     test_run("fuzz regress: world findings and seeds", regress_world);
     test_run("fuzz regress: snapshot findings and seeds", regress_snapshot);
+    test_run("fuzz regress: re-entry findings and seeds", regress_reentry);
 }

@@ -1067,6 +1067,73 @@ static void speed_caps_counted(void)
                first, caps, rest_caps);
 }
 
+/* A body blown up by its own restitution (a finite but absurd e, whose
+   rebound overflows to inf) is contained, and the NaN stops at the static
+   ground: 0 x inf is NaN, so an impulse written to the ground's velocity
+   would poison every later contact with it.  The ground's velocity stays
+   exactly zero (it is never integrated), a box resting on the same ground
+   ends as it would in a world without the blown-up body (it is the same
+   world for it: the two never touch, and only the ground joins them), and
+   nothing non-finite is read from any getter, also from the force
+   callback, which the step calls after the restitution pass. */
+static int field_saw_nan;
+static void field_reads_all(ga2d_world *w, void *ctx)
+{
+    const ga2d_body_id *ids = (const ga2d_body_id *)ctx;
+    int i;
+    for (i = 0; i < 3; ++i) {
+        ga2d_vec v = ga2d_body_velocity(w, ids[i]);
+        ga2d_real om = ga2d_body_angular_velocity(w, ids[i]);
+        if (!(v.x - v.x == 0 && v.y - v.y == 0 && om - om == 0)) field_saw_nan = 1;
+    }
+}
+
+static void blowup_stops_at_ground(void)
+{
+    const ga2d_real huge_e = (ga2d_real)(sizeof(ga2d_real) == 4 ? 3e38 : 1e308);
+    ga2d_world *w[2];
+    ga2d_body_id ids[2][3];
+    int k, i, results[2] = {0, 0};
+    field_saw_nan = 0;
+    for (k = 0; k < 2; ++k) {
+        ga2d_world_def wd = ga2d_default_world_def();
+        ga2d_body_def g = box_def(GA2D_BODY_STATIC, 0, -0.5, 20, 0.5);
+        ga2d_body_def rest = box_def(GA2D_BODY_DYNAMIC, -5, 0.5, 0.5, 0.5);
+        ga2d_body_def bad = box_def(GA2D_BODY_DYNAMIC, 5, 1.0, 0.5, 0.5);
+        wd.force_callback = field_reads_all;
+        wd.force_context = ids[k];
+        w[k] = ga2d_world_create(&wd);
+        CHECK(w[k] != NULL);
+        if (!w[k]) return;
+        bad.restitution = huge_e;
+        bad.velocity = vec(0, -5);
+        ids[k][0] = ga2d_body_create(w[k], &g);
+        ids[k][1] = ga2d_body_create(w[k], &rest);
+        /* the second world has the blown-up body's slot taken by a far
+           away, harmless body, so that both worlds number alike */
+        if (k == 1) bad.position = vec(5, 100), bad.restitution = 0;
+        ids[k][2] = ga2d_body_create(w[k], &bad);
+    }
+    for (i = 0; i < 120; ++i)
+        for (k = 0; k < 2; ++k) {
+            ga2d_result r = ga2d_world_step(w[k], (ga2d_real)(1.0 / 60));
+            if (r != GA2D_OK) ++results[k];
+            CHECK(vec_same(ga2d_body_velocity(w[k], ids[k][0]), vec(0, 0)));
+            CHECK(ga2d_body_angular_velocity(w[k], ids[k][0]) == 0);
+        }
+    CHECK(results[0] > 0);  /* the blow-up is reported (NOT_FINITE) */
+    CHECK(results[1] == 0);
+    CHECK(!field_saw_nan);
+    /* the resting box: bit for bit as in the world without the blow-up */
+    CHECK(vec_same(ga2d_body_center(w[0], ids[0][1]), ga2d_body_center(w[1], ids[1][1])));
+    CHECK(vec_same(ga2d_body_velocity(w[0], ids[0][1]), ga2d_body_velocity(w[1], ids[1][1])));
+    if (verbose())
+        printf("  hostile: blow-up at the ground: %d steps reported it; resting box at y = %.6f in both worlds\n",
+               results[0], (double)ga2d_body_center(w[0], ids[0][1]).y);
+    ga2d_world_destroy(w[0]);
+    ga2d_world_destroy(w[1]);
+}
+
 void suite_hostile(void)
 {
     test_run("hostile: draw callbacks are locked", draw_callbacks_are_locked);
@@ -1085,4 +1152,5 @@ void suite_hostile(void)
     test_run("hostile: coordinates are bounded", coordinates_are_bounded);
     test_run("hostile: step and gravity are bounded", step_and_gravity_are_bounded);
     test_run("hostile: speed caps counted", speed_caps_counted);
+    test_run("hostile: a blow-up stops at the ground", blowup_stops_at_ground);
 }

@@ -19,7 +19,7 @@ FUZZ_FLAGS   := -std=c99 -O1 -g -ffp-contract=off -fsanitize=fuzzer,address,unde
                 -fno-sanitize-recover=all -fno-omit-frame-pointer
 # harness = input kind [+ _double for the double build]; the snapshot
 # harness exists once the header has the snapshot API
-FUZZ_KINDS   := polygon world $(if $(shell grep -l ga2d_world_snapshot_load $(HEADER) 2>/dev/null),snapshot)
+FUZZ_KINDS   := polygon world reentry $(if $(shell grep -l ga2d_world_snapshot_load $(HEADER) 2>/dev/null),snapshot)
 FUZZ_ALL     := $(foreach k,$(FUZZ_KINDS),$(k) $(k)_double)
 FUZZ_ONLY    ?= $(FUZZ_ALL)
 FUZZ_BINS    := $(addprefix $(FUZZ_DIR)/fuzz_,$(FUZZ_ONLY))
