@@ -279,7 +279,17 @@
           full precision (a thin arc rocked and sank in float); ids carry
           their world's tag; bounds on coordinates, the step and gravity
           (TOO_LARGE); counters.speed_caps; ga2d_world_compact; the margin
-          of a small body's fat box scales with it; snapshot version 4.
+          of a small body's fat box scales with it; snapshot version 4;
+          the re-entry fuzz harness's findings: restitution writes no
+          static body (a blown-up body made the ground NaN), the force
+          field never reads a non-finite state, RK4's displacement keeps
+          the speed caps, the error body is the lowest slot contained.
+   0.8.2  a def zero-initialised by hand is the defaults, switches
+          included (its enable_* fields read 0 as off, and friction, sleep,
+          warm starting and restitution vanished); the default functions
+          stamp internal_cookie, so their defs keep every zero as set;
+          the defaults are named constants (GA2D_DEFAULT_*) resolved in
+          one function per def; snapshot version 5.
    0.8.0  a touching pair that moved by under half a slop keeps its
           manifold, carried along with the bodies (no separating-axis
           search); solver bodies load into the lanes as whole rows; the
@@ -315,7 +325,7 @@
 
 #define GA2D_VERSION_MAJOR 0
 #define GA2D_VERSION_MINOR 8
-#define GA2D_VERSION_PATCH 1
+#define GA2D_VERSION_PATCH 2
 
 #ifndef GA2D_MAX_POLYGON_VERTICES
 #define GA2D_MAX_POLYGON_VERTICES 8
@@ -618,6 +628,65 @@ typedef void ga2d_force_fn(ga2d_world *world, void *context);
 #define GA2D_MAX_TIME_STEP 0.5
 #define GA2D_MAX_GRAVITY (GA2D_LINEAR_SLOP * (1024 / GA2D_MAX_TIME_STEP) * (1024 / GA2D_MAX_TIME_STEP))
 
+/* Defaults, in metres, kilograms and seconds (a world scales lengths by
+   its length_units_per_meter).  ga2d_default_world_def() and
+   ga2d_default_body_def() return them, and a def's zeros resolve to them
+   (see "Defs" below).  Define one before including the header to change
+   it for a whole build. */
+#ifndef GA2D_DEFAULT_GRAVITY
+#define GA2D_DEFAULT_GRAVITY (-10.0)          /* m/s^2, along y */
+#endif
+#ifndef GA2D_DEFAULT_SUBSTEPS
+#define GA2D_DEFAULT_SUBSTEPS 4               /* substeps per step */
+#endif
+#ifndef GA2D_DEFAULT_VELOCITY_ITERATIONS
+#define GA2D_DEFAULT_VELOCITY_ITERATIONS 8    /* PGS passes per substep */
+#endif
+#ifndef GA2D_DEFAULT_POSITION_ITERATIONS
+#define GA2D_DEFAULT_POSITION_ITERATIONS 3    /* NGS passes per substep */
+#endif
+#ifndef GA2D_DEFAULT_CONTACT_HERTZ
+#define GA2D_DEFAULT_CONTACT_HERTZ 45.0       /* Hz: soft contact stiffness */
+#endif
+#ifndef GA2D_DEFAULT_CONTACT_DAMPING_RATIO
+#define GA2D_DEFAULT_CONTACT_DAMPING_RATIO 10.0 /* of the soft contact spring */
+#endif
+#ifndef GA2D_DEFAULT_CONTACT_PUSH_MAX_VELOCITY
+#define GA2D_DEFAULT_CONTACT_PUSH_MAX_VELOCITY 0.8 /* m/s: push-out speed per contact */
+#endif
+#ifndef GA2D_DEFAULT_RESTITUTION_THRESHOLD
+#define GA2D_DEFAULT_RESTITUTION_THRESHOLD 1.0 /* m/s: slower impacts do not bounce */
+#endif
+#ifndef GA2D_DEFAULT_DENSITY
+#define GA2D_DEFAULT_DENSITY 1.0              /* kg/m^2 */
+#endif
+#ifndef GA2D_DEFAULT_FRICTION
+#define GA2D_DEFAULT_FRICTION 0.6             /* Coulomb coefficient */
+#endif
+#ifndef GA2D_DEFAULT_BOX_HALF_EXTENT
+#define GA2D_DEFAULT_BOX_HALF_EXTENT 0.5      /* m: the default body's box */
+#endif
+/* Caps on motion, as Box2D's: a body faster than this, or turning more
+   per substep, is tunnelling anyway; the step caps it and counts it in
+   counters.speed_caps. */
+#ifndef GA2D_MAX_LINEAR_SPEED
+#define GA2D_MAX_LINEAR_SPEED 400.0           /* m/s */
+#endif
+#ifndef GA2D_MAX_ROTATION
+#define GA2D_MAX_ROTATION (0.25 * 3.14159265358979323846) /* rad per substep */
+#endif
+
+/* Defs.  Get one from ga2d_default_world_def() (or _body_def()) and set
+   what you need: every field is then taken as you leave it.  A def
+   zero-initialised by hand (= {0}, memset) is the defaults: each field it
+   leaves at zero takes its default value, switches included, so it steps
+   bit for bit as the default def does.  The default functions stamp
+   internal_cookie, which is how a def tells the two apart; to set a field
+   to zero where its default is not zero (sleep off, weightless,
+   frictionless), start from the default function.  Fields marked "0
+   means" resolve their zero in every def. */
+#define GA2D_DEF_COOKIE 0x67613264 /* "ga2d" */
+
 typedef struct ga2d_world_def {
     ga2d_vec gravity;                     /* m/s^2; default (0, -10), |g| <= GA2D_MAX_GRAVITY */
     int substeps;                         /* per step; 0 means 4 */
@@ -643,6 +712,7 @@ typedef struct ga2d_world_def {
     int enable_warm_starting;             /* reuse last step's impulses (default 1) */
     int enable_friction;                  /* default 1 */
     int enable_restitution;               /* default 1 */
+    int internal_cookie;                  /* set by the default functions; leave it */
 } ga2d_world_def;
 
 /* Collision filtering, per body.  Two bodies in the same nonzero group
@@ -670,6 +740,7 @@ typedef struct ga2d_body_def {
     int is_awake;               /* default 1 */
     void *user_data;
     ga2d_filter filter;         /* default: category 1, collides with all */
+    int internal_cookie;        /* set by ga2d_default_body_def(); leave it */
 } ga2d_body_def;
 
 /* What the last step did: for checking that a scene pays only for what it
@@ -3232,34 +3303,102 @@ GA2D_API ga2d_world_def ga2d_default_world_def(void)
 {
     ga2d_world_def d;
     memset(&d, 0, sizeof d);
-    d.gravity = ga2d_vec_make(0, -10);
-    d.substeps = 4;
+    d.gravity = ga2d_vec_make(0, GA2D__R(GA2D_DEFAULT_GRAVITY));
+    d.substeps = GA2D_DEFAULT_SUBSTEPS;
     d.integrator = GA2D_INTEGRATOR_SYMPLECTIC_EULER;
     d.rotation_update = GA2D_ROTATION_EXACT;
     d.length_units_per_meter = 1;
     d.solver = GA2D_SOLVER_SOFT_STEP;
-    d.velocity_iterations = 8;
-    d.position_iterations = 3;
-    d.contact_hertz = 45;
-    d.contact_damping_ratio = 10;
-    d.contact_push_max_velocity = GA2D__R(0.8);
-    d.restitution_threshold = 1;
+    d.velocity_iterations = GA2D_DEFAULT_VELOCITY_ITERATIONS;
+    d.position_iterations = GA2D_DEFAULT_POSITION_ITERATIONS;
+    d.contact_hertz = GA2D__R(GA2D_DEFAULT_CONTACT_HERTZ);
+    d.contact_damping_ratio = GA2D__R(GA2D_DEFAULT_CONTACT_DAMPING_RATIO);
+    d.contact_push_max_velocity = GA2D__R(GA2D_DEFAULT_CONTACT_PUSH_MAX_VELOCITY);
+    d.restitution_threshold = GA2D__R(GA2D_DEFAULT_RESTITUTION_THRESHOLD);
     d.enable_sleep = 1;
     d.enable_warm_starting = 1;
     d.enable_friction = 1;
     d.enable_restitution = 1;
+    d.internal_cookie = GA2D_DEF_COOKIE;
     return d;
+}
+
+static int ga2d__is_zero(const void *p, size_t n)
+{
+    const unsigned char *c = (const unsigned char *)p;
+    size_t i;
+    for (i = 0; i < n; ++i)
+        if (c[i]) return 0;
+    return 1;
+}
+
+/* Field f of a def: taken from `in` where the def was stamped by its
+   default function or the field is not zero; else the default's stays. */
+#define GA2D__TAKE(f) \
+    do { \
+        if (stamped || !ga2d__is_zero(&in->f, sizeof in->f)) out.f = in->f; \
+    } while (0)
+/* ... and a field whose zero means the default in every def */
+#define GA2D__TAKE_NONZERO(f) \
+    do { \
+        if (in->f != 0) out.f = in->f; \
+    } while (0)
+
+/* The one place a world def's zeros become defaults (see "Defs"). */
+static ga2d_world_def ga2d__resolve_world_def(const ga2d_world_def *in)
+{
+    ga2d_world_def out = ga2d_default_world_def();
+    int stamped = in->internal_cookie == GA2D_DEF_COOKIE;
+    GA2D__TAKE(gravity);
+    GA2D__TAKE_NONZERO(substeps);
+    GA2D__TAKE(integrator);
+    GA2D__TAKE(rotation_update);
+    GA2D__TAKE_NONZERO(length_units_per_meter);
+    GA2D__TAKE(allocator);
+    GA2D__TAKE(force_callback);
+    GA2D__TAKE(force_context);
+    GA2D__TAKE(solver);
+    GA2D__TAKE_NONZERO(velocity_iterations);
+    GA2D__TAKE_NONZERO(position_iterations);
+    GA2D__TAKE_NONZERO(contact_hertz);
+    GA2D__TAKE_NONZERO(contact_damping_ratio);
+    GA2D__TAKE_NONZERO(contact_push_max_velocity);
+    GA2D__TAKE_NONZERO(restitution_threshold);
+    GA2D__TAKE(enable_sleep);
+    GA2D__TAKE(enable_warm_starting);
+    GA2D__TAKE(enable_friction);
+    GA2D__TAKE(enable_restitution);
+    return out;
+}
+
+/* |v| s, with |v| taken after scaling by the larger component: finite
+   whenever the product is, also where |v| alone would overflow. */
+static ga2d_real ga2d__length_times(ga2d_vec v, ga2d_real s)
+{
+    ga2d_real ax = GA2D__FABS(v.x), ay = GA2D__FABS(v.y), m = ax > ay ? ax : ay;
+    if (m == 0) return 0;
+    return (m * s) * GA2D__SQRT((v.x / m) * (v.x / m) + (v.y / m) * (v.y / m));
 }
 
 /* |g| within GA2D_MAX_GRAVITY (in the world's length units) */
 static int ga2d__gravity_ok(ga2d_vec g, ga2d_real units)
 {
-    return ga2d_vec_length(g) <= GA2D__R(GA2D_MAX_GRAVITY) * units;
+    return ga2d__length_times(g, 1) <= GA2D__R(GA2D_MAX_GRAVITY) * units;
 }
 
-GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *d)
+static ga2d_result ga2d__world_def_check(const ga2d_world_def *d);
+
+GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *def)
 {
-    if (!d) return GA2D_ERR_INVALID_ARGUMENT;
+    ga2d_world_def d;
+    if (!def) return GA2D_ERR_INVALID_ARGUMENT;
+    d = ga2d__resolve_world_def(def);
+    return ga2d__world_def_check(&d);
+}
+
+/* A resolved def's values against their bounds. */
+static ga2d_result ga2d__world_def_check(const ga2d_world_def *d)
+{
     if (!ga2d__finite_vec(d->gravity) || !ga2d__finite(d->length_units_per_meter)) return GA2D_ERR_NOT_FINITE;
     if (d->substeps < 0 || d->substeps > 1024) return GA2D_ERR_INVALID_ARGUMENT;
     if ((int)d->integrator < 0 || (int)d->integrator >= GA2D_INTEGRATOR_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
@@ -3281,17 +3420,9 @@ GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *d)
 
 GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
 {
-    ga2d_world_def d = def ? *def : ga2d_default_world_def();
+    ga2d_world_def d = def ? ga2d__resolve_world_def(def) : ga2d_default_world_def();
     ga2d_world *w;
-    if (ga2d_world_def_validate(&d) != GA2D_OK) return NULL;
-    if (d.substeps == 0) d.substeps = 4;
-    if (d.length_units_per_meter == 0) d.length_units_per_meter = 1;
-    if (d.velocity_iterations == 0) d.velocity_iterations = 8;
-    if (d.position_iterations == 0) d.position_iterations = 3;
-    if (d.contact_hertz == 0) d.contact_hertz = 45;
-    if (d.contact_damping_ratio == 0) d.contact_damping_ratio = 10;
-    if (d.contact_push_max_velocity == 0) d.contact_push_max_velocity = GA2D__R(0.8);
-    if (d.restitution_threshold == 0) d.restitution_threshold = 1;
+    if (ga2d__world_def_check(&d) != GA2D_OK) return NULL;
     w = (ga2d_world *)ga2d__alloc(&d.allocator, sizeof *w);
     if (!w) return NULL;
     memset(w, 0, sizeof *w);
@@ -3534,21 +3665,57 @@ GA2D_API ga2d_body_def ga2d_default_body_def(void)
     memset(&d, 0, sizeof d);
     d.type = GA2D_BODY_STATIC;
     d.rotor = ga2d_rotor_identity();
-    d.polygon = ga2d_polygon_box(GA2D__R(0.5), GA2D__R(0.5));
-    d.density = 1;
-    d.friction = GA2D__R(0.6);
+    d.polygon = ga2d_polygon_box(GA2D__R(GA2D_DEFAULT_BOX_HALF_EXTENT), GA2D__R(GA2D_DEFAULT_BOX_HALF_EXTENT));
+    d.density = GA2D__R(GA2D_DEFAULT_DENSITY);
+    d.friction = GA2D__R(GA2D_DEFAULT_FRICTION);
     d.gravity_scale = 1;
     d.is_awake = 1;
     d.filter = ga2d_default_filter();
+    d.internal_cookie = GA2D_DEF_COOKIE;
     return d;
 }
 
-GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *d)
+/* The one place a body def's zeros become defaults (see "Defs"); a zero
+   rotor means the identity in every def. */
+static ga2d_body_def ga2d__resolve_body_def(const ga2d_body_def *in)
+{
+    ga2d_body_def out = ga2d_default_body_def();
+    int stamped = in->internal_cookie == GA2D_DEF_COOKIE;
+    GA2D__TAKE(type);
+    GA2D__TAKE(position);
+    if (!(in->rotor.c == 0 && in->rotor.s == 0)) out.rotor = in->rotor;
+    GA2D__TAKE(velocity);
+    GA2D__TAKE(angular_velocity);
+    GA2D__TAKE(polygon);
+    GA2D__TAKE(density);
+    GA2D__TAKE(friction);
+    GA2D__TAKE(restitution);
+    GA2D__TAKE(linear_damping);
+    GA2D__TAKE(angular_damping);
+    GA2D__TAKE(gravity_scale);
+    GA2D__TAKE(fixed_rotation);
+    GA2D__TAKE(is_awake);
+    GA2D__TAKE(user_data);
+    GA2D__TAKE(filter);
+    return out;
+}
+
+static ga2d_result ga2d__body_def_check(const ga2d_body_def *d);
+
+GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *def)
+{
+    ga2d_body_def d;
+    if (!def) return GA2D_ERR_INVALID_ARGUMENT;
+    d = ga2d__resolve_body_def(def);
+    return ga2d__body_def_check(&d);
+}
+
+/* A resolved def's values against their bounds. */
+static ga2d_result ga2d__body_def_check(const ga2d_body_def *d)
 {
     ga2d_polygon check;
     ga2d_result r;
     int count;
-    if (!d) return GA2D_ERR_INVALID_ARGUMENT;
     if ((int)d->type < 0 || (int)d->type >= GA2D_BODY_TYPE_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
     if (!(d->rotor.c == 0 && d->rotor.s == 0) && ga2d__finite(d->rotor.c) && ga2d__finite(d->rotor.s) &&
         ga2d_vec_normalize(ga2d_vec_make(d->rotor.c, d->rotor.s), NULL) == 0)
@@ -3684,9 +3851,12 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
 GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
 {
     ga2d_body_id id = ga2d_body_id_null();
-    if (!w || w->lock || ga2d_body_def_validate(def) != GA2D_OK) return id;
+    ga2d_body_def d;
+    if (!w || w->lock || !def) return id;
+    d = ga2d__resolve_body_def(def);
+    if (ga2d__body_def_check(&d) != GA2D_OK) return id;
     ga2d__enter(w);
-    id = ga2d__body_create(w, def);
+    id = ga2d__body_create(w, &d);
     ga2d__leave(w);
     return id;
 }
@@ -5568,7 +5738,7 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     if (!(h > 0)) return GA2D_ERR_INVALID_ARGUMENT; /* dt underflows when split */
     /* the bounds of GA2D_MAX_TIME_STEP: g h^2 is how far gravity moves a
        body from rest in a substep, before its contact pushes back */
-    if (dt > GA2D__R(GA2D_MAX_TIME_STEP) || ga2d_vec_length(w->def.gravity) * h * h > w->slop) return GA2D_ERR_TOO_LARGE;
+    if (dt > GA2D__R(GA2D_MAX_TIME_STEP) || ga2d__length_times(w->def.gravity, h * h) > w->slop) return GA2D_ERR_TOO_LARGE;
     w->lock = GA2D__LOCK_STEP;
     ga2d__enter(w);
     ga2d__step(w, dt, h);
@@ -5589,8 +5759,8 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
    rebuilt in creation order and pairs and the solver follow canonical
    orders, the loaded world steps bit for bit as the saved one. */
 /* 2: body fields reordered (0.6.0); 3: held manifolds (0.8.0); 4: the
-   world's id tag, body and def fields (0.8.1) */
-#define GA2D__SNAP_VERSION 4u
+   world's id tag, body and def fields (0.8.1); 5: the def's cookie */
+#define GA2D__SNAP_VERSION 5u
 
 typedef struct ga2d__snap_header {
     char magic[8];
@@ -5929,7 +6099,9 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
     d.allocator = w->def.allocator;
     d.force_callback = w->def.force_callback;
     d.force_context = w->def.force_context;
-    if (ga2d_world_def_validate(&d) != GA2D_OK || d.substeps == 0 || d.length_units_per_meter == 0) return GA2D_ERR_BAD_SNAPSHOT;
+    if (d.internal_cookie != GA2D_DEF_COOKIE || ga2d__world_def_check(&d) != GA2D_OK || d.substeps == 0 ||
+        d.length_units_per_meter == 0)
+        return GA2D_ERR_BAD_SNAPSHOT;
     /* t's allocations run the user's hooks: w is locked meanwhile */
     w->lock = GA2D__LOCK_ALLOC;
     ga2d__enter(w);

@@ -399,67 +399,123 @@ static void defaults(void)
     }
 }
 
-/* A zero-initialised world def is valid: 0 substeps and 0 length units
-   mean the defaults.  Its gravity is the zero it was given.  The substep
-   count shows in the counters: one moving body, one step = 4 updates. */
-static void zero_world_def(void)
+/* A box on a 20 degree slope with friction 0.6 (tan 20 = 0.364 < 0.6:
+   static friction holds it), in a world made from `wd`; returns how far
+   the box's centre moved in 2 s and whether it is asleep, and fills
+   `state` with its centre, rotor and velocities for a bitwise comparison. */
+static double slope_slide(const ga2d_world_def *wd, const ga2d_body_def *box_template, ga2d_real state[7], int *asleep)
 {
-    ga2d_world_def wd;
-    ga2d_world *w;
+    const double theta = 20 * PI / 180;
+    ga2d_world *w = ga2d_world_create(wd);
+    ga2d_body_def g = ga2d_default_body_def(), b = *box_template;
     ga2d_body_id id;
-    ga2d_world_counters c;
-    memset(&wd, 0, sizeof wd);
-    CHECK_RESULT(ga2d_world_def_validate(&wd), GA2D_OK);
-    w = ga2d_world_create(&wd);
-    CHECK(w != NULL);
-    if (!w) return;
-    CHECK(vec_same(ga2d_world_gravity(w), vec(0, 0)));
-    CHECK(ga2d_world_time(w) == 0);
-    c = ga2d_world_get_counters(w);
-    CHECK(c.body_count == 0 && c.moving_body_count == 0 && c.step_count == 0);
-    id = ga2d_body_create(w, NULL);
-    CHECK(ga2d_body_id_is_null(id));
-    {
-        ga2d_body_def bd = def_of(GA2D_BODY_DYNAMIC, 1, 2);
-        id = ga2d_body_create(w, &bd);
-    }
+    ga2d_vec c0, c1;
+    int i;
+    if (!w) return -1;
+    g.polygon = ga2d_polygon_box(10, (ga2d_real)0.5);
+    g.rotor = ga2d_rotor_from_angle((ga2d_real)theta);
+    /* the slope's top face passes through the origin */
+    g.position = vec(0.5 * sin(theta), -0.5 * cos(theta));
+    CHECK(!ga2d_body_id_is_null(ga2d_body_create(w, &g)));
+    b.type = GA2D_BODY_DYNAMIC;
+    b.rotor = g.rotor;
+    b.position = vec(-0.5 * sin(theta), 0.5 * cos(theta)); /* resting on the face */
+    id = ga2d_body_create(w, &b);
     CHECK(!ga2d_body_id_is_null(id));
-    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)DT), GA2D_OK);
-    c = ga2d_world_get_counters(w);
-    CHECK(c.integrated_bodies == 4);
-    CHECK(c.step_count == 1);
-    /* no gravity, no velocity: not one bit moves */
-    CHECK(vec_same(ga2d_body_velocity(w, id), vec(0, 0)));
-    CHECK_NEAR(ga2d_body_position(w, id).x, 1, 2 * REAL_EPS);
-    CHECK_NEAR(ga2d_body_position(w, id).y, 2, 4 * REAL_EPS);
+    c0 = ga2d_body_center(w, id);
+    for (i = 0; i < 120; ++i) CHECK_RESULT(ga2d_world_step(w, (ga2d_real)DT), GA2D_OK);
+    c1 = ga2d_body_center(w, id);
+    state[0] = c1.x, state[1] = c1.y;
+    state[2] = ga2d_body_rotor(w, id).c, state[3] = ga2d_body_rotor(w, id).s;
+    state[4] = ga2d_body_velocity(w, id).x, state[5] = ga2d_body_velocity(w, id).y;
+    state[6] = ga2d_body_angular_velocity(w, id);
+    *asleep = !ga2d_body_is_awake(w, id);
     ga2d_world_destroy(w);
+    return len2((double)c1.x - (double)c0.x, (double)c1.y - (double)c0.y);
 }
 
-/* A zero-initialised body def has an empty polygon: refused, and
-   ga2d_body_def_validate says why. */
+/* A zero-initialised world def (plus gravity, or without it) is the
+   default def: every zero field takes its default, the switches included
+   (a zeroed def used to read enable_friction = 0 as off, and the box slid
+   6.9 m in 2 s).  The box on the slope ends bit for bit where it ends in
+   the default world, and it held: frictionless it would slide
+   g sin(theta) t^2 / 2 = 6.84 m; held, it moves by no more than a linear
+   slop (the soft contact settles it into the slope by at most that).  A
+   switch set to 0 in a def from ga2d_default_world_def() is off: without
+   friction the box slides as symplectic Euler's parabola has it,
+   a t (t + h) / 2 with a = g sin(theta) and h = dt/4 the substep (each
+   drift uses the velocity already kicked: 14 mm past the exact 6.84 m),
+   within a slop (the contact presses the box into the slope by at most
+   that, and the roundings are far smaller); and without sleep it stays
+   awake. */
+static void zero_world_def(void)
+{
+    const double a = 10 * sin(20 * PI / 180), slide = 0.5 * a * 2 * (2 + DT / 4);
+    ga2d_world_def zero, dflt = ga2d_default_world_def(), off;
+    ga2d_body_def box = ga2d_default_body_def();
+    ga2d_real s0[7], s1[7], s2[7];
+    int asleep0, asleep1, asleep2, i;
+    double d0, d1, d2;
+    memset(&zero, 0, sizeof zero);
+    CHECK_RESULT(ga2d_world_def_validate(&zero), GA2D_OK);
+    d0 = slope_slide(&dflt, &box, s0, &asleep0);
+    d1 = slope_slide(&zero, &box, s1, &asleep1);
+    for (i = 0; i < 7; ++i) CHECK(s0[i] == s1[i]);
+    CHECK(asleep0 == asleep1);
+    CHECK(d0 >= 0 && d0 <= GA2D_LINEAR_SLOP);
+    CHECK(d1 == d0);
+    /* the same with gravity set by hand */
+    zero.gravity = vec(0, -10);
+    d1 = slope_slide(&zero, &box, s1, &asleep1);
+    for (i = 0; i < 7; ++i) CHECK(s0[i] == s1[i]);
+    /* switches off, from the default def */
+    off = dflt;
+    off.enable_friction = 0;
+    d2 = slope_slide(&off, &box, s2, &asleep2);
+    CHECK(fabs(d2 - slide) <= GA2D_LINEAR_SLOP);
+    off = dflt;
+    off.enable_sleep = 0;
+    slope_slide(&off, &box, s2, &asleep2);
+    CHECK(asleep0 && !asleep2);
+    if (getenv("GA2D_TEST_VERBOSE"))
+        printf("  world: zeroed def: box moved %.3g m (default %.3g m, bound %.3g); friction off %.4f m "
+               "(bounds %.4f..%.4f)\n",
+               d1, d0, GA2D_LINEAR_SLOP, d2, slide - GA2D_LINEAR_SLOP, slide + GA2D_LINEAR_SLOP);
+}
+
+/* A zero-initialised body def is the default body def: a static 1 m box
+   of density 1 and friction 0.6, awake, colliding with everything.  Made
+   dynamic, it has the default box's exact mass, 1 kg (density 1 times
+   1 m^2, one rounding).  A zero-density dynamic def from the default
+   function is still refused, and says why. */
 static void zero_body_def(void)
 {
-    ga2d_body_def bd;
+    ga2d_body_def zero, dflt = ga2d_default_body_def();
     ga2d_world *w = ga2d_world_create(NULL);
+    ga2d_body_id a, b;
+    int i;
     CHECK(w != NULL);
     if (!w) return;
-    memset(&bd, 0, sizeof bd);
-    CHECK_RESULT(ga2d_body_def_validate(&bd), GA2D_ERR_TOO_FEW_POINTS);
-    CHECK(ga2d_body_id_is_null(ga2d_body_create(w, &bd)));
-    bd.type = GA2D_BODY_DYNAMIC;
-    CHECK(ga2d_body_def_validate(&bd) != GA2D_OK);
-    CHECK(ga2d_body_id_is_null(ga2d_body_create(w, &bd)));
-    CHECK(ga2d_world_get_counters(w).body_count == 0);
-    /* with a polygon, zero density is fine for a static body (its rotor
-       is zero too: that means identity) */
-    bd.type = GA2D_BODY_STATIC;
-    bd.polygon = ga2d_polygon_box(1, 1);
-    CHECK_RESULT(ga2d_body_def_validate(&bd), GA2D_OK);
-    {
-        ga2d_body_id id = ga2d_body_create(w, &bd);
-        CHECK(!ga2d_body_id_is_null(id));
-        CHECK(ga2d_body_rotor(w, id).c == 1 && ga2d_body_rotor(w, id).s == 0);
-    }
+    memset(&zero, 0, sizeof zero);
+    CHECK_RESULT(ga2d_body_def_validate(&zero), GA2D_OK);
+    a = ga2d_body_create(w, &zero);
+    b = ga2d_body_create(w, &dflt);
+    CHECK(!ga2d_body_id_is_null(a) && !ga2d_body_id_is_null(b));
+    CHECK(ga2d_body_get_type(w, a) == GA2D_BODY_STATIC);
+    CHECK(ga2d_body_polygon(w, a)->count == ga2d_body_polygon(w, b)->count);
+    for (i = 0; i < ga2d_body_polygon(w, a)->count; ++i)
+        CHECK(vec_same(ga2d_body_polygon(w, a)->vertices[i], ga2d_body_polygon(w, b)->vertices[i]));
+    CHECK(ga2d_body_rotor(w, a).c == 1 && ga2d_body_rotor(w, a).s == 0);
+    zero.type = GA2D_BODY_DYNAMIC;
+    a = ga2d_body_create(w, &zero);
+    CHECK(!ga2d_body_id_is_null(a));
+    CHECK_NEAR(ga2d_body_mass_data(w, a).mass, 1, REAL_EPS);
+    CHECK(ga2d_body_is_awake(w, a));
+    dflt.type = GA2D_BODY_DYNAMIC;
+    dflt.density = 0;
+    CHECK_RESULT(ga2d_body_def_validate(&dflt), GA2D_ERR_INVALID_ARGUMENT);
+    CHECK(ga2d_body_id_is_null(ga2d_body_create(w, &dflt)));
+    CHECK(ga2d_world_get_counters(w).body_count == 3);
     ga2d_world_destroy(w);
 }
 
@@ -1943,7 +1999,7 @@ void suite_world(void)
 {
     test_run("world: default world and body defs", defaults);
     test_run("world: zero-initialised world def means the defaults", zero_world_def);
-    test_run("world: zero-initialised body def refused (empty polygon), says why", zero_body_def);
+    test_run("world: zero-initialised body def means the defaults", zero_body_def);
     test_run("world: ga2d_world_create(NULL) is the default world", create_null_def);
     test_run("world: ids: null, destroy, reuse, forged, generations", ids_and_generations);
     test_run("world: 5000 bodies, half destroyed and recreated, keep their state", many_bodies);

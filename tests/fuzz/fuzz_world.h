@@ -154,8 +154,10 @@ static ga2d_polygon fw_polygon(fw_state *s, int wild)
 static ga2d_body_def fw_body_def(fw_state *s)
 {
     ga2d_body_def d = ga2d_default_body_def();
-    unsigned flags = fz_u8(&s->rd), t = fz_u8(&s->rd) % 20;
+    unsigned flags = fz_u8(&s->rd), raw = fz_u8(&s->rd), t = raw % 20;
     int wild = (flags & 7) == 0;
+    /* a hand-made def: its zero fields are the defaults */
+    if (raw >= 200) d.internal_cookie = 0;
     d.type = t < 5 ? GA2D_BODY_STATIC : t < 8 ? GA2D_BODY_KINEMATIC : t < 19 ? GA2D_BODY_DYNAMIC : GA2D_BODY_TYPE_COUNT;
     d.polygon = fw_polygon(s, wild && (flags & 8));
     d.position = fw_vec(s, 4, wild);
@@ -228,7 +230,12 @@ static void fw_create(fw_state *s)
         const ga2d_polygon *poly = ga2d_body_polygon(s->w, id);
         double reach = 0, size;
         int i;
-        FUZZ_CHECK(poly != NULL && poly->count == d.polygon.count);
+        /* a hand-made def's all-zero polygon is the default box */
+        static const ga2d_polygon none;
+        int count = d.internal_cookie != GA2D_DEF_COOKIE && memcmp(&d.polygon, &none, sizeof none) == 0
+                        ? ga2d_default_body_def().polygon.count
+                        : d.polygon.count;
+        FUZZ_CHECK(poly != NULL && poly->count == count);
         for (i = 0; i < poly->count; ++i)
             reach = fmax(reach, fabs((double)poly->vertices[i].x) + fabs((double)poly->vertices[i].y));
         size = fabs((double)d.position.x) + fabs((double)d.position.y) + reach;
@@ -667,6 +674,7 @@ static ga2d_world_def fw_world_def(fw_state *s)
     d.enable_warm_starting = (int)((k >> 1) & 1);
     d.enable_friction = (int)((k >> 2) & 1);
     d.enable_restitution = (int)((k >> 3) & 1);
+    if (k & 16) d.internal_cookie = 0; /* hand-made: its zeros are the defaults */
     if (flags & 64) {
         /* an allocator that fails: attempt k, and maybe every j-th after */
         s->alloc.fail_at = 1 + fz_u8(&s->rd);
