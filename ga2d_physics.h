@@ -758,7 +758,7 @@ typedef struct ga2d_world_counters {
     int awake_body_count;   /* dynamic bodies awake */
     int island_count;       /* islands found in the last step (sleep on) */
     int speed_caps;         /* times the last step capped a body's speed
-                               (400 m/s) or turn (a quarter turn per
+                               (GA2D_MAX_LINEAR_SPEED) or turn (GA2D_MAX_ROTATION per
                                substep), per body and substep: a body
                                driven that fast is blowing up, and this is
                                how a program notices (the step still
@@ -1075,11 +1075,10 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
 #endif
 #define GA2D__R(x) ((ga2d_real)(x))
 #define GA2D__PI GA2D__R(3.14159265358979323846)
-/* Box2D's caps on motion: a body faster than GA2D__MAX_SPEED (m/s, times
-   length_units_per_meter) or turning more than GA2D__MAX_TURN (rad) in a
-   substep tunnels anyway; capped, a blow-up stays finite and is counted. */
-#define GA2D__MAX_SPEED GA2D__R(400)
-#define GA2D__MAX_TURN (GA2D__R(0.25) * GA2D__PI)
+/* The caps on motion in ga2d_real (GA2D_MAX_LINEAR_SPEED is in m/s, times
+   length_units_per_meter where used) */
+#define GA2D__MAX_SPEED GA2D__R(GA2D_MAX_LINEAR_SPEED)
+#define GA2D__MAX_TURN GA2D__R(GA2D_MAX_ROTATION)
 
 #ifdef __cplusplus
 extern "C" {

@@ -6,6 +6,17 @@
 
 static int g_passed, g_failed, g_case_failures;
 static const char *g_case;
+static char **g_filters; /* argv: run only tests whose name holds one */
+static int g_filter_count;
+
+static int selected(const char *name)
+{
+    int i;
+    if (g_filter_count == 0) return 1;
+    for (i = 0; i < g_filter_count; ++i)
+        if (strstr(name, g_filters[i])) return 1;
+    return 0;
+}
 
 void test_fail(const char *file, int line, const char *fmt, ...)
 {
@@ -22,6 +33,7 @@ void test_fail(const char *file, int line, const char *fmt, ...)
 
 void test_run(const char *name, void (*fn)(void))
 {
+    if (!selected(name)) return;
     g_case = name;
     g_case_failures = 0;
     fn();
@@ -52,8 +64,12 @@ int rng_int(test_rng *r, int lo, int hi)
     return lo + (int)(rng_next(r) % (uint64_t)(hi - lo + 1));
 }
 
-int main(void)
+/* ./build/tests/<config> [word ...]: every test, or those whose name
+   contains one of the words (say "solver" or "hostile: blow-up"). */
+int main(int argc, char **argv)
 {
+    g_filters = argv + 1;
+    g_filter_count = argc - 1;
     printf("ga2d_physics %d.%d.%d tests, ga2d_real = %s, %s, max polygon vertices %d\n",
            GA2D_VERSION_MAJOR, GA2D_VERSION_MINOR, GA2D_VERSION_PATCH, REAL_NAME,
 #ifdef __cplusplus
