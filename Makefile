@@ -106,6 +106,9 @@ DET_CC_clangxx := clang++ -std=c++11 -x c++
 DET_BINS := $(foreach p,float double,$(addprefix $(BUILD)/det/$(p)-,$(DET_VARIANTS)))
 DET_FLAGS_float  :=
 DET_FLAGS_double := -DGA2D_DOUBLE
+# The pinned hashes: a change that alters the scene's bits says why in its
+# commit and updates them here.
+DET_PINS := float:410476f6eb8ba06f double:87f8ca8f40570890
 
 $(BUILD)/det/%: tests/determinism.c tests/determinism_scene.h $(HEADER)
 	@mkdir -p $(dir $@)
@@ -123,12 +126,18 @@ test:
 	    for b in $(BUILD)/det/$$p-*; do ./$$b || { echo "  $$b: churn changed the scene"; exit 1; }; done | sort | uniq -c; \
 	    n=$$(for b in $(BUILD)/det/$$p-*; do ./$$b; done | sort -u | wc -l); \
 	    test "$$n" = 1 || { echo "  determinism FAILED: $$p builds disagree"; exit 1; }; \
-	  done
+	    got=$$(./$(BUILD)/det/$$p-gcc-O2 | cut -d' ' -f2); \
+	    echo " $(DET_PINS) " | grep -q " $$p:$$got " || \
+	      { echo "  determinism FAILED: $$p hash $$got is not the pinned one ($(DET_PINS))"; exit 1; }; \
+	  done; echo "  pinned: $(DET_PINS)"
 	@sh tests/run_all.sh $(TEST_BINS)
 
-# One configuration (C99 float, gcc), for the edit-test loop.
-check: $(BUILD)/tests/gcc-c99-float
-	./$(BUILD)/tests/gcc-c99-float
+# One configuration (C99 float, gcc) and the float determinism pin, for the
+# edit-test loop.  make check T=solver runs only the tests named so.
+check: $(BUILD)/tests/gcc-c99-float $(BUILD)/det/float-gcc-O2
+	@got=$$(./$(BUILD)/det/float-gcc-O2 | cut -d' ' -f2); echo " $(DET_PINS) " | grep -q " float:$$got " || \
+	  { echo "determinism FAILED: float hash $$got is not the pinned one ($(DET_PINS))"; exit 1; }
+	./$(BUILD)/tests/gcc-c99-float $(T)
 
 # --- benchmarks: tests/bench/bench_*.c, each given a CSV path under build/bench
 BENCH_SRC  := $(wildcard tests/bench/bench_*.c)

@@ -2103,7 +2103,9 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
     ga2d_real sep_a, sep_b, sep;
     int edge_a, edge_b, flip, i11, i12, i21, i22, j;
 
-    m->count = 0;
+    /* all of it defined, the points not made included: a contact's
+       manifold is saved whole in snapshots, and must not carry stack */
+    memset(m, 0, sizeof *m);
     A.count = pa->count;
     B.count = pb->count;
     for (j = 0; j < pa->count; ++j) {
@@ -3331,23 +3333,21 @@ static int ga2d__is_zero(const void *p, size_t n)
     return 1;
 }
 
-/* Field f of a def: taken from `in` where the def was stamped by its
-   default function or the field is not zero; else the default's stays. */
-#define GA2D__TAKE(f) \
-    do { \
-        if (stamped || !ga2d__is_zero(&in->f, sizeof in->f)) out.f = in->f; \
-    } while (0)
+/* Field f of a resolved def: taken from `in` where the def was stamped by
+   its default function or the field is not zero, else the default.  Set
+   field by field into zeroed memory, so that the padding is zero too (a
+   world's def is saved in snapshots). */
+#define GA2D__TAKE(f) (out->f = (stamped || !ga2d__is_zero(&in->f, sizeof in->f)) ? in->f : dflt.f)
 /* ... and a field whose zero means the default in every def */
-#define GA2D__TAKE_NONZERO(f) \
-    do { \
-        if (in->f != 0) out.f = in->f; \
-    } while (0)
+#define GA2D__TAKE_NONZERO(f) (out->f = in->f != 0 ? in->f : dflt.f)
 
 /* The one place a world def's zeros become defaults (see "Defs"). */
-static ga2d_world_def ga2d__resolve_world_def(const ga2d_world_def *in)
+static void ga2d__resolve_world_def(const ga2d_world_def *in, ga2d_world_def *out)
 {
-    ga2d_world_def out = ga2d_default_world_def();
+    ga2d_world_def dflt = ga2d_default_world_def();
     int stamped = in->internal_cookie == GA2D_DEF_COOKIE;
+    memset(out, 0, sizeof *out);
+    out->internal_cookie = GA2D_DEF_COOKIE;
     GA2D__TAKE(gravity);
     GA2D__TAKE_NONZERO(substeps);
     GA2D__TAKE(integrator);
@@ -3367,7 +3367,6 @@ static ga2d_world_def ga2d__resolve_world_def(const ga2d_world_def *in)
     GA2D__TAKE(enable_warm_starting);
     GA2D__TAKE(enable_friction);
     GA2D__TAKE(enable_restitution);
-    return out;
 }
 
 /* |v| s, with |v| taken after scaling by the larger component: finite
@@ -3391,7 +3390,7 @@ GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *def)
 {
     ga2d_world_def d;
     if (!def) return GA2D_ERR_INVALID_ARGUMENT;
-    d = ga2d__resolve_world_def(def);
+    ga2d__resolve_world_def(def, &d);
     return ga2d__world_def_check(&d);
 }
 
@@ -3419,13 +3418,14 @@ static ga2d_result ga2d__world_def_check(const ga2d_world_def *d)
 
 GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
 {
-    ga2d_world_def d = def ? ga2d__resolve_world_def(def) : ga2d_default_world_def();
+    ga2d_world_def d, dflt = ga2d_default_world_def();
     ga2d_world *w;
+    ga2d__resolve_world_def(def ? def : &dflt, &d);
     if (ga2d__world_def_check(&d) != GA2D_OK) return NULL;
     w = (ga2d_world *)ga2d__alloc(&d.allocator, sizeof *w);
     if (!w) return NULL;
     memset(w, 0, sizeof *w);
-    w->def = d;
+    memcpy(&w->def, &d, sizeof d); /* its zero padding too */
     w->mem.alloc = ga2d__hook_alloc;
     w->mem.free = ga2d__hook_free;
     w->mem.ctx = w;
@@ -3676,13 +3676,15 @@ GA2D_API ga2d_body_def ga2d_default_body_def(void)
 
 /* The one place a body def's zeros become defaults (see "Defs"); a zero
    rotor means the identity in every def. */
-static ga2d_body_def ga2d__resolve_body_def(const ga2d_body_def *in)
+static void ga2d__resolve_body_def(const ga2d_body_def *in, ga2d_body_def *out)
 {
-    ga2d_body_def out = ga2d_default_body_def();
+    ga2d_body_def dflt = ga2d_default_body_def();
     int stamped = in->internal_cookie == GA2D_DEF_COOKIE;
+    memset(out, 0, sizeof *out);
+    out->internal_cookie = GA2D_DEF_COOKIE;
     GA2D__TAKE(type);
     GA2D__TAKE(position);
-    if (!(in->rotor.c == 0 && in->rotor.s == 0)) out.rotor = in->rotor;
+    out->rotor = in->rotor.c == 0 && in->rotor.s == 0 ? dflt.rotor : in->rotor;
     GA2D__TAKE(velocity);
     GA2D__TAKE(angular_velocity);
     GA2D__TAKE(polygon);
@@ -3696,7 +3698,6 @@ static ga2d_body_def ga2d__resolve_body_def(const ga2d_body_def *in)
     GA2D__TAKE(is_awake);
     GA2D__TAKE(user_data);
     GA2D__TAKE(filter);
-    return out;
 }
 
 static ga2d_result ga2d__body_def_check(const ga2d_body_def *d);
@@ -3705,7 +3706,7 @@ GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *def)
 {
     ga2d_body_def d;
     if (!def) return GA2D_ERR_INVALID_ARGUMENT;
-    d = ga2d__resolve_body_def(def);
+    ga2d__resolve_body_def(def, &d);
     return ga2d__body_def_check(&d);
 }
 
@@ -3852,7 +3853,7 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
     ga2d_body_id id = ga2d_body_id_null();
     ga2d_body_def d;
     if (!w || w->lock || !def) return id;
-    d = ga2d__resolve_body_def(def);
+    ga2d__resolve_body_def(def, &d);
     if (ga2d__body_def_check(&d) != GA2D_OK) return id;
     ga2d__enter(w);
     id = ga2d__body_create(w, &d);

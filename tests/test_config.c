@@ -21,10 +21,40 @@ static void static_copy_works(void)
     CHECK_NEAR(m.inertia, 8.0 * 20.0 / 12.0, 4 * REAL_EPS * 14);
 }
 
+/* Whether the file (read from the repository root, where make test runs)
+   contains `text`. */
+static int file_contains(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+    long n;
+    int found;
+    if (!f) return 0;
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    buf = (char *)malloc((size_t)n + 1);
+    if (!buf || fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        free(buf);
+        fclose(f);
+        return 0;
+    }
+    buf[n] = 0;
+    fclose(f);
+    found = strstr(buf, text) != NULL;
+    free(buf);
+    return found;
+}
+
+/* The version macros name a release the header's version history and the
+   README's status line describe. */
 static void version_macros(void)
 {
-    CHECK(GA2D_VERSION_MAJOR >= 0 && GA2D_VERSION_MINOR >= 0 && GA2D_VERSION_PATCH >= 0);
-    CHECK(GA2D_VERSION_MAJOR * 10000 + GA2D_VERSION_MINOR * 100 + GA2D_VERSION_PATCH > 0);
+    char entry[64], status[64];
+    snprintf(entry, sizeof entry, "\n   %d.%d.%d  ", GA2D_VERSION_MAJOR, GA2D_VERSION_MINOR, GA2D_VERSION_PATCH);
+    snprintf(status, sizeof status, "**Status (%d.%d.%d).**", GA2D_VERSION_MAJOR, GA2D_VERSION_MINOR, GA2D_VERSION_PATCH);
+    CHECK(file_contains("ga2d_physics.h", entry));
+    CHECK(file_contains("README.md", status));
 }
 
 static void real_matches_config(void)

@@ -94,6 +94,10 @@ int main(int argc, char **argv)
     suite_failinject();
     suite_extremes();
     suite_hostile();
+    if (g_filter_count > 0 && g_passed + g_failed == 0) {
+        printf("no test name contains %s%s\n", argv[1], argc > 2 ? " (or the other words)" : "");
+        return 1;
+    }
     printf("%d passed, %d failed\n", g_passed, g_failed);
     return g_failed ? 1 : 0;
 }

@@ -231,8 +231,10 @@ static void fw_create(fw_state *s)
         double reach = 0, size;
         int i;
         /* a hand-made def's all-zero polygon is the default box */
-        static const ga2d_polygon none;
-        int count = d.internal_cookie != GA2D_DEF_COOKIE && memcmp(&d.polygon, &none, sizeof none) == 0
+        ga2d_polygon none;
+        int count;
+        memset(&none, 0, sizeof none);
+        count = d.internal_cookie != GA2D_DEF_COOKIE && memcmp(&d.polygon, &none, sizeof none) == 0
                         ? ga2d_default_body_def().polygon.count
                         : d.polygon.count;
         FUZZ_CHECK(poly != NULL && poly->count == count);
