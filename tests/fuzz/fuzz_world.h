@@ -369,8 +369,10 @@ static double fw_max_gravity(const fw_state *s) { return GA2D_MAX_GRAVITY * s->u
 static int fw_step_too_large(const fw_state *s, double dt, double tol)
 {
     ga2d_vec g = ga2d_world_gravity(s->w);
-    double h = dt / s->substeps;
-    return dt > GA2D_MAX_TIME_STEP * tol || hypot((double)g.x, (double)g.y) * h * h > GA2D_LINEAR_SLOP * s->units * tol;
+    double h = dt / s->substeps, gx = (double)g.x, gy = (double)g.y, m = fmax(fabs(gx), fabs(gy));
+    /* |g| h^2, scaled first: |g| alone overflows at g near the largest real */
+    double gh2 = m == 0 ? 0 : (m * h * h) * hypot(gx / m, gy / m);
+    return dt > GA2D_MAX_TIME_STEP * tol || gh2 > GA2D_LINEAR_SLOP * s->units * tol;
 }
 
 /* ---------------------------------------------------------------- step */
