@@ -4292,8 +4292,16 @@ static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update
 /* Runs the force callback at time t on the bodies' current state. */
 static void ga2d__contain(ga2d_world *w, int slot);
 
-/* The field never reads a state that is not finite: a body the solver's
-   last pass drove there is contained first. */
+/* Position, rotor and velocities all finite. */
+static int ga2d__state_finite(const ga2d__body *b)
+{
+    return ga2d__finite_vec(b->center) && ga2d__finite(b->q.c) && ga2d__finite(b->q.s) && ga2d__finite_vec(b->v) &&
+           ga2d__finite(b->w);
+}
+
+/* The field never reads a state that is not finite: a body driven there
+   since the last containment (a restitution above 1, an RK4 stage, a
+   solver pass) is contained first. */
 static void ga2d__eval_field(ga2d_world *w, double t)
 {
     int k;
@@ -4302,7 +4310,7 @@ static void ga2d__eval_field(ga2d_world *w, double t)
         ga2d__body *b = &w->bodies[w->moving[k]];
         b->field_force = ga2d_vec_make(0, 0);
         b->field_torque = 0;
-        if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w) || !ga2d__finite_vec(b->center)) ga2d__contain(w, w->moving[k]);
+        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
     }
     w->lock |= GA2D__LOCK_FIELD;
     w->eval_time = t;
@@ -4468,15 +4476,6 @@ static void ga2d__rk4_velocities(ga2d_world *w, ga2d_real h, double t)
                 b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, c));
                 b->w = s[k].w0 + s[k].kw * c;
                 b->q = s[k].kth * c != 0 ? ga2d__turn(s[k].q0, s[k].kth * c, w->def.rotation_update) : s[k].q0;
-                if (!ga2d__finite_vec(b->center) || !ga2d__finite_vec(b->v) || !ga2d__finite(b->w) ||
-                    !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) {
-                    /* an overflowed stage: the field reads the start state
-                       (the end velocity overflows too, and is contained) */
-                    b->center = s[k].x0;
-                    b->q = s[k].q0;
-                    b->v = s[k].v0;
-                    b->w = s[k].w0;
-                }
             }
             ga2d__eval_field(w, t + (double)c);
         }
@@ -5525,13 +5524,6 @@ static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
             }
         }
     }
-    /* passes of a restitution above 1 multiply a speed: one that overflowed
-       is contained now, before the force field would read it (a second
-       pass ran only if the first collided) */
-    for (k = 0; k < w->moving_count && pass > 1; ++k) {
-        const ga2d__body *b = &w->bodies[w->moving[k]];
-        if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) ga2d__contain(w, w->moving[k]);
-    }
 }
 
 /* ================================================================ sleep */
@@ -5715,9 +5707,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
         ga2d__body *b = &w->bodies[w->moving[k]];
         /* and velocities: a NaN impulse from a contained neighbour's
            contact reaches kinematic bodies too (0 x NaN) */
-        if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s) || !ga2d__finite_vec(b->v) ||
-            !ga2d__finite(b->w))
-            ga2d__contain(w, w->moving[k]);
+        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
         b->force = ga2d_vec_make(0, 0);
         b->torque = 0;
     }

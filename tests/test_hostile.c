@@ -29,6 +29,14 @@ static int verbose(void)
 static ga2d_vec vec(double x, double y) { return ga2d_vec_make((ga2d_real)x, (ga2d_real)y); }
 static int vec_same(ga2d_vec a, ga2d_vec b) { return a.x == b.x && a.y == b.y; }
 
+/* Default world without gravity. */
+static ga2d_world *weightless_world(void)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    wd.gravity = vec(0, 0);
+    return ga2d_world_create(&wd);
+}
+
 static ga2d_body_def box_def(ga2d_body_type type, double x, double y, double hx, double hy)
 {
     ga2d_body_def d = ga2d_default_body_def();
@@ -654,7 +662,6 @@ static void no_tunnelling(void)
    its target; gravity is off, so nothing presses it back in). */
 static void no_sleep_embedded_in_ground(void)
 {
-    ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
     ga2d_body_def ground = box_def(GA2D_BODY_STATIC, 0, -0.5, 5, 0.5);
     ga2d_body_def box = box_def(GA2D_BODY_DYNAMIC, 0, 0.25 - 0.6, 0.25, 0.25);
@@ -662,8 +669,7 @@ static void no_sleep_embedded_in_ground(void)
     const double asleep_bound = 0.25 - GA2D_SPECULATIVE_DISTANCE, end_bound = 0.25 - 2 * GA2D_LINEAR_SLOP;
     double lowest_asleep = 1e30, y = 0;
     int i, first_sleep = -1, bad = 0;
-    wd.gravity = vec(0, 0);
-    w = ga2d_world_create(&wd);
+    w = weightless_world();
     CHECK(w != NULL);
     if (!w) return;
     CHECK(!ga2d_body_id_is_null(ga2d_body_create(w, &ground)));
@@ -694,7 +700,6 @@ static void no_sleep_embedded_in_ground(void)
    they end apart to within 2 slops. */
 static void no_sleep_embedded_pair(void)
 {
-    ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
     ga2d_body_def b1 = box_def(GA2D_BODY_DYNAMIC, 0, 0, 0.25, 0.25);
     ga2d_body_def b2 = box_def(GA2D_BODY_DYNAMIC, 0.01, 0, 0.25, 0.25);
@@ -702,8 +707,7 @@ static void no_sleep_embedded_pair(void)
     const double asleep_bound = 0.5 - GA2D_SPECULATIVE_DISTANCE, end_bound = 0.5 - 2 * GA2D_LINEAR_SLOP;
     double closest_asleep = 1e30, dist = 0;
     int i, first_sleep = -1, bad = 0;
-    wd.gravity = vec(0, 0);
-    w = ga2d_world_create(&wd);
+    w = weightless_world();
     CHECK(w != NULL);
     if (!w) return;
     i1 = ga2d_body_create(w, &b1);
@@ -1020,14 +1024,12 @@ static void step_and_gravity_are_bounded(void)
    0 caps every step (exact). */
 static void speed_caps_counted(void)
 {
-    ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
     ga2d_body_def d = box_def(GA2D_BODY_DYNAMIC, 1, 0, 0.5, 0.5);
     ga2d_body_id id;
     const double k = 1e7;
     int i, first = -1, caps = 0, rest_caps = 0;
-    wd.gravity = vec(0, 0);
-    w = ga2d_world_create(&wd);
+    w = weightless_world();
     CHECK(w != NULL);
     if (!w) return;
     id = ga2d_body_create(w, &d);
