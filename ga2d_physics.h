@@ -5524,6 +5524,12 @@ static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
             }
         }
     }
+    /* passes of a restitution above 1 multiply a speed: one that overflowed
+       is contained at once, before user code (an allocator hook as the
+       solver's groups grow, the force field) could read it; a second pass
+       ran only if the first collided */
+    for (k = 0; k < w->moving_count && pass > 1; ++k)
+        if (!ga2d__state_finite(&w->bodies[w->moving[k]])) ga2d__contain(w, w->moving[k]);
 }
 
 /* ================================================================ sleep */
