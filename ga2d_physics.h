@@ -2324,8 +2324,7 @@ typedef struct ga2d__contact {
 #define GA2D__CONTACT_DISJOINT 1 /* the fat boxes parted: destroy it */
 #define GA2D__CONTACT_BEGAN 2    /* began touching */
 #define GA2D__CONTACT_ENDED 4    /* stopped touching: its last touching manifold kept for the event */
-#define GA2D__CONTACT_CARRIED 8  /* its manifold was carried along (ga2d__reuse_manifold) */
-#define GA2D__CONTACT_WAKES 16   /* touches a sleeping body */
+#define GA2D__CONTACT_WAKES 8    /* touches a sleeping body */
 
 static uint64_t ga2d__pair_key(int a, int b) { return ((uint64_t)(uint32_t)a << 32) | (uint32_t)b; }
 
@@ -2543,7 +2542,8 @@ typedef struct ga2d__body {
     ga2d_filter filter;
     int proxy;                   /* leaf in trees[type != static] */
     int in_move;                 /* queued for pair finding */
-    int refit;                   /* its fat box must move (between two stages of a step) */
+    int refit;                   /* its fat box must move to refit_box (between two stages of a step) */
+    ga2d_aabb refit_box;
     int contact_head;            /* first (oldest) link of its contact list, or -1 */
     int contact_tail;            /* last (newest) link, or -1 */
     ga2d_real extent;            /* farthest vertex from the centre */
@@ -2585,6 +2585,8 @@ typedef struct ga2d__step_context {
     int last_group_capacity;
     ga2d__rk4 *rk4;              /* RK4's scratch, one per moving body's capacity */
     int rk4_capacity;
+    uint64_t *changed;           /* a bit per pool contact the narrowphase flagged */
+    int changed_capacity;        /* in 64-bit words */
     ga2d_real rk4_at, rk4_weight; /* the RK4 stage under way: its time in substeps, its weight */
 } ga2d__step_context;
 
@@ -2968,6 +2970,7 @@ static ga2d_result ga2d__compact(ga2d_world *w)
     w->step.group_count = 0;
     ga2d__release(w, (void **)&w->step.sbodies, &w->step.sbody_capacity, sizeof *w->step.sbodies);
     ga2d__release(w, (void **)&w->step.last_group, &w->step.last_group_capacity, sizeof *w->step.last_group);
+    ga2d__release(w, (void **)&w->step.changed, &w->step.changed_capacity, sizeof *w->step.changed);
     return GA2D_OK;
 }
 
@@ -3124,10 +3127,9 @@ static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     int k;
-    ga2d_aabb fat;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        b->refit = ga2d__needs_refit(w, b, &fat);
+        b->refit = ga2d__needs_refit(w, b, &b->refit_box);
     }
 }
 
@@ -3142,11 +3144,9 @@ static void ga2d__refit_proxies(ga2d__step_context *c)
     for (k = 0; k < w->moving_count; ++k) {
         int slot = w->moving[k];
         ga2d__body *b = &w->bodies[slot];
-        ga2d_aabb fat;
         if (!b->refit) continue;
         b->refit = 0;
-        ga2d__needs_refit(w, b, &fat);
-        ga2d__tree_move(ga2d__tree_of(w, b), b->proxy, fat);
+        ga2d__tree_move(ga2d__tree_of(w, b), b->proxy, b->refit_box);
         ga2d__buffer_move(w, slot);
     }
     if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
@@ -3264,19 +3264,19 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
         ga2d_manifold m;
         int i, j, touching;
         if (ct->next_free != -2) continue;
-        ct->flags = 0;
         a = &w->bodies[ct->a];
         b = &w->bodies[ct->b];
         /* a pair with nothing awake that moves has nothing new to say */
         if (!(a->awake && a->type != GA2D_BODY_STATIC) && !(b->awake && b->type != GA2D_BODY_STATIC)) continue;
         if (!ga2d_aabb_overlaps(ga2d__fat_box(w, a), ga2d__fat_box(w, b))) {
             ct->flags = GA2D__CONTACT_DISJOINT;
+            c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
             continue;
         }
         xa = ga2d__body_xf(a);
         xb = ga2d__body_xf(b);
         if (ga2d__reuse_manifold(w, ct, a, b, xa, xb)) {
-            ct->flags |= GA2D__CONTACT_CARRIED;
+            ++w->counters.manifolds_carried;
         } else {
             /* keep points as far apart as the pair can close in one step:
                speculative points only let bodies approach up to the gap */
@@ -3302,30 +3302,59 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
             ct->touching = touching;
         }
         if (ct->touching && (!a->awake || !b->awake)) ct->flags |= GA2D__CONTACT_WAKES;
+        if (ct->flags) c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
     }
 }
 
-/* Book-keeping, in pool order: touching begins and ends become events, a
-   contact whose boxes parted is destroyed, and a touch wakes a sleeping
-   island once every contact is updated (waking in the stage would let the
-   pool's order decide which contacts of the woken island are updated in
-   this step). */
+/* The next contact from ci on that the narrowphase flagged, or -1. */
+static int ga2d__next_changed(const ga2d__step_context *c, int ci, int used)
+{
+    for (; ci < used; ci = (ci | 63) + 1) {
+        uint64_t bits = c->changed[ci >> 6] >> (ci & 63);
+        if (bits) {
+            while (!(bits & 1)) {
+                bits >>= 1;
+                ++ci;
+            }
+            return ci;
+        }
+    }
+    return -1;
+}
+
+/* Book-keeping before the narrowphase: a clear bit for every pool contact.
+   Out of memory, the step reports it and keeps the last manifolds. */
+static int ga2d__reserve_changes(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int words = (w->contact_used + 63) / 64;
+    if (!ga2d__grow(&w->mem, (void **)&c->changed, &c->changed_capacity, words, sizeof *c->changed)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    if (words > 0) memset(c->changed, 0, (size_t)words * sizeof *c->changed);
+    w->counters.manifolds_carried = 0;
+    return 1;
+}
+
+/* Book-keeping, in pool order, of the contacts the narrowphase flagged:
+   touching begins and ends become events, a contact whose boxes parted is
+   destroyed, and a touch wakes a sleeping island once every contact is
+   updated (waking in the stage would let the pool's order decide which
+   contacts of the woken island are updated in this step). */
 static void ga2d__contact_changes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    int ci, wakes = 0;
-    w->begin_count = w->end_count = 0;
-    w->counters.manifolds_carried = 0;
-    for (ci = 0; ci < w->contact_used; ++ci) {
+    int ci, used = w->contact_used, wakes = 0;
+    for (ci = ga2d__next_changed(c, 0, used); ci >= 0; ci = ga2d__next_changed(c, ci + 1, used)) {
         ga2d__contact *ct = &w->contacts[ci];
         int f = ct->flags;
-        if (ct->next_free != -2 || f == 0) continue;
         if (f & GA2D__CONTACT_DISJOINT) {
+            ct->flags = 0;
             if (ct->touching) ga2d__push_event(w, 1, ct);
             ga2d__destroy_contact(w, ci);
             continue;
         }
-        if (f & GA2D__CONTACT_CARRIED) ++w->counters.manifolds_carried;
         if (f & GA2D__CONTACT_ENDED) {
             ga2d__push_event(w, 1, ct);
             memset(&ct->manifold, 0, sizeof ct->manifold); /* as ga2d__collide left it: no point */
@@ -3336,7 +3365,7 @@ static void ga2d__contact_changes(ga2d__step_context *c)
         ct->flags = f & GA2D__CONTACT_WAKES;
         wakes += ct->flags != 0;
     }
-    for (ci = 0; ci < w->contact_used && wakes > 0; ++ci) {
+    for (ci = ga2d__next_changed(c, 0, used); ci >= 0 && wakes > 0; ci = ga2d__next_changed(c, ci + 1, used)) {
         ga2d__contact *ct = &w->contacts[ci];
         if (ct->next_free != -2 || !ct->flags) continue;
         ct->flags = 0;
@@ -3611,6 +3640,7 @@ static void ga2d__destroy_now(ga2d_world *w)
     ga2d__free(a, w->step.groups, (size_t)w->step.group_capacity * sizeof *w->step.groups);
     ga2d__free(a, w->step.sbodies, (size_t)w->step.sbody_capacity * sizeof *w->step.sbodies);
     ga2d__free(a, w->step.last_group, (size_t)w->step.last_group_capacity * sizeof *w->step.last_group);
+    ga2d__free(a, w->step.changed, (size_t)w->step.changed_capacity * sizeof *w->step.changed);
     ga2d__free(a, w->wake_queue, (size_t)w->wake_capacity * sizeof *w->wake_queue);
     ga2d__free(&user, a->ctx, sizeof *w);
 }
@@ -4565,9 +4595,8 @@ static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
 
 /* A dynamic body's velocities capped, or the body contained when they are
    not finite. */
-static void ga2d__cap_body(ga2d__step_context *c, int slot)
+static void ga2d__cap_body(ga2d__step_context *c, ga2d__body *b, int slot)
 {
-    ga2d__body *b = &c->world->bodies[slot];
     if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(c->world, b, c->h)) ga2d__contain(c->world, slot);
 }
 
@@ -4672,7 +4701,7 @@ static void ga2d__rk4_end(ga2d__step_context *c, int begin, int end)
         b->w = s[k].w0 + s[k].sw * (h / 6);
         s[k].kv = b->v; /* the free end velocities, for the position phase */
         s[k].kw = b->w;
-        ga2d__cap_body(c, w->moving[k]);
+        ga2d__cap_body(c, b, w->moving[k]);
     }
 }
 
@@ -4692,7 +4721,7 @@ static void ga2d__kick(ga2d__step_context *c, int begin, int end)
         b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, h));
         b->w += alpha * h;
         ga2d__damp(b, h);
-        ga2d__cap_body(c, w->moving[k]);
+        ga2d__cap_body(c, b, w->moving[k]);
     }
 }
 
@@ -4705,7 +4734,7 @@ static void ga2d__open_kick(ga2d__step_context *c, int begin, int end)
         ga2d__body *b = &w->bodies[w->moving[k]];
         if (b->type != GA2D_BODY_DYNAMIC) continue;
         ga2d__verlet_kick(w, b, c->h / 2);
-        ga2d__cap_body(c, w->moving[k]);
+        ga2d__cap_body(c, b, w->moving[k]);
     }
 }
 
@@ -4801,7 +4830,7 @@ static void ga2d__close_kick(ga2d__step_context *c, int begin, int end)
         if (b->type != GA2D_BODY_DYNAMIC) continue;
         ga2d__verlet_kick(w, b, c->h / 2);
         ga2d__damp(b, c->h);
-        ga2d__cap_body(c, w->moving[k]);
+        ga2d__cap_body(c, b, w->moving[k]);
     }
 }
 
@@ -6020,8 +6049,11 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__refit_proxies(c);
     ga2d__run(c, ga2d__find_pairs, w->move_count);
     ga2d__create_pairs(c);
-    ga2d__run(c, ga2d__collide_contacts, w->contact_used);
-    ga2d__contact_changes(c);
+    w->begin_count = w->end_count = 0;
+    if (ga2d__reserve_changes(c)) {
+        ga2d__run(c, ga2d__collide_contacts, w->contact_used);
+        ga2d__contact_changes(c);
+    }
     /* constraints, the collision phase, the lanes */
     ga2d__order_constraints(c);
     ga2d__run(c, ga2d__prepare_constraints, c->constraint_count);
