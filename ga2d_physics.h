@@ -1,11 +1,11 @@
-/* ga2d_physics.h - v0.8.1 - 2D rigid-body physics of convex polygons,
+/* ga2d_physics.h - v0.8.2 - 2D rigid-body physics of convex polygons,
    written in the geometric algebra of the plane.   MIT / public domain.
 
    ==========================================================================
    WHAT IT IS
    ==========================================================================
    One header, C99 (compiles unchanged as C++11), libc and libm only.
-   This first slice holds the foundation everything else stands on:
+   What it holds:
 
      - the geometric algebra G(2,0) of the plane: vectors, bivectors, full
        multivectors with geometric / outer / inner products, and rotors;
@@ -221,7 +221,7 @@
 
    Knobs: substeps; solver kind; contact_hertz; the switches for warm
    starting, friction, restitution and sleep; ga2d_accurate_world_def()
-   (8 substeps, 90 Hz) for tighter stacks at about 1.8x the cost.
+   (8 substeps, 90 Hz) for tighter stacks at about 1.7x the cost.
 
    Sleep: islands of touching dynamic bodies whose points all move under
    5 cm/s for 0.5 s sleep together: they leave the step (no integration, no
@@ -239,7 +239,7 @@
    Bounds: coordinates within GA2D_MAX_COORDINATE; a step of at most
    GA2D_MAX_TIME_STEP whose substep h keeps |g| h^2 within a linear slop;
    |g| within GA2D_MAX_GRAVITY.  Beyond them: GA2D_ERR_TOO_LARGE.  A body
-   driven past 400 m/s (or a quarter turn per substep) is capped, and
+   driven past 400 m/s (or an eighth of a turn per substep) is capped, and
    counters.speed_caps counts it: a program that sees it nonzero after a
    step knows something in the scene is blowing up.
 
@@ -267,55 +267,7 @@
    Other worlds are unaffected: creating or stepping a second world from a
    callback is fine.
 
-   ==========================================================================
-   VERSION HISTORY
-   ==========================================================================
-   0.8.1  hostile input: user code run from the force callback, the debug
-          draw or the allocator hooks finds the world locked, and a world
-          destroyed from it goes when the library call returns; fat boxes
-          hold all a body can reach in the step (fast bodies passed thin
-          walls every other step); a contact deeper than the speculative
-          distance keeps its island awake; the incident edge is chosen to
-          full precision (a thin arc rocked and sank in float); ids carry
-          their world's tag; bounds on coordinates, the step and gravity
-          (TOO_LARGE); counters.speed_caps; ga2d_world_compact; the margin
-          of a small body's fat box scales with it; snapshot version 4;
-          the re-entry fuzz harness's findings: restitution writes no
-          static body (a blown-up body made the ground NaN), the force
-          field never reads a non-finite state, RK4's displacement keeps
-          the speed caps, the error body is the lowest slot contained.
-   0.8.2  a def zero-initialised by hand is the defaults, switches
-          included (its enable_* fields read 0 as off, and friction, sleep,
-          warm starting and restitution vanished); the default functions
-          stamp internal_cookie, so their defs keep every zero as set;
-          the defaults are named constants (GA2D_DEFAULT_*) resolved in
-          one function per def; snapshot version 5.
-   0.8.0  a touching pair that moved by under half a slop keeps its
-          manifold, carried along with the bodies (no separating-axis
-          search); solver bodies load into the lanes as whole rows; the
-          hull is wrapped as monotone chains (a cloud whose features were
-          near the tolerance could leave a point outside); snapshot
-          version 3; counters.manifolds_carried.
-   0.7.0  a manifold's two normal points are solved together (a 2x2
-          complementarity block) instead of one after the other: stacks
-          no longer lean the way the points are ordered.
-   0.6.0  the velocity passes run on groups of constraints with no moved
-          body in common, a SIMD lane each (4 floats or 2 doubles; 8 or 4
-          under AVX), in the same Gauss-Seidel order and with the same bits
-          as one constraint at a time; snapshot version 2.
-   0.5.0  determinism (canonical solver order, same bits across compilers,
-          -O levels and C/C++), world snapshots for rollback, containment
-          of bodies driven non-finite (ga2d_world_error_body); bounces at
-          the defaults reach e^(2n) h0.
-   0.4.0  contact solver: soft step, PGS + Baumgarte, PGS + NGS; friction;
-          restitution as a collision phase; warm starting; sleep.
-   0.3.0  SAT narrowphase, dynamic AABB tree broadphase, contacts, events,
-          filtering.
-   0.2.0  world and bodies; symplectic Euler, Verlet and RK4 integrators;
-          exact and first-order rotor updates; force callback; counters.
-   0.1.0  algebra, polygons, hull, exact mass properties.
-
-   The license is at the end of this file.
+   The version history and the license are at the end of this file.
 */
 #ifndef GA2D_PHYSICS_H
 #define GA2D_PHYSICS_H
@@ -376,7 +328,7 @@ typedef enum ga2d_result {
     GA2D_ERR_NOT_INVERTIBLE,    /* a multivector with no inverse            */
     GA2D_ERR_OUT_OF_MEMORY,
     GA2D_ERR_STALE_ID,          /* a destroyed, reused or forged body id  */
-    GA2D_ERR_LOCKED,            /* the world is stepping (force callback) */
+    GA2D_ERR_LOCKED,            /* called from a callback of this world's (force, draw, allocator) */
     GA2D_ERR_BAD_SNAPSHOT,      /* truncated, corrupted, another version or
                                    another build's snapshot                 */
     GA2D_ERR_BUFFER_TOO_SMALL,  /* the snapshot does not fit the buffer     */
@@ -581,7 +533,7 @@ typedef enum ga2d_rotation_update {
     GA2D_ROTATION_COUNT
 } ga2d_rotation_update;
 
-/* How contacts are solved (DESIGN 6).  Each substep integrates velocities,
+/* How contacts are solved.  Each substep integrates velocities,
    solves the contacts, integrates positions; the kinds differ in how they
    remove overlap:
      SOFT_STEP      soft contacts (a spring-damper of contact_hertz and
@@ -805,7 +757,7 @@ GA2D_API ga2d_result ga2d_world_enable_friction(ga2d_world *w, int on);
 GA2D_API ga2d_result ga2d_world_enable_restitution(ga2d_world *w, int on);
 /* The documented accurate setting: 8 substeps and 90 Hz contacts (twice
    the substeps, and contacts twice as stiff, which a doubled substep rate
-   allows).  A 10-box stack sinks 4 mm instead of 15, at about 1.8 times
+   allows).  A 10-box stack sinks 4 mm instead of 15, at about 1.7 times
    the cost per step. */
 GA2D_API ga2d_world_def ga2d_accurate_world_def(void);
 
@@ -854,7 +806,11 @@ GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id);
 GA2D_API int ga2d_body_is_awake(const ga2d_world *w, ga2d_body_id id);
 GA2D_API ga2d_result ga2d_body_set_awake(ga2d_world *w, ga2d_body_id id, int awake);
 
-/* Getters: for an invalid id they return zero (identity for rotors). */
+/* Getters: for an invalid id they return zero (identity for rotors).
+   Names: a property reads as its noun (ga2d_body_position,
+   ga2d_world_gravity); get_ marks a call that fills the caller's array
+   (ga2d_world_get_contacts) or whose noun is a type's name already
+   (ga2d_body_get_type, ga2d_world_get_counters). */
 GA2D_API ga2d_body_type ga2d_body_get_type(const ga2d_world *w, ga2d_body_id id);
 GA2D_API ga2d_vec ga2d_body_position(const ga2d_world *w, ga2d_body_id id); /* origin */
 GA2D_API ga2d_rotor ga2d_body_rotor(const ga2d_world *w, ga2d_body_id id);
@@ -1084,6 +1040,7 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
 extern "C" {
 #endif
 
+/* ================================================================ algebra */
 /* ---------------------------------------------------------------- results */
 GA2D_API const char *ga2d_result_string(ga2d_result r)
 {
@@ -1338,6 +1295,68 @@ GA2D_API ga2d_transform ga2d_transform_inv_mul(ga2d_transform a, ga2d_transform 
     return ga2d_transform_make(ga2d_transform_apply_inv(a, b.p), ga2d_rotor_mul(ga2d_rotor_inverse(a.q), b.q));
 }
 
+/* ------------------------------------------------------------------ turns */
+/* exp(a e12) = cos a + sin a e12, without libm so that a step gives the
+   same bits on every platform.  |a| <= pi/4 (the usual turn per substep)
+   goes straight to the series; larger a is first reduced by k quarter
+   turns (Cody-Waite: pi/2 in two parts), and e12^k is exact:
+   (c, s) -> (-s, c).  The series (Horner, reciprocal factorials) stop where
+   the next term at pi/4 is below half an ulp: r^9 / r^10 in float,
+   r^17 / r^18 in double. */
+static ga2d_rotor ga2d__exp_e12(ga2d_real a)
+{
+#ifdef GA2D_DOUBLE
+    const ga2d_real pio2_hi = 1.5707963267341256, pio2_lo = 6.077100506506192e-11; /* hi: 33 bits */
+#else
+    const ga2d_real pio2_hi = 1.5707963705062866f, pio2_lo = -4.371139000186243e-08f; /* float pi/2 and the rest */
+#endif
+    ga2d_real r = a, r2, c, s, t;
+    long quarter = 0;
+    if (!(GA2D__FABS(a) <= GA2D__R(0.78539816339744831))) {
+        ga2d_real k;
+        if (!ga2d__finite(a)) return ga2d__rotor(a - a, a - a); /* NaN: the step reports it */
+        if (GA2D__FABS(a) > GA2D__R(1e6)) a = (ga2d_real)fmod((double)a, 6.283185307179586); /* exact */
+        k = (ga2d_real)floor((double)(a * GA2D__R(0.63661977236758134) + GA2D__R(0.5)));
+        r = (a - k * pio2_hi) - k * pio2_lo;
+        quarter = (long)k & 3;
+    }
+    r2 = r * r;
+#ifdef GA2D_DOUBLE
+    c = 1 + r2 * (-1.0 / 2 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800 +
+        r2 * (1.0 / 479001600 + r2 * (-1.0 / 87178291200.0 + r2 * (1.0 / 20922789888000.0))))))));
+    s = r * (1 + r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880 + r2 * (-1.0 / 39916800 +
+        r2 * (1.0 / 6227020800.0 + r2 * (-1.0 / 1307674368000.0 + r2 * (1.0 / 355687428096000.0)))))))));
+#else
+    c = 1 + r2 * (-1.0f / 2 + r2 * (1.0f / 24 + r2 * (-1.0f / 720 + r2 * (1.0f / 40320))));
+    s = r * (1 + r2 * (-1.0f / 6 + r2 * (1.0f / 120 + r2 * (-1.0f / 5040 + r2 * (1.0f / 362880)))));
+#endif
+    for (; quarter > 0; --quarter) { t = c; c = -s; s = t; }
+    return ga2d__rotor(c, s);
+}
+
+/* q turned by `angle`: exactly, q exp(angle e12) followed by one Newton
+   step toward |q| = 1 (r (3 - |r|^2)/2 takes a norm of 1 + d to 1 + O(d^2),
+   so rounding never accumulates); or to first order, q (1 + angle e12)
+   renormalized, which turns by atan(angle) instead of angle. */
+static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update mode)
+{
+    ga2d_rotor r;
+    ga2d_real k;
+    if (mode == GA2D_ROTATION_LINEAR) {
+        r = ga2d__rotor(q.c - angle * q.s, q.s + angle * q.c);
+        k = 1 / GA2D__SQRT(r.c * r.c + r.s * r.s);
+        /* a turn so large that |r|^2 overflows (an NGS fix or RK4 stage on
+           a body of tiny inertia) gave k = 0, the zero rotor: measure it
+           scaled instead (NaN still passes through, for the step to see) */
+        if (k == 0 && ga2d__finite(r.c) && ga2d__finite(r.s)) return ga2d_rotor_normalize(r);
+    } else {
+        r = ga2d_rotor_mul(q, ga2d__exp_e12(angle));
+        k = (3 - (r.c * r.c + r.s * r.s)) / 2;
+    }
+    return ga2d__rotor(r.c * k, r.s * k);
+}
+
+/* =============================================================== geometry */
 /* --------------------------------------------------------------- polygons */
 /* Relative tolerances of polygon validation.  Rounding in a wedge of two
    edges of length <= L is a few eps L^2, so 64 eps L is the smallest gap
@@ -2292,7 +2311,7 @@ GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, con
     return ga2d_collide_polygons_scaled(a, xa, b, xb, 1, out);
 }
 
-/* ============================================================== contacts */
+/* ======================================================== world and bodies */
 /* A touching manifold as ga2d__collide last made it, in A's frame, for
    ga2d__reuse_manifold: B's placement in that frame then (xa^-1 xb), the
    normal, each point (midway between the surfaces) and its separation.
@@ -2338,178 +2357,6 @@ static uint32_t ga2d__hash(uint64_t k)
     return (uint32_t)k;
 }
 
-/* A soft constraint: a spring of `hertz` and damping ratio `zeta` seen by
-   an implicit step of h, as a bias rate and the scales of mass and of the
-   accumulated impulse (Catto's soft step). */
-typedef struct ga2d__soft { ga2d_real bias_rate, mass_scale, impulse_scale; } ga2d__soft;
-
-/* A contact point as the solver sees it: anchors from each body's centre
-   of mass (world orientation, fixed for the step), the effective masses,
-   and the accumulated impulses. */
-typedef struct ga2d__cpoint {
-    ga2d_vec ra, rb;
-    ga2d_real separation;        /* at the step's start */
-    ga2d_real normal_mass, tangent_mass;
-    ga2d_real normal_impulse, tangent_impulse;
-} ga2d__cpoint;
-
-typedef struct ga2d__constraint {
-    int contact, a, b;           /* pool index, body slots */
-    ga2d_vec normal;
-    ga2d_real friction, restitution;
-    ga2d_real inv_ma, inv_ia, inv_mb, inv_ib;
-    int to_static;               /* the other body cannot move: stiffer */
-    int count;
-    int lane;                    /* group * GA2D__LANES + lane in the lane solver */
-    ga2d__cpoint p[2];
-} ga2d__constraint;
-
-/* The solver's innermost helpers run hundreds of thousands of times a
-   step; inlined into its passes they cost 10 % less (large_pyramid). */
-#if defined(__GNUC__) || defined(__clang__)
-#define GA2D__HOT inline __attribute__((always_inline))
-#elif defined(_MSC_VER)
-#define GA2D__HOT __forceinline
-#else
-#define GA2D__HOT inline
-#endif
-
-/* ------------------------------------------------------ the lane solver */
-/* The velocity passes (warm start, solve, relax) run on groups of
-   constraints that share no body they move, one constraint per lane, so
-   each pass is GA2D__LANES independent sequential-impulse updates at once.  A
-   group is solved as a whole and the groups one after the other: still
-   Gauss-Seidel, in an order close to the canonical one.  Under gcc and
-   clang a lane set is a vector of the compiler's (SSE2 on x86-64, NEON on
-   arm64); elsewhere, or with GA2D_NO_SIMD, a struct of lanes.  Each lane
-   computes exactly what the scalar code would, operation for operation, so
-   both give the same bits (the determinism check builds both). */
-/* 16 bytes, the width every 64-bit target has; 32 where the compiler is
-   told of AVX (-mavx2, -march=native).  The width changes no bit of the
-   results: constraints that share no moved body commute exactly, and the
-   groups keep every body's own constraints in order. */
-#if defined(__AVX__) && !defined(GA2D_NO_SIMD)
-#define GA2D__BYTES 32
-#else
-#define GA2D__BYTES 16
-#endif
-#ifdef GA2D_DOUBLE
-#define GA2D__LANES (GA2D__BYTES / 8)
-#else
-#define GA2D__LANES (GA2D__BYTES / 4)
-#endif
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(GA2D_NO_SIMD)
-/* aligned to one element, as a user's allocator owes no more */
-#ifdef GA2D_DOUBLE
-typedef double ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(8)));
-typedef int64_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(8)));
-#else
-typedef float ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(4)));
-typedef int32_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(4)));
-#endif
-#define GA2D__LANE(x, i) (x)[i]
-#define GA2D__WINIT(...) {__VA_ARGS__}
-static GA2D__HOT ga2d__w ga2d__wadd(ga2d__w a, ga2d__w b) { return a + b; }
-static GA2D__HOT ga2d__w ga2d__wsub(ga2d__w a, ga2d__w b) { return a - b; }
-static GA2D__HOT ga2d__w ga2d__wmul(ga2d__w a, ga2d__w b) { return a * b; }
-static GA2D__HOT ga2d__w ga2d__wdiv(ga2d__w a, ga2d__w b) { return a / b; }
-static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a > b); }
-static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a >= b); }
-static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b) { return a & b; }
-/* m ? a : b, lane by lane (m all ones or all zeros) */
-static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
-{
-    return (ga2d__w)((m & (ga2d__wmask)a) | (~m & (ga2d__wmask)b));
-}
-#else
-typedef struct ga2d__w { ga2d_real lane[GA2D__LANES]; } ga2d__w;
-typedef struct ga2d__wmask { int lane[GA2D__LANES]; } ga2d__wmask;
-#define GA2D__LANE(x, i) (x).lane[i]
-#define GA2D__WINIT(...) {{__VA_ARGS__}}
-#define GA2D__WOP(name, op)                                                                                            \
-    static GA2D__HOT ga2d__w name(ga2d__w a, ga2d__w b)                                                               \
-    {                                                                                                                  \
-        int i;                                                                                                         \
-        for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] op b.lane[i];                                                   \
-        return a;                                                                                                      \
-    }
-GA2D__WOP(ga2d__wadd, +)
-GA2D__WOP(ga2d__wsub, -)
-GA2D__WOP(ga2d__wmul, *)
-GA2D__WOP(ga2d__wdiv, /)
-#undef GA2D__WOP
-static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b)
-{
-    ga2d__wmask m;
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] > b.lane[i];
-    return m;
-}
-static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b)
-{
-    ga2d__wmask m;
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] >= b.lane[i];
-    return m;
-}
-static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b)
-{
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] && b.lane[i];
-    return a;
-}
-static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
-{
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = m.lane[i] ? a.lane[i] : b.lane[i];
-    return a;
-}
-#endif
-
-static GA2D__HOT ga2d__w ga2d__wsplat(ga2d_real x)
-{
-    ga2d__w r;
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) GA2D__LANE(r, i) = x;
-    return r;
-}
-
-/* a x + b y: the dot product of the lanes' vectors (a, b) and (x, y) */
-static GA2D__HOT ga2d__w ga2d__wdot(ga2d__w a, ga2d__w b, ga2d__w x, ga2d__w y)
-{
-    return ga2d__wadd(ga2d__wmul(a, x), ga2d__wmul(b, y));
-}
-
-/* A body as the passes see it: velocity, spin, and its motion since the
-   step began (displacement dp, turn dq = q q0~).  Bodies that do not move
-   keep v, w and a zero motion; one slot past the last body is a dummy for
-   empty lanes.  Eight reals, so that the lanes' bodies load as whole rows
-   and are transposed in registers (ga2d__wload). */
-typedef struct ga2d__sbody {
-    ga2d_real vx, vy, w, pad, dpx, dpy, dqc, dqs;
-} ga2d__sbody;
-
-/* GA2D__LANES constraints, lane by lane: the bodies (the dummy slot in an empty
-   lane), which of them the lane moves, its constraint's index, and the
-   constraint's data.  A one-point contact's second point and an empty lane
-   have zero masses, so their impulses stay zero. */
-typedef struct ga2d__group {
-    int a[GA2D__LANES], b[GA2D__LANES];
-    int con[GA2D__LANES];       /* the lane's constraint, -1 in an empty lane */
-    ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
-    int count;              /* lanes in use */
-    int skip;               /* when full: a later group to look at first */
-    ga2d__w nx, ny, friction, ima, iia, imb, iib;
-    ga2d__w dx, dy;         /* centre B - centre A when the step began */
-    ga2d__w soft_rate, soft_mass, soft_impulse;
-    ga2d__w rax[2], ray[2], rbx[2], rby[2];
-    ga2d__w adjust[2];      /* start separation - (d0 + rB - rA).n */
-    ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
-    ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
-    ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
-} ga2d__group;
-
-/* ======================================================== world and bodies */
 /* A body slot.  State is kept at the centre of mass (position `center`,
    orientation `q`, velocity `v`, angular velocity `w` of Omega = w e12);
    the origin that users see is center - local_center q. */
@@ -2555,13 +2402,17 @@ typedef struct ga2d__body {
     void *user_data;
 } ga2d__body;
 
-/* RK4's per-body scratch for one substep: the start state, the derivative
-   of the last stage and the weighted sum of the stages. */
-typedef struct ga2d__rk4 {
-    ga2d_vec x0, v0, kx, kv, sx, sv;
-    ga2d_rotor q0;
-    ga2d_real w0, kth, kw, sth, sw;
-} ga2d__rk4;
+/* The solver's types, defined with the solver; the step context holds
+   them by pointer. */
+typedef struct ga2d__constraint ga2d__constraint;
+typedef struct ga2d__group ga2d__group;
+typedef struct ga2d__sbody ga2d__sbody;
+typedef struct ga2d__rk4 ga2d__rk4;
+
+/* A soft constraint: a spring of `hertz` and damping ratio `zeta` seen by
+   an implicit step of h, as a bias rate and the scales of mass and of the
+   accumulated impulse (Catto's soft step). */
+typedef struct ga2d__soft { ga2d_real bias_rate, mass_scale, impulse_scale; } ga2d__soft;
 
 /* What a step computes and throws away, apart from the world's lasting
    state: the step's times, the contact softness, what it will report, and
@@ -2715,6 +2566,13 @@ static ga2d__body *ga2d__lookup(const ga2d_world *w, ga2d_body_id id)
     return b;
 }
 
+/* Position, rotor and velocities all finite. */
+static int ga2d__state_finite(const ga2d__body *b)
+{
+    return ga2d__finite_vec(b->center) && ga2d__finite(b->q.c) && ga2d__finite(b->q.s) && ga2d__finite_vec(b->v) &&
+           ga2d__finite(b->w);
+}
+
 /* Refuses a change while the world is stepping. */
 static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__body **out)
 {
@@ -2727,6 +2585,11 @@ static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__bo
 static void ga2d__wake(ga2d_world *w, int slot);
 static void ga2d__put_to_sleep(ga2d_world *w, int slot);
 static void ga2d__lane_clear(ga2d__step_context *c, int lane);
+static void ga2d__contain(ga2d_world *w, int slot);
+static int ga2d__reserve_rk4(ga2d_world *w, int n);
+static void ga2d__step_release(ga2d_world *w);
+static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c);
+static void ga2d__update_sleep(ga2d__step_context *c);
 
 /* ------------------------------------------------------------- pair set */
 /* Which body pairs have a contact: open addressing, linear probing, kept
@@ -2964,13 +2827,7 @@ static ga2d_result ga2d__compact(ga2d_world *w)
 {
     if (!ga2d__contacts_compact(w)) return GA2D_ERR_OUT_OF_MEMORY;
     ga2d__release(w, (void **)&w->new_pairs, &w->new_pair_capacity, sizeof *w->new_pairs);
-    ga2d__release(w, (void **)&w->step.constraints, &w->step.constraint_capacity, sizeof *w->step.constraints);
-    w->step.constraint_count = 0;
-    ga2d__release(w, (void **)&w->step.groups, &w->step.group_capacity, sizeof *w->step.groups);
-    w->step.group_count = 0;
-    ga2d__release(w, (void **)&w->step.sbodies, &w->step.sbody_capacity, sizeof *w->step.sbodies);
-    ga2d__release(w, (void **)&w->step.last_group, &w->step.last_group_capacity, sizeof *w->step.last_group);
-    ga2d__release(w, (void **)&w->step.changed, &w->step.changed_capacity, sizeof *w->step.changed);
+    ga2d__step_release(w);
     return GA2D_OK;
 }
 
@@ -3121,81 +2978,6 @@ static int ga2d__cmp_u64(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
-/* Stage, over the moving bodies: marks each whose fat box no longer holds
-   what it can reach in this step. */
-static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        b->refit = ga2d__needs_refit(w, b, &b->refit_box);
-    }
-}
-
-/* Book-keeping: the marked bodies' boxes move in the tree, in the moving
-   list's order (the tree's shape depends on it), and the bodies queue
-   for pair finding; then the queue is sorted, without destroyed bodies
-   and repeats (a slot destroyed and reused). */
-static void ga2d__refit_proxies(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int k, n;
-    for (k = 0; k < w->moving_count; ++k) {
-        int slot = w->moving[k];
-        ga2d__body *b = &w->bodies[slot];
-        if (!b->refit) continue;
-        b->refit = 0;
-        ga2d__tree_move(ga2d__tree_of(w, b), b->proxy, b->refit_box);
-        ga2d__buffer_move(w, slot);
-    }
-    if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
-    for (k = 0, n = 0; k < w->move_count; ++k) {
-        int slot = w->move_buf[k];
-        if (w->bodies[slot].type >= 0 && w->bodies[slot].in_move && (n == 0 || w->move_buf[n - 1] != slot))
-            w->move_buf[n++] = slot;
-    }
-    w->move_count = n;
-    w->new_pair_count = 0;
-}
-
-/* Stage, over the queued bodies: each queued body (moved out of its box,
-   created, teleported, refiltered) is queried against the moving tree
-   (and, if it moves, the static tree); the pairs it finds are listed. */
-static void ga2d__find_pairs(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int k;
-    for (k = begin; k < end; ++k) {
-        int slot = w->move_buf[k];
-        ga2d__pair_query q;
-        ga2d_aabb box = ga2d__fat_box(w, &w->bodies[slot]);
-        q.w = w;
-        q.self = slot;
-        ga2d__tree_query(&w->trees[1], box, ga2d__pair_found, &q);
-        if (w->bodies[slot].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
-    }
-}
-
-/* Book-keeping: the new pairs' contacts are created in key order, so the
-   result is a function of the world's state alone, and the queue empties. */
-static void ga2d__create_pairs(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int k, n;
-    if (w->new_pair_count > 1) qsort(w->new_pairs, (size_t)w->new_pair_count, sizeof *w->new_pairs, ga2d__cmp_u64);
-    for (k = 0, n = w->new_pair_count; k < n; ++k) {
-        uint64_t key = w->new_pairs[k];
-        if (k > 0 && w->new_pairs[k - 1] == key) continue;
-        if (!ga2d__create_contact(w, (int)(key >> 32), (int)(uint32_t)key)) c->error = GA2D_ERR_OUT_OF_MEMORY;
-    }
-    /* out of memory: some pairs were not made, so every queued body stays
-       queued and is searched again next step (pairs already made are kept) */
-    if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
-    for (k = 0; k < w->move_count; ++k) w->bodies[w->move_buf[k]].in_move = 0;
-    w->move_count = 0;
-}
-
 /* A touching pair that has hardly moved since its manifold was made gets
    that manifold again, carried along: each point's B side moves with B
    (t: B's motion in A's frame since then), its separation grows by that
@@ -3208,7 +2990,7 @@ static void ga2d__create_pairs(ga2d__step_context *c)
    speculative margin (4 slop), so it cannot have come into touch, and a
    point clipped at a face's end is off by at most that half slop along
    the face.  A resting pile then skips the separating-axis search for
-   nearly every pair (large_pyramid: 98 % of updates).  Returns 0 when the
+   nearly every pair.  Returns 0 when the
    pair moved too far and must be collided anew. */
 static int ga2d__reuse_manifold(const ga2d_world *w, ga2d__contact *c, const ga2d__body *a, const ga2d__body *b,
                                 ga2d_transform xa, ga2d_transform xb)
@@ -3245,133 +3027,6 @@ static void ga2d__hold_manifold(ga2d__held *hd, ga2d_transform xa, ga2d_transfor
     for (k = 0; k < m->count; ++k) {
         hd->point[k] = ga2d_rotate_inv(xa.q, m->points[k].anchor_a);
         hd->separation[k] = m->points[k].separation;
-    }
-}
-
-/* Stage, over the contact pool: each contact whose fat boxes still
-   overlap gets a new manifold (or its last one carried along,
-   ga2d__reuse_manifold), whose points take over the impulses of the old
-   points with the same id (warm starting).  What changes in the world
-   (events, destruction, waking) is left to ga2d__contact_changes. */
-static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int ci;
-    for (ci = begin; ci < end; ++ci) {
-        ga2d__contact *ct = &w->contacts[ci];
-        const ga2d__body *a, *b;
-        ga2d_transform xa, xb;
-        ga2d_manifold m;
-        int i, j, touching;
-        if (ct->next_free != -2) continue;
-        a = &w->bodies[ct->a];
-        b = &w->bodies[ct->b];
-        /* a pair with nothing awake that moves has nothing new to say */
-        if (!(a->awake && a->type != GA2D_BODY_STATIC) && !(b->awake && b->type != GA2D_BODY_STATIC)) continue;
-        if (!ga2d_aabb_overlaps(ga2d__fat_box(w, a), ga2d__fat_box(w, b))) {
-            ct->flags = GA2D__CONTACT_DISJOINT;
-            c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
-            continue;
-        }
-        xa = ga2d__body_xf(a);
-        xb = ga2d__body_xf(b);
-        if (ga2d__reuse_manifold(w, ct, a, b, xa, xb)) {
-            ++w->counters.manifolds_carried;
-        } else {
-            /* keep points as far apart as the pair can close in one step:
-               speculative points only let bodies approach up to the gap */
-            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->v, a->v)) + GA2D__FABS(a->w) * a->extent +
-                              GA2D__FABS(b->w) * b->extent;
-            ga2d__collide(&a->polygon, xa, &b->polygon, xb, w->slop, w->speculative + reach * c->dt, &m);
-            ga2d__hold_manifold(&ct->held, xa, xb, &m);
-            for (i = 0; i < m.count; ++i)
-                for (j = 0; j < ct->manifold.count; ++j)
-                    if (ct->manifold.points[j].id == m.points[i].id) {
-                        m.points[i].normal_impulse = ct->manifold.points[j].normal_impulse;
-                        m.points[i].tangent_impulse = ct->manifold.points[j].tangent_impulse;
-                        m.points[i].persisted = 1;
-                    }
-            touching = m.count > 0;
-            if (!touching && ct->touching) { /* the end is reported with the last touching manifold */
-                ct->flags |= GA2D__CONTACT_ENDED;
-                ct->end_normal = m.normal;
-            } else {
-                ct->manifold = m;
-            }
-            if (touching && !ct->touching) ct->flags |= GA2D__CONTACT_BEGAN;
-            ct->touching = touching;
-        }
-        if (ct->touching && (!a->awake || !b->awake)) ct->flags |= GA2D__CONTACT_WAKES;
-        if (ct->flags) c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
-    }
-}
-
-/* The next contact from ci on that the narrowphase flagged, or -1. */
-static int ga2d__next_changed(const ga2d__step_context *c, int ci, int used)
-{
-    for (; ci < used; ci = (ci | 63) + 1) {
-        uint64_t bits = c->changed[ci >> 6] >> (ci & 63);
-        if (bits) {
-            while (!(bits & 1)) {
-                bits >>= 1;
-                ++ci;
-            }
-            return ci;
-        }
-    }
-    return -1;
-}
-
-/* Book-keeping before the narrowphase: a clear bit for every pool contact.
-   Out of memory, the step reports it and keeps the last manifolds. */
-static int ga2d__reserve_changes(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int words = (w->contact_used + 63) / 64;
-    if (!ga2d__grow(&w->mem, (void **)&c->changed, &c->changed_capacity, words, sizeof *c->changed)) {
-        c->error = GA2D_ERR_OUT_OF_MEMORY;
-        return 0;
-    }
-    if (words > 0) memset(c->changed, 0, (size_t)words * sizeof *c->changed);
-    w->counters.manifolds_carried = 0;
-    return 1;
-}
-
-/* Book-keeping, in pool order, of the contacts the narrowphase flagged:
-   touching begins and ends become events, a contact whose boxes parted is
-   destroyed, and a touch wakes a sleeping island once every contact is
-   updated (waking in the stage would let the pool's order decide which
-   contacts of the woken island are updated in this step). */
-static void ga2d__contact_changes(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int ci, used = w->contact_used, wakes = 0;
-    for (ci = ga2d__next_changed(c, 0, used); ci >= 0; ci = ga2d__next_changed(c, ci + 1, used)) {
-        ga2d__contact *ct = &w->contacts[ci];
-        int f = ct->flags;
-        if (f & GA2D__CONTACT_DISJOINT) {
-            ct->flags = 0;
-            if (ct->touching) ga2d__push_event(w, 1, ct);
-            ga2d__destroy_contact(w, ci);
-            continue;
-        }
-        if (f & GA2D__CONTACT_ENDED) {
-            ga2d__push_event(w, 1, ct);
-            memset(&ct->manifold, 0, sizeof ct->manifold); /* as ga2d__collide left it: no point */
-            ct->manifold.normal = ct->end_normal;
-            ct->end_normal = ga2d_vec_make(0, 0);
-        }
-        if (f & GA2D__CONTACT_BEGAN) ga2d__push_event(w, 0, ct);
-        ct->flags = f & GA2D__CONTACT_WAKES;
-        wakes += ct->flags != 0;
-    }
-    for (ci = ga2d__next_changed(c, 0, used); ci >= 0 && wakes > 0; ci = ga2d__next_changed(c, ci + 1, used)) {
-        ga2d__contact *ct = &w->contacts[ci];
-        if (ct->next_free != -2 || !ct->flags) continue;
-        ct->flags = 0;
-        --wakes;
-        ga2d__wake(w, ct->a);
-        ga2d__wake(w, ct->b);
     }
 }
 
@@ -3626,7 +3281,6 @@ static void ga2d__destroy_now(ga2d_world *w)
     w = &dead;
     ga2d__free(a, w->bodies, (size_t)w->body_capacity * sizeof *w->bodies);
     ga2d__free(a, w->moving, (size_t)w->moving_capacity * sizeof *w->moving);
-    ga2d__free(a, w->step.rk4, (size_t)w->step.rk4_capacity * sizeof *w->step.rk4);
     ga2d__tree_release(a, &w->trees[0]);
     ga2d__tree_release(a, &w->trees[1]);
     ga2d__free(a, w->move_buf, (size_t)w->move_capacity * sizeof *w->move_buf);
@@ -3636,11 +3290,7 @@ static void ga2d__destroy_now(ga2d_world *w)
     ga2d__free(a, w->pair_vals, (size_t)w->pair_capacity * sizeof *w->pair_vals);
     ga2d__free(a, w->begin_events, (size_t)w->begin_capacity * sizeof *w->begin_events);
     ga2d__free(a, w->end_events, (size_t)w->end_capacity * sizeof *w->end_events);
-    ga2d__free(a, w->step.constraints, (size_t)w->step.constraint_capacity * sizeof *w->step.constraints);
-    ga2d__free(a, w->step.groups, (size_t)w->step.group_capacity * sizeof *w->step.groups);
-    ga2d__free(a, w->step.sbodies, (size_t)w->step.sbody_capacity * sizeof *w->step.sbodies);
-    ga2d__free(a, w->step.last_group, (size_t)w->step.last_group_capacity * sizeof *w->step.last_group);
-    ga2d__free(a, w->step.changed, (size_t)w->step.changed_capacity * sizeof *w->step.changed);
+    ga2d__step_free(a, &w->step);
     ga2d__free(a, w->wake_queue, (size_t)w->wake_capacity * sizeof *w->wake_queue);
     ga2d__free(&user, a->ctx, sizeof *w);
 }
@@ -3744,7 +3394,7 @@ GA2D_API ga2d_result ga2d_world_set_integrator(ga2d_world *w, ga2d_integrator in
     if (integrator == GA2D_INTEGRATOR_RK4) {
         int ok;
         ga2d__enter(w);
-        ok = ga2d__grow(&w->mem, (void **)&w->step.rk4, &w->step.rk4_capacity, w->moving_capacity, sizeof *w->step.rk4);
+        ok = ga2d__reserve_rk4(w, w->moving_capacity);
         /* the world may have been destroyed from the allocator: it is
            still here until the leave, and it is not touched after it */
         if (!ok || w->destroy_pending) {
@@ -3951,7 +3601,7 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
         if (!ga2d__grow(&w->mem, (void **)&w->moving, &w->moving_capacity, w->body_used + 1, sizeof *w->moving))
             return id;
         if (w->def.integrator == GA2D_INTEGRATOR_RK4 &&
-            !ga2d__grow(&w->mem, (void **)&w->step.rk4, &w->step.rk4_capacity, w->moving_capacity, sizeof *w->step.rk4))
+            !ga2d__reserve_rk4(w, w->moving_capacity))
             return id;
     }
     ga2d_polygon_make(def->polygon.vertices, def->polygon.count, &poly); /* validated above */
@@ -4395,464 +4045,174 @@ GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id
     return GA2D_OK;
 }
 
-/* ============================================================ world step */
-/* exp(a e12) = cos a + sin a e12, without libm so that a step gives the
-   same bits on every platform.  |a| <= pi/4 (the usual turn per substep)
-   goes straight to the series; larger a is first reduced by k quarter
-   turns (Cody-Waite: pi/2 in two parts), and e12^k is exact:
-   (c, s) -> (-s, c).  The series (Horner, reciprocal factorials) stop where
-   the next term at pi/4 is below half an ulp: r^9 / r^10 in float,
-   r^17 / r^18 in double. */
-static ga2d_rotor ga2d__exp_e12(ga2d_real a)
-{
-#ifdef GA2D_DOUBLE
-    const ga2d_real pio2_hi = 1.5707963267341256, pio2_lo = 6.077100506506192e-11; /* hi: 33 bits */
-#else
-    const ga2d_real pio2_hi = 1.5707963705062866f, pio2_lo = -4.371139000186243e-08f; /* float pi/2 and the rest */
-#endif
-    ga2d_real r = a, r2, c, s, t;
-    long quarter = 0;
-    if (!(GA2D__FABS(a) <= GA2D__R(0.78539816339744831))) {
-        ga2d_real k;
-        if (!ga2d__finite(a)) return ga2d__rotor(a - a, a - a); /* NaN: the step reports it */
-        if (GA2D__FABS(a) > GA2D__R(1e6)) a = (ga2d_real)fmod((double)a, 6.283185307179586); /* exact */
-        k = (ga2d_real)floor((double)(a * GA2D__R(0.63661977236758134) + GA2D__R(0.5)));
-        r = (a - k * pio2_hi) - k * pio2_lo;
-        quarter = (long)k & 3;
-    }
-    r2 = r * r;
-#ifdef GA2D_DOUBLE
-    c = 1 + r2 * (-1.0 / 2 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800 +
-        r2 * (1.0 / 479001600 + r2 * (-1.0 / 87178291200.0 + r2 * (1.0 / 20922789888000.0))))))));
-    s = r * (1 + r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880 + r2 * (-1.0 / 39916800 +
-        r2 * (1.0 / 6227020800.0 + r2 * (-1.0 / 1307674368000.0 + r2 * (1.0 / 355687428096000.0)))))))));
-#else
-    c = 1 + r2 * (-1.0f / 2 + r2 * (1.0f / 24 + r2 * (-1.0f / 720 + r2 * (1.0f / 40320))));
-    s = r * (1 + r2 * (-1.0f / 6 + r2 * (1.0f / 120 + r2 * (-1.0f / 5040 + r2 * (1.0f / 362880)))));
-#endif
-    for (; quarter > 0; --quarter) { t = c; c = -s; s = t; }
-    return ga2d__rotor(c, s);
-}
-
-/* q turned by `angle`: exactly, q exp(angle e12) followed by one Newton
-   step toward |q| = 1 (r (3 - |r|^2)/2 takes a norm of 1 + d to 1 + O(d^2),
-   so rounding never accumulates); or to first order, q (1 + angle e12)
-   renormalized, which turns by atan(angle) instead of angle. */
-static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update mode)
-{
-    ga2d_rotor r;
-    ga2d_real k;
-    if (mode == GA2D_ROTATION_LINEAR) {
-        r = ga2d__rotor(q.c - angle * q.s, q.s + angle * q.c);
-        k = 1 / GA2D__SQRT(r.c * r.c + r.s * r.s);
-        /* a turn so large that |r|^2 overflows (an NGS fix or RK4 stage on
-           a body of tiny inertia) gave k = 0, the zero rotor: measure it
-           scaled instead (NaN still passes through, for the step to see) */
-        if (k == 0 && ga2d__finite(r.c) && ga2d__finite(r.s)) return ga2d_rotor_normalize(r);
-    } else {
-        r = ga2d_rotor_mul(q, ga2d__exp_e12(angle));
-        k = (3 - (r.c * r.c + r.s * r.s)) / 2;
-    }
-    return ga2d__rotor(r.c * k, r.s * k);
-}
-
-/* Runs the force callback at time t on the bodies' current state. */
-static void ga2d__contain(ga2d_world *w, int slot);
-
-/* Position, rotor and velocities all finite. */
-static int ga2d__state_finite(const ga2d__body *b)
-{
-    return ga2d__finite_vec(b->center) && ga2d__finite(b->q.c) && ga2d__finite(b->q.s) && ga2d__finite_vec(b->v) &&
-           ga2d__finite(b->w);
-}
-
-/* The field never reads a state that is not finite: a body driven there
-   since the last containment (a restitution above 1, an RK4 stage, a
-   solver pass) is contained first. */
-static void ga2d__eval_field(ga2d_world *w, double t)
-{
-    int k;
-    if (!w->def.force_callback || w->destroy_pending) return; /* destroyed from it: no more calls */
-    for (k = 0; k < w->moving_count; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        b->field_force = ga2d_vec_make(0, 0);
-        b->field_torque = 0;
-        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
-    }
-    w->lock |= GA2D__LOCK_FIELD;
-    w->eval_time = t;
-    w->def.force_callback(w, w->def.force_context);
-    w->lock &= ~GA2D__LOCK_FIELD;
-    ++w->counters.force_evaluations;
-}
-
-/* a = g s + (F_user + F_field)/m and alpha = (tau_user + tau_field)/I */
-static void ga2d__acceleration(const ga2d_world *w, const ga2d__body *b, ga2d_vec *a, ga2d_real *alpha)
-{
-    ga2d_vec f = ga2d_vec_add(b->force, b->field_force);
-    *a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(f, b->inv_mass));
-    *alpha = (b->torque + b->field_torque) * b->inv_inertia;
-}
-
-/* Damping as the implicit factor 1/(1 + c h): stable for any c h. */
-static void ga2d__damp(ga2d__body *b, ga2d_real h)
-{
-    if (b->linear_damping > 0) b->v = ga2d_vec_scale(b->v, 1 / (1 + h * b->linear_damping));
-    if (b->angular_damping > 0) b->w *= 1 / (1 + h * b->angular_damping);
-}
-
-/* Position update x += h v, q <- q exp(w h e12).  A body that does not
-   turn (fixed rotation, or w = 0) skips the rotor altogether. */
-static void ga2d__drift(ga2d_world *w, ga2d__body *b, ga2d_real h)
-{
-    b->center = ga2d_vec_add(b->center, ga2d_vec_scale(b->v, h));
-    if (b->w != 0) {
-        b->q = ga2d__turn(b->q, b->w * h, w->def.rotation_update);
-        ++w->counters.rotation_updates;
-    }
-    ++w->counters.integrated_bodies;
-}
-
-/* ----------------------------------------------- velocities and positions */
-/* Each integrator is split into a velocity phase and a position phase, so
-   that the contact solver can act on the velocities in between (DESIGN 6):
-   symplectic Euler kicks by h then drifts; Verlet kicks by h/2, drifts,
-   evaluates the field and kicks by h/2 again; RK4 runs its four stages for
-   the free motion, and the position phase adds to RK4's displacement what
-   the contacts changed in the velocity (h dv). */
-
-/* Containment: a body whose state is no longer finite (an absurd force,
-   impulse or field drove it there) is put back where the step began, at
-   rest and without forces, before anything it touches can see it; the
-   step reports GA2D_ERR_NOT_FINITE and ga2d_world_error_body names the
-   lowest slot of them (not the first met: the moving list's order is not
-   a snapshot's).  Its neighbours stay finite. */
-static void ga2d__contain(ga2d_world *w, int slot)
-{
-    ga2d__body *b = &w->bodies[slot];
-    b->center = b->center0;
-    b->q = b->q0;
-    b->v = ga2d_vec_make(0, 0);
-    b->w = 0;
-    b->force = ga2d_vec_make(0, 0);
-    b->torque = 0;
-    b->field_valid = 0;
-    b->sleep_time = 0;
-    {
-        /* its contacts' accumulated impulses may hold what drove it: they
-           restart from zero, or warm starting and the passes that follow
-           would hand the NaN back to it and on to its neighbours */
-        int i, k;
-        for (i = 0; i < w->step.constraint_count; ++i) {
-            ga2d__constraint *c = &w->step.constraints[i];
-            if (c->a != slot && c->b != slot) continue;
-            for (k = 0; k < c->count; ++k) {
-                ga2d_manifold_point *mp = &w->contacts[c->contact].manifold.points[k];
-                c->p[k].normal_impulse = c->p[k].tangent_impulse = 0;
-                mp->normal_impulse = mp->tangent_impulse = 0;
-            }
-            if (w->step.group_count > 0) ga2d__lane_clear(&w->step, c->lane);
-        }
-    }
-    if (w->step.error == GA2D_OK) w->step.error = GA2D_ERR_NOT_FINITE;
-    if (w->step.error_slot < 0 || slot < w->step.error_slot) w->step.error_slot = slot;
-}
-
-/* Shortens *v to length max if longer (returns 1 then); the length is
-   taken after scaling by the larger component, so a huge but finite v is
-   capped, not turned into inf or NaN. */
-static int ga2d__cap_length(ga2d_vec *v, ga2d_real max)
-{
-    ga2d_real ax = GA2D__FABS(v->x), ay = GA2D__FABS(v->y), m = ax > ay ? ax : ay;
-    if (m > max * GA2D__R(0.7)) { /* |v| may exceed max: measure it safely */
-        ga2d_vec u = ga2d_vec_scale(*v, 1 / m);
-        ga2d_real len = m * GA2D__SQRT(ga2d_dot(u, u));
-        if (len > max) {
-            *v = ga2d_vec_scale(u, m * (max / len));
-            return 1;
-        }
-    }
-    return 0;
-}
-
-static int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
-{
-    if (!(*th > max || *th < -max)) return 0;
-    *th = *th > 0 ? max : -max;
-    return 1;
-}
-
-/* The velocity cap and the largest turn per substep, as Box2D: beyond
-   them a body is tunnelling anyway; each capped body counts in
-   speed_caps.  Returns 0 for a velocity that is not finite. */
-static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
-{
-    if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) return 0;
-    w->counters.speed_caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
-    w->counters.speed_caps += ga2d__cap_turn(&b->w, GA2D__MAX_TURN / h);
-    return 1;
-}
-
-/* A dynamic body's velocities capped, or the body contained when they are
-   not finite. */
-static void ga2d__cap_body(ga2d__step_context *c, ga2d__body *b, int slot)
-{
-    if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(c->world, b, c->h)) ga2d__contain(c->world, slot);
-}
-
-/* Stage, over the moving bodies: caches the field's acceleration (Verlet). */
-static void ga2d__cache_field(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        b->field_accel = ga2d_vec_scale(b->field_force, b->inv_mass);
-        b->field_alpha = b->field_torque * b->inv_inertia;
-        b->field_valid = 1;
-    }
-}
-
-/* Half a kick with the cached field plus gravity and the user's forces. */
-static void ga2d__verlet_kick(ga2d_world *w, ga2d__body *b, ga2d_real half)
-{
-    ga2d_vec a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale),
-                              ga2d_vec_add(b->field_accel, ga2d_vec_scale(b->force, b->inv_mass)));
-    b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, half));
-    b->w += (b->field_alpha + b->torque * b->inv_inertia) * half;
-}
-
-/* Classic RK4 on (x, theta, v, w), theta the turn since the substep began
-   (rotations in the plane commute, so q = q0 exp(theta e12)); damping is
-   the continuous -c v.  The velocity phase leaves every body at its start
-   state with its free end velocity; the displacement waits in the
-   scratch.  Without a force callback no stage writes a trial state and
-   nothing is evaluated.  These four stages run over the moving bodies. */
-static void ga2d__rk4_begin(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    ga2d__rk4 *s = c->rk4;
-    int k;
-    for (k = begin; k < end; ++k) {
-        const ga2d__body *b = &w->bodies[w->moving[k]];
-        memset(&s[k], 0, sizeof s[k]);
-        s[k].x0 = b->center;
-        s[k].q0 = b->q;
-        s[k].v0 = b->v;
-        s[k].w0 = b->w;
-    }
-}
-
-/* The trial state of the stage at rk4_at h, for the field to read. */
-static void ga2d__rk4_trial(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    ga2d__rk4 *s = c->rk4;
-    ga2d_real at = c->rk4_at * c->h;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        b->center = ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].kx, at));
-        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, at));
-        b->w = s[k].w0 + s[k].kw * at;
-        b->q = s[k].kth * at != 0 ? ga2d__turn(s[k].q0, s[k].kth * at, w->def.rotation_update) : s[k].q0;
-    }
-}
-
-/* The stage's derivative, added to the weighted sum. */
-static void ga2d__rk4_derive(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    ga2d__rk4 *s = c->rk4;
-    ga2d_real at = c->rk4_at * c->h, weight = c->rk4_weight;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        ga2d_vec v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, at));
-        ga2d_real om = s[k].w0 + s[k].kw * at;
-        s[k].kx = v;
-        s[k].kth = om;
-        if (b->type == GA2D_BODY_DYNAMIC) {
-            ga2d_vec a;
-            ga2d_real alpha;
-            ga2d__acceleration(w, b, &a, &alpha);
-            s[k].kv = ga2d_vec_sub(a, ga2d_vec_scale(v, b->linear_damping));
-            s[k].kw = alpha - b->angular_damping * om;
-        }
-        s[k].sx = ga2d_vec_add(s[k].sx, ga2d_vec_scale(s[k].kx, weight));
-        s[k].sv = ga2d_vec_add(s[k].sv, ga2d_vec_scale(s[k].kv, weight));
-        s[k].sth += s[k].kth * weight;
-        s[k].sw += s[k].kw * weight;
-    }
-}
-
-/* The free end velocities, capped, from the start state. */
-static void ga2d__rk4_end(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    ga2d__rk4 *s = c->rk4;
-    ga2d_real h = c->h;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        b->center = s[k].x0;
-        b->q = s[k].q0;
-        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].sv, h / 6));
-        b->w = s[k].w0 + s[k].sw * (h / 6);
-        s[k].kv = b->v; /* the free end velocities, for the position phase */
-        s[k].kw = b->w;
-        ga2d__cap_body(c, b, w->moving[k]);
-    }
-}
-
-/* Stage, over the moving bodies: symplectic Euler's kick v += h a,
-   w += h alpha, then damping and the caps. */
-static void ga2d__kick(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    ga2d_real h = c->h;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        ga2d_vec a;
-        ga2d_real alpha;
-        if (b->type != GA2D_BODY_DYNAMIC) continue;
-        ga2d__acceleration(w, b, &a, &alpha);
-        b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, h));
-        b->w += alpha * h;
-        ga2d__damp(b, h);
-        ga2d__cap_body(c, b, w->moving[k]);
-    }
-}
-
-/* Stage, over the moving bodies: Verlet's opening half kick, capped. */
-static void ga2d__open_kick(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        if (b->type != GA2D_BODY_DYNAMIC) continue;
-        ga2d__verlet_kick(w, b, c->h / 2);
-        ga2d__cap_body(c, b, w->moving[k]);
-    }
-}
-
-/* Whether some moving body lacks its cached field (Verlet). */
-static int ga2d__field_stale(const ga2d_world *w)
-{
-    int k;
-    for (k = 0; k < w->moving_count; ++k)
-        if (!w->bodies[w->moving[k]].field_valid) return 1;
-    return 0;
-}
-
-/* The velocity phase of the world's integrator, at the substep's start. */
-static void ga2d__integrate_velocities(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int n = w->moving_count, stage;
-    if (w->def.integrator == GA2D_INTEGRATOR_RK4) {
-        static const ga2d_real at[4] = {0, GA2D__R(0.5), GA2D__R(0.5), 1};
-        static const ga2d_real weight[4] = {1, 2, 2, 1};
-        GA2D_ASSERT(c->rk4_capacity >= n);
-        ga2d__run(c, ga2d__rk4_begin, n);
-        for (stage = 0; stage < 4; ++stage) {
-            c->rk4_at = at[stage];
-            c->rk4_weight = weight[stage];
-            if (w->def.force_callback) {
-                ga2d__run(c, ga2d__rk4_trial, n);
-                ga2d__eval_field(w, c->t + (double)(at[stage] * c->h));
-            }
-            ga2d__run(c, ga2d__rk4_derive, n);
-        }
-        ga2d__run(c, ga2d__rk4_end, n);
-    } else if (w->def.integrator == GA2D_INTEGRATOR_VERLET) {
-        if (w->def.force_callback && ga2d__field_stale(w)) {
-            ga2d__eval_field(w, c->t);
-            ga2d__run(c, ga2d__cache_field, n);
-        }
-        ga2d__run(c, ga2d__open_kick, n);
-    } else {
-        ga2d__eval_field(w, c->t);
-        ga2d__run(c, ga2d__kick, n);
-    }
-}
-
-/* Stage, over the moving bodies: RK4's displacement plus h times what
-   the contacts changed, under the caps the velocities have (the stages'
-   own velocities are not capped). */
-static void ga2d__rk4_positions(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    ga2d__rk4 *s = c->rk4;
-    ga2d_real h = c->h;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        ga2d_real th = s[k].sth * (h / 6) + (b->w - s[k].kw) * h;
-        ga2d_vec d;
-        b->center = ga2d_vec_add(ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].sx, h / 6)),
-                                 ga2d_vec_scale(ga2d_vec_sub(b->v, s[k].kv), h));
-        d = ga2d_vec_sub(b->center, s[k].x0);
-        if (ga2d__cap_length(&d, GA2D__MAX_SPEED * w->def.length_units_per_meter * h)) b->center = ga2d_vec_add(s[k].x0, d);
-        ga2d__cap_turn(&th, GA2D__MAX_TURN);
-        if (th != 0) {
-            b->q = ga2d__turn(s[k].q0, th, w->def.rotation_update);
-            ++w->counters.rotation_updates;
-        }
-        ++w->counters.integrated_bodies;
-        /* a body contained in the velocity phase still has its stages'
-           sums here: contain it again before the solver passes that
-           follow can spread its NaN through the contacts */
-        if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) ga2d__contain(w, w->moving[k]);
-    }
-}
-
-/* Stage, over the moving bodies: x += h v, q <- q exp(w h e12). */
-static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int k;
-    for (k = begin; k < end; ++k) ga2d__drift(w, &w->bodies[w->moving[k]], c->h);
-}
-
-/* Stage, over the moving bodies: Verlet's closing half kick and damping.
-   It is capped too: uncapped, a stiff field (a drag of k h / m >> 2) left
-   the step with any speed or turn, and the next step's contacts turned
-   that into NaN. */
-static void ga2d__close_kick(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        if (b->type != GA2D_BODY_DYNAMIC) continue;
-        ga2d__verlet_kick(w, b, c->h / 2);
-        ga2d__damp(b, c->h);
-        ga2d__cap_body(c, b, w->moving[k]);
-    }
-}
-
-/* The position phase of the world's integrator, ending the substep. */
-static void ga2d__integrate_positions(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int n = w->moving_count;
-    if (w->def.integrator == GA2D_INTEGRATOR_RK4) {
-        ga2d__run(c, ga2d__rk4_positions, n);
-        return;
-    }
-    ga2d__run(c, ga2d__drift_bodies, n);
-    if (w->def.integrator != GA2D_INTEGRATOR_VERLET) return;
-    if (w->def.force_callback) {
-        ga2d__eval_field(w, c->t + (double)c->h);
-        ga2d__run(c, ga2d__cache_field, n);
-    }
-    ga2d__run(c, ga2d__close_kick, n);
-}
-
 /* ========================================================== contact solver */
+/* A contact point as the solver sees it: anchors from each body's centre
+   of mass (world orientation, fixed for the step), the effective masses,
+   and the accumulated impulses. */
+typedef struct ga2d__cpoint {
+    ga2d_vec ra, rb;
+    ga2d_real separation;        /* at the step's start */
+    ga2d_real normal_mass, tangent_mass;
+    ga2d_real normal_impulse, tangent_impulse;
+} ga2d__cpoint;
+
+struct ga2d__constraint {
+    int contact, a, b;           /* pool index, body slots */
+    ga2d_vec normal;
+    ga2d_real friction, restitution;
+    ga2d_real inv_ma, inv_ia, inv_mb, inv_ib;
+    int to_static;               /* the other body cannot move: stiffer */
+    int count;
+    int lane;                    /* group * GA2D__LANES + lane in the lane solver */
+    ga2d__cpoint p[2];
+};
+
+/* The solver's innermost helpers run hundreds of thousands of times a
+   step: they are inlined into its passes, where the compiler keeps the
+   lanes in registers across them. */
+#if defined(__GNUC__) || defined(__clang__)
+#define GA2D__HOT inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define GA2D__HOT __forceinline
+#else
+#define GA2D__HOT inline
+#endif
+
+/* ------------------------------------------------------ the lane solver */
+/* The velocity passes (warm start, solve, relax) run on groups of
+   constraints that share no body they move, one constraint per lane, so
+   each pass is GA2D__LANES independent sequential-impulse updates at once.  A
+   group is solved as a whole and the groups one after the other: still
+   Gauss-Seidel, in an order close to the canonical one.  Under gcc and
+   clang a lane set is a vector of the compiler's (SSE2 on x86-64, NEON on
+   arm64); elsewhere, or with GA2D_NO_SIMD, a struct of lanes.  Each lane
+   computes exactly what the scalar code would, operation for operation, so
+   both give the same bits (the determinism check builds both). */
+/* 16 bytes, the width every 64-bit target has; 32 where the compiler is
+   told of AVX (-mavx2, -march=native).  The width changes no bit of the
+   results: constraints that share no moved body commute exactly, and the
+   groups keep every body's own constraints in order. */
+#if defined(__AVX__) && !defined(GA2D_NO_SIMD)
+#define GA2D__BYTES 32
+#else
+#define GA2D__BYTES 16
+#endif
+#ifdef GA2D_DOUBLE
+#define GA2D__LANES (GA2D__BYTES / 8)
+#else
+#define GA2D__LANES (GA2D__BYTES / 4)
+#endif
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(GA2D_NO_SIMD)
+/* aligned to one element, as a user's allocator owes no more */
+#ifdef GA2D_DOUBLE
+typedef double ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(8)));
+typedef int64_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(8)));
+#else
+typedef float ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(4)));
+typedef int32_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(4)));
+#endif
+#define GA2D__LANE(x, i) (x)[i]
+#define GA2D__WINIT(...) {__VA_ARGS__}
+static GA2D__HOT ga2d__w ga2d__wadd(ga2d__w a, ga2d__w b) { return a + b; }
+static GA2D__HOT ga2d__w ga2d__wsub(ga2d__w a, ga2d__w b) { return a - b; }
+static GA2D__HOT ga2d__w ga2d__wmul(ga2d__w a, ga2d__w b) { return a * b; }
+static GA2D__HOT ga2d__w ga2d__wdiv(ga2d__w a, ga2d__w b) { return a / b; }
+static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a > b); }
+static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a >= b); }
+static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b) { return a & b; }
+/* m ? a : b, lane by lane (m all ones or all zeros) */
+static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
+{
+    return (ga2d__w)((m & (ga2d__wmask)a) | (~m & (ga2d__wmask)b));
+}
+#else
+typedef struct ga2d__w { ga2d_real lane[GA2D__LANES]; } ga2d__w;
+typedef struct ga2d__wmask { int lane[GA2D__LANES]; } ga2d__wmask;
+#define GA2D__LANE(x, i) (x).lane[i]
+#define GA2D__WINIT(...) {{__VA_ARGS__}}
+#define GA2D__WOP(name, op)                                                                                            \
+    static GA2D__HOT ga2d__w name(ga2d__w a, ga2d__w b)                                                               \
+    {                                                                                                                  \
+        int i;                                                                                                         \
+        for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] op b.lane[i];                                                   \
+        return a;                                                                                                      \
+    }
+GA2D__WOP(ga2d__wadd, +)
+GA2D__WOP(ga2d__wsub, -)
+GA2D__WOP(ga2d__wmul, *)
+GA2D__WOP(ga2d__wdiv, /)
+#undef GA2D__WOP
+static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b)
+{
+    ga2d__wmask m;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] > b.lane[i];
+    return m;
+}
+static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b)
+{
+    ga2d__wmask m;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] >= b.lane[i];
+    return m;
+}
+static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b)
+{
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] && b.lane[i];
+    return a;
+}
+static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
+{
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = m.lane[i] ? a.lane[i] : b.lane[i];
+    return a;
+}
+#endif
+
+static GA2D__HOT ga2d__w ga2d__wsplat(ga2d_real x)
+{
+    ga2d__w r;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) GA2D__LANE(r, i) = x;
+    return r;
+}
+
+/* a x + b y: the dot product of the lanes' vectors (a, b) and (x, y) */
+static GA2D__HOT ga2d__w ga2d__wdot(ga2d__w a, ga2d__w b, ga2d__w x, ga2d__w y)
+{
+    return ga2d__wadd(ga2d__wmul(a, x), ga2d__wmul(b, y));
+}
+
+/* A body as the passes see it: velocity, spin, and its motion since the
+   step began (displacement dp, turn dq = q q0~).  Bodies that do not move
+   keep v, w and a zero motion; one slot past the last body is a dummy for
+   empty lanes.  Eight reals, so that the lanes' bodies load as whole rows
+   and are transposed in registers (ga2d__wload). */
+struct ga2d__sbody {
+    ga2d_real vx, vy, w, pad, dpx, dpy, dqc, dqs;
+};
+
+/* GA2D__LANES constraints, lane by lane: the bodies (the dummy slot in an empty
+   lane), which of them the lane moves, its constraint's index, and the
+   constraint's data.  A one-point contact's second point and an empty lane
+   have zero masses, so their impulses stay zero. */
+struct ga2d__group {
+    int a[GA2D__LANES], b[GA2D__LANES];
+    int con[GA2D__LANES];       /* the lane's constraint, -1 in an empty lane */
+    ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
+    int count;              /* lanes in use */
+    int skip;               /* when full: a later group to look at first */
+    ga2d__w nx, ny, friction, ima, iia, imb, iib;
+    ga2d__w dx, dy;         /* centre B - centre A when the step began */
+    ga2d__w soft_rate, soft_mass, soft_impulse;
+    ga2d__w rax[2], ray[2], rbx[2], rby[2];
+    ga2d__w adjust[2];      /* start separation - (d0 + rB - rA).n */
+    ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
+    ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
+    ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
+};
+
 /* A soft constraint seen by an implicit step (ga2d__make_soft). */
 
 static ga2d__soft ga2d__make_soft(ga2d_real hertz, ga2d_real zeta, ga2d_real h)
@@ -5060,7 +4420,7 @@ typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
 /* The lanes' bodies as whole rows: lane l's body, GA2D__LANES reals at a
    time, is row l of a square block; transposed in registers, row k holds
    field k of every lane.  Gathering field by field instead costs a scalar
-   load and an insert per lane and field (large_pyramid: 8 % slower).  It
+   load and an insert per lane and field.  It
    needs the compiler's vector shuffle: clang's and gcc 12's
    __builtin_shufflevector, or older gcc's __builtin_shuffle in C (its
    index vector is a compound literal, which C++ lacks). */
@@ -5072,7 +4432,7 @@ typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
 #endif
 #endif
 /* 8 lanes (AVX floats) gather faster field by field: an 8 x 8 transpose
-   crosses the register's halves (large_pyramid: 6.2 ms against 4.0) */
+   crosses the register's 128-bit halves, each crossing a slow shuffle */
 #if defined(GA2D__SHUF) && GA2D__LANES < 8
 static GA2D__HOT ga2d__w ga2d__wrow(const ga2d_real *p)
 {
@@ -5555,9 +4915,9 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
     ga2d__sbody *dummy;
     c->group_count = 0;
     if (c->constraint_count == 0) return;
-    /* groups grow as they open (below): a group holds up to GA2D__LANES
-       constraints, so room for one per constraint (the worst case, every
-       constraint on one body) was 632 bytes per touching contact */
+    /* groups grow as they open (below), not to one per constraint (the
+       worst case, every constraint on one body): a group holds up to
+       GA2D__LANES constraints, so that would be GA2D__LANES times the room */
     if (!ga2d__grow(&w->mem, (void **)&c->sbodies, &c->sbody_capacity, used + 1, sizeof *c->sbodies) ||
         !ga2d__grow(&w->mem, (void **)&c->last_group, &c->last_group_capacity, used, sizeof *c->last_group)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
@@ -5755,7 +5115,7 @@ static void ga2d__restitute(ga2d__step_context *c)
                    energy v^2 + 2 g y - g h v is (v - g h/2)^2 + 2 g y up to
                    a constant.  The bounce acts on the true speed, so the
                    flight that follows is e times as fast, not e times
-                   less g h (issue 5's e^2n heights) */
+                   less g h, and bounce heights go as e^2n */
                 vn[k] = ga2d_dot(ga2d__relative_velocity(a, b, cc->p[k].ra, cc->p[k].rb), cc->normal) - (euler ? closing * h / 2 : 0);
                 /* closing within the step, or the first substep of the next
                    (the last relax pass brakes a point that is still apart
@@ -5811,135 +5171,638 @@ static void ga2d__restitute(ga2d__step_context *c)
         if (!ga2d__state_finite(&w->bodies[w->moving[k]])) ga2d__contain(w, w->moving[k]);
 }
 
-/* ================================================================ sleep */
-/* Wakes a sleeping body and, through the touching contacts that sleeping
-   bodies keep, its whole island. */
-static void ga2d__wake(ga2d_world *w, int slot)
+/* ============================================================ world step */
+/* RK4's per-body scratch for one substep: the start state, the derivative
+   of the last stage and the weighted sum of the stages. */
+struct ga2d__rk4 {
+    ga2d_vec x0, v0, kx, kv, sx, sv;
+    ga2d_rotor q0;
+    ga2d_real w0, kth, kw, sth, sw;
+};
+
+/* ------------------------------------------------- the context's memory */
+/* RK4's scratch for n moving bodies: kept at the moving list's capacity,
+   so that a step never allocates it. */
+static int ga2d__reserve_rk4(ga2d_world *w, int n)
 {
-    int head = 0, tail = 0;
-    ga2d__body *b = &w->bodies[slot];
-    if (b->awake || b->type != GA2D_BODY_DYNAMIC) {
-        b->sleep_time = 0;
-        return;
-    }
-    /* the island's bodies are queued in the move buffer's spare room:
-       its capacity covers every body slot */
-    b->awake = 1;
-    w->wake_queue[tail++] = slot;
-    while (head < tail) {
-        int s = w->wake_queue[head++], link;
-        ga2d__body *x = &w->bodies[s];
-        x->sleep_time = 0;
-        ga2d__moving_add(w, s);
-        x->field_valid = 0;
-        for (link = ga2d__first_edge(w, s); link >= 0; link = ga2d__next_edge(w, link)) {
-            const ga2d__contact *ct = &w->contacts[link >> 1];
-            int other = ga2d__edge_other(w, link);
-            ga2d__body *o = &w->bodies[other];
-            if (!ct->touching || o->awake || o->type != GA2D_BODY_DYNAMIC) continue;
-            o->awake = 1;
-            w->wake_queue[tail++] = other;
-        }
-    }
+    return ga2d__grow(&w->mem, (void **)&w->step.rk4, &w->step.rk4_capacity, n, sizeof *w->step.rk4);
 }
 
-static void ga2d__put_to_sleep(ga2d_world *w, int slot)
+/* The solver's arrays given back (ga2d_world_compact); the next step
+   allocates what it needs. */
+static void ga2d__step_release(ga2d_world *w)
+{
+    ga2d__step_context *c = &w->step;
+    ga2d__release(w, (void **)&c->constraints, &c->constraint_capacity, sizeof *c->constraints);
+    c->constraint_count = 0;
+    ga2d__release(w, (void **)&c->groups, &c->group_capacity, sizeof *c->groups);
+    c->group_count = 0;
+    ga2d__release(w, (void **)&c->sbodies, &c->sbody_capacity, sizeof *c->sbodies);
+    ga2d__release(w, (void **)&c->last_group, &c->last_group_capacity, sizeof *c->last_group);
+    ga2d__release(w, (void **)&c->changed, &c->changed_capacity, sizeof *c->changed);
+}
+
+/* Everything the context holds, freed with its world. */
+static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
+{
+    ga2d__free(a, c->rk4, (size_t)c->rk4_capacity * sizeof *c->rk4);
+    ga2d__free(a, c->constraints, (size_t)c->constraint_capacity * sizeof *c->constraints);
+    ga2d__free(a, c->groups, (size_t)c->group_capacity * sizeof *c->groups);
+    ga2d__free(a, c->sbodies, (size_t)c->sbody_capacity * sizeof *c->sbodies);
+    ga2d__free(a, c->last_group, (size_t)c->last_group_capacity * sizeof *c->last_group);
+    ga2d__free(a, c->changed, (size_t)c->changed_capacity * sizeof *c->changed);
+}
+
+/* Runs the force callback at time t on the bodies' current state.  The
+   field never reads a state that is not finite: a body driven there
+   since the last containment (a restitution above 1, an RK4 stage, a
+   solver pass) is contained first. */
+static void ga2d__eval_field(ga2d_world *w, double t)
+{
+    int k;
+    if (!w->def.force_callback || w->destroy_pending) return; /* destroyed from it: no more calls */
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->field_force = ga2d_vec_make(0, 0);
+        b->field_torque = 0;
+        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
+    }
+    w->lock |= GA2D__LOCK_FIELD;
+    w->eval_time = t;
+    w->def.force_callback(w, w->def.force_context);
+    w->lock &= ~GA2D__LOCK_FIELD;
+    ++w->counters.force_evaluations;
+}
+
+/* a = g s + (F_user + F_field)/m and alpha = (tau_user + tau_field)/I */
+static void ga2d__acceleration(const ga2d_world *w, const ga2d__body *b, ga2d_vec *a, ga2d_real *alpha)
+{
+    ga2d_vec f = ga2d_vec_add(b->force, b->field_force);
+    *a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(f, b->inv_mass));
+    *alpha = (b->torque + b->field_torque) * b->inv_inertia;
+}
+
+/* Damping as the implicit factor 1/(1 + c h): stable for any c h. */
+static void ga2d__damp(ga2d__body *b, ga2d_real h)
+{
+    if (b->linear_damping > 0) b->v = ga2d_vec_scale(b->v, 1 / (1 + h * b->linear_damping));
+    if (b->angular_damping > 0) b->w *= 1 / (1 + h * b->angular_damping);
+}
+
+/* Position update x += h v, q <- q exp(w h e12).  A body that does not
+   turn (fixed rotation, or w = 0) skips the rotor altogether. */
+static void ga2d__drift(ga2d_world *w, ga2d__body *b, ga2d_real h)
+{
+    b->center = ga2d_vec_add(b->center, ga2d_vec_scale(b->v, h));
+    if (b->w != 0) {
+        b->q = ga2d__turn(b->q, b->w * h, w->def.rotation_update);
+        ++w->counters.rotation_updates;
+    }
+    ++w->counters.integrated_bodies;
+}
+
+/* ----------------------------------------------- velocities and positions */
+/* Each integrator is split into a velocity phase and a position phase, so
+   that the contact solver can act on the velocities in between:
+   symplectic Euler kicks by h then drifts; Verlet kicks by h/2, drifts,
+   evaluates the field and kicks by h/2 again; RK4 runs its four stages for
+   the free motion, and the position phase adds to RK4's displacement what
+   the contacts changed in the velocity (h dv). */
+
+/* Containment: a body whose state is no longer finite (an absurd force,
+   impulse or field drove it there) is put back where the step began, at
+   rest and without forces, before anything it touches can see it; the
+   step reports GA2D_ERR_NOT_FINITE and ga2d_world_error_body names the
+   lowest slot of them (not the first met: the moving list's order is not
+   a snapshot's).  Its neighbours stay finite. */
+static void ga2d__contain(ga2d_world *w, int slot)
 {
     ga2d__body *b = &w->bodies[slot];
-    b->awake = 0;
+    b->center = b->center0;
+    b->q = b->q0;
     b->v = ga2d_vec_make(0, 0);
     b->w = 0;
-    /* its pose now is its start pose for as long as it sleeps: a body
-       that touches it must see no motion of it */
-    b->center0 = b->center;
-    b->q0 = b->q;
-    b->dq = ga2d_rotor_identity();
     b->force = ga2d_vec_make(0, 0);
     b->torque = 0;
-    ga2d__moving_remove(w, slot);
-}
-
-static int ga2d__find(ga2d_world *w, int s)
-{
-    while (w->bodies[s].island != s) {
-        w->bodies[s].island = w->bodies[w->bodies[s].island].island; /* path halving */
-        s = w->bodies[s].island;
-    }
-    return s;
-}
-
-/* A contact overlapped deeper than this (in slops: the speculative
-   distance) keeps its bodies awake: the solver pushes overlap out over
-   several steps, and the relax pass takes the push-out speed out of v, so
-   a body still being pushed out looks at rest.  Resting contacts settle
-   within one slop (the soft contact's target); a 100:1 plank on two boxes
-   settles 1.6 slops deep and sleeps, a 200:1 one 3.2 slops deep sleeps
-   too, a 300:1 one (6.8 slops) stays awake, still being pushed. */
-#define GA2D__SLEEP_MAX_OVERLAP 4
-
-/* Islands of awake dynamic bodies joined by touching contacts (static and
-   kinematic bodies do not join them).  A body rests while max(|v|,
-   extent |w|) stays under 5 cm/s (in metres) and none of its contacts is
-   overlapped by more than GA2D__SLEEP_MAX_OVERLAP slops; an island whose
-   every body has rested for 0.5 s falls asleep and costs nothing until
-   woken.  Book-keeping: it puts bodies to sleep. */
-static void ga2d__update_sleep(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    ga2d_real dt = c->dt;
-    ga2d_real tol = GA2D__R(0.05) * w->def.length_units_per_meter;
-    int k, i, islands = 0;
-    for (k = 0; k < w->moving_count; ++k) {
-        int s = w->moving[k];
-        ga2d__body *b = &w->bodies[s];
-        ga2d_real speed2 = ga2d_dot(b->v, b->v), spin = b->extent * b->w;
-        b->island = s;
-        if (b->type != GA2D_BODY_DYNAMIC) continue;
-        if (speed2 > tol * tol || spin * spin > tol * tol) b->sleep_time = 0;
-        else b->sleep_time += dt;
-    }
-    for (i = 0; i < c->constraint_count; ++i) {
-        const ga2d__constraint *cc = &c->constraints[i];
-        for (k = 0; k < cc->count; ++k)
-            if (cc->p[k].separation < -GA2D__SLEEP_MAX_OVERLAP * w->slop) {
-                w->bodies[cc->a].sleep_time = 0; /* static ones never sleep: harmless */
-                w->bodies[cc->b].sleep_time = 0;
+    b->field_valid = 0;
+    b->sleep_time = 0;
+    {
+        /* its contacts' accumulated impulses may hold what drove it: they
+           restart from zero, or warm starting and the passes that follow
+           would hand the NaN back to it and on to its neighbours */
+        int i, k;
+        for (i = 0; i < w->step.constraint_count; ++i) {
+            ga2d__constraint *c = &w->step.constraints[i];
+            if (c->a != slot && c->b != slot) continue;
+            for (k = 0; k < c->count; ++k) {
+                ga2d_manifold_point *mp = &w->contacts[c->contact].manifold.points[k];
+                c->p[k].normal_impulse = c->p[k].tangent_impulse = 0;
+                mp->normal_impulse = mp->tangent_impulse = 0;
             }
-    }
-    for (i = 0; i < c->constraint_count; ++i) {
-        const ga2d__constraint *cc = &c->constraints[i];
-        const ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
-        int ra, rb;
-        if (a->type != GA2D_BODY_DYNAMIC || b->type != GA2D_BODY_DYNAMIC || !a->awake || !b->awake) continue;
-        ra = ga2d__find(w, cc->a);
-        rb = ga2d__find(w, cc->b);
-        if (ra != rb) w->bodies[ra > rb ? ra : rb].island = ra < rb ? ra : rb;
-    }
-    /* each root takes its island's shortest rest (a root is its own parent,
-       and a kinematic body in the list is a root nothing joins) */
-    for (k = 0; k < w->moving_count; ++k) {
-        int s = w->moving[k];
-        if (w->bodies[s].type == GA2D_BODY_DYNAMIC && ga2d__find(w, s) == s) {
-            w->bodies[s].island_rest = w->bodies[s].sleep_time;
-            ++islands;
+            if (w->step.group_count > 0) ga2d__lane_clear(&w->step, c->lane);
         }
     }
-    for (k = 0; k < w->moving_count; ++k) {
-        int s = w->moving[k], r;
-        if (w->bodies[s].type != GA2D_BODY_DYNAMIC) continue;
-        r = ga2d__find(w, s);
-        if (w->bodies[s].sleep_time < w->bodies[r].island_rest) w->bodies[r].island_rest = w->bodies[s].sleep_time;
+    if (w->step.error == GA2D_OK) w->step.error = GA2D_ERR_NOT_FINITE;
+    if (w->step.error_slot < 0 || slot < w->step.error_slot) w->step.error_slot = slot;
+}
+
+/* Shortens *v to length max if longer (returns 1 then); the length is
+   taken after scaling by the larger component, so a huge but finite v is
+   capped, not turned into inf or NaN. */
+static int ga2d__cap_length(ga2d_vec *v, ga2d_real max)
+{
+    ga2d_real ax = GA2D__FABS(v->x), ay = GA2D__FABS(v->y), m = ax > ay ? ax : ay;
+    if (m > max * GA2D__R(0.7)) { /* |v| may exceed max: measure it safely */
+        ga2d_vec u = ga2d_vec_scale(*v, 1 / m);
+        ga2d_real len = m * GA2D__SQRT(ga2d_dot(u, u));
+        if (len > max) {
+            *v = ga2d_vec_scale(u, m * (max / len));
+            return 1;
+        }
     }
-    w->counters.island_count = islands;
-    /* moving_remove swaps the last entry in: walk down */
-    for (k = w->moving_count - 1; k >= 0; --k) {
-        int s = w->moving[k];
-        if (w->bodies[s].type == GA2D_BODY_DYNAMIC && w->bodies[ga2d__find(w, s)].island_rest >= GA2D__R(0.5))
-            ga2d__put_to_sleep(w, s);
+    return 0;
+}
+
+static int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
+{
+    if (!(*th > max || *th < -max)) return 0;
+    *th = *th > 0 ? max : -max;
+    return 1;
+}
+
+/* The velocity cap and the largest turn per substep, as Box2D: beyond
+   them a body is tunnelling anyway; each capped body counts in
+   speed_caps.  Returns 0 for a velocity that is not finite. */
+static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
+{
+    if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) return 0;
+    w->counters.speed_caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
+    w->counters.speed_caps += ga2d__cap_turn(&b->w, GA2D__MAX_TURN / h);
+    return 1;
+}
+
+/* A dynamic body's velocities capped, or the body contained when they are
+   not finite. */
+static void ga2d__cap_body(ga2d__step_context *c, ga2d__body *b, int slot)
+{
+    if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(c->world, b, c->h)) ga2d__contain(c->world, slot);
+}
+
+/* Stage, over the moving bodies: caches the field's acceleration (Verlet). */
+static void ga2d__cache_field(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->field_accel = ga2d_vec_scale(b->field_force, b->inv_mass);
+        b->field_alpha = b->field_torque * b->inv_inertia;
+        b->field_valid = 1;
     }
 }
 
-/* =========================================================== world step */
+/* Half a kick with the cached field plus gravity and the user's forces. */
+static void ga2d__verlet_kick(ga2d_world *w, ga2d__body *b, ga2d_real half)
+{
+    ga2d_vec a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale),
+                              ga2d_vec_add(b->field_accel, ga2d_vec_scale(b->force, b->inv_mass)));
+    b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, half));
+    b->w += (b->field_alpha + b->torque * b->inv_inertia) * half;
+}
+
+/* Classic RK4 on (x, theta, v, w), theta the turn since the substep began
+   (rotations in the plane commute, so q = q0 exp(theta e12)); damping is
+   the continuous -c v.  The velocity phase leaves every body at its start
+   state with its free end velocity; the displacement waits in the
+   scratch.  Without a force callback no stage writes a trial state and
+   nothing is evaluated.  These four stages run over the moving bodies. */
+static void ga2d__rk4_begin(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    int k;
+    for (k = begin; k < end; ++k) {
+        const ga2d__body *b = &w->bodies[w->moving[k]];
+        memset(&s[k], 0, sizeof s[k]);
+        s[k].x0 = b->center;
+        s[k].q0 = b->q;
+        s[k].v0 = b->v;
+        s[k].w0 = b->w;
+    }
+}
+
+/* The trial state of the stage at rk4_at h, for the field to read. */
+static void ga2d__rk4_trial(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    ga2d_real at = c->rk4_at * c->h;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->center = ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].kx, at));
+        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, at));
+        b->w = s[k].w0 + s[k].kw * at;
+        b->q = s[k].kth * at != 0 ? ga2d__turn(s[k].q0, s[k].kth * at, w->def.rotation_update) : s[k].q0;
+    }
+}
+
+/* The stage's derivative, added to the weighted sum. */
+static void ga2d__rk4_derive(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    ga2d_real at = c->rk4_at * c->h, weight = c->rk4_weight;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d_vec v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, at));
+        ga2d_real om = s[k].w0 + s[k].kw * at;
+        s[k].kx = v;
+        s[k].kth = om;
+        if (b->type == GA2D_BODY_DYNAMIC) {
+            ga2d_vec a;
+            ga2d_real alpha;
+            ga2d__acceleration(w, b, &a, &alpha);
+            s[k].kv = ga2d_vec_sub(a, ga2d_vec_scale(v, b->linear_damping));
+            s[k].kw = alpha - b->angular_damping * om;
+        }
+        s[k].sx = ga2d_vec_add(s[k].sx, ga2d_vec_scale(s[k].kx, weight));
+        s[k].sv = ga2d_vec_add(s[k].sv, ga2d_vec_scale(s[k].kv, weight));
+        s[k].sth += s[k].kth * weight;
+        s[k].sw += s[k].kw * weight;
+    }
+}
+
+/* The free end velocities, capped, from the start state. */
+static void ga2d__rk4_end(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    ga2d_real h = c->h;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->center = s[k].x0;
+        b->q = s[k].q0;
+        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].sv, h / 6));
+        b->w = s[k].w0 + s[k].sw * (h / 6);
+        s[k].kv = b->v; /* the free end velocities, for the position phase */
+        s[k].kw = b->w;
+        ga2d__cap_body(c, b, w->moving[k]);
+    }
+}
+
+/* Stage, over the moving bodies: symplectic Euler's kick v += h a,
+   w += h alpha, then damping and the caps. */
+static void ga2d__kick(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d_real h = c->h;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d_vec a;
+        ga2d_real alpha;
+        if (b->type != GA2D_BODY_DYNAMIC) continue;
+        ga2d__acceleration(w, b, &a, &alpha);
+        b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, h));
+        b->w += alpha * h;
+        ga2d__damp(b, h);
+        ga2d__cap_body(c, b, w->moving[k]);
+    }
+}
+
+/* Stage, over the moving bodies: Verlet's opening half kick, capped. */
+static void ga2d__open_kick(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (b->type != GA2D_BODY_DYNAMIC) continue;
+        ga2d__verlet_kick(w, b, c->h / 2);
+        ga2d__cap_body(c, b, w->moving[k]);
+    }
+}
+
+/* Whether some moving body lacks its cached field (Verlet). */
+static int ga2d__field_stale(const ga2d_world *w)
+{
+    int k;
+    for (k = 0; k < w->moving_count; ++k)
+        if (!w->bodies[w->moving[k]].field_valid) return 1;
+    return 0;
+}
+
+/* The velocity phase of the world's integrator, at the substep's start. */
+static void ga2d__integrate_velocities(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int n = w->moving_count, stage;
+    if (w->def.integrator == GA2D_INTEGRATOR_RK4) {
+        static const ga2d_real at[4] = {0, GA2D__R(0.5), GA2D__R(0.5), 1};
+        static const ga2d_real weight[4] = {1, 2, 2, 1};
+        GA2D_ASSERT(c->rk4_capacity >= n);
+        ga2d__run(c, ga2d__rk4_begin, n);
+        for (stage = 0; stage < 4; ++stage) {
+            c->rk4_at = at[stage];
+            c->rk4_weight = weight[stage];
+            if (w->def.force_callback) {
+                ga2d__run(c, ga2d__rk4_trial, n);
+                ga2d__eval_field(w, c->t + (double)(at[stage] * c->h));
+            }
+            ga2d__run(c, ga2d__rk4_derive, n);
+        }
+        ga2d__run(c, ga2d__rk4_end, n);
+    } else if (w->def.integrator == GA2D_INTEGRATOR_VERLET) {
+        if (w->def.force_callback && ga2d__field_stale(w)) {
+            ga2d__eval_field(w, c->t);
+            ga2d__run(c, ga2d__cache_field, n);
+        }
+        ga2d__run(c, ga2d__open_kick, n);
+    } else {
+        ga2d__eval_field(w, c->t);
+        ga2d__run(c, ga2d__kick, n);
+    }
+}
+
+/* Stage, over the moving bodies: RK4's displacement plus h times what
+   the contacts changed, under the caps the velocities have (the stages'
+   own velocities are not capped). */
+static void ga2d__rk4_positions(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    ga2d_real h = c->h;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d_real th = s[k].sth * (h / 6) + (b->w - s[k].kw) * h;
+        ga2d_vec d;
+        b->center = ga2d_vec_add(ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].sx, h / 6)),
+                                 ga2d_vec_scale(ga2d_vec_sub(b->v, s[k].kv), h));
+        d = ga2d_vec_sub(b->center, s[k].x0);
+        if (ga2d__cap_length(&d, GA2D__MAX_SPEED * w->def.length_units_per_meter * h)) b->center = ga2d_vec_add(s[k].x0, d);
+        ga2d__cap_turn(&th, GA2D__MAX_TURN);
+        if (th != 0) {
+            b->q = ga2d__turn(s[k].q0, th, w->def.rotation_update);
+            ++w->counters.rotation_updates;
+        }
+        ++w->counters.integrated_bodies;
+        /* a body contained in the velocity phase still has its stages'
+           sums here: contain it again before the solver passes that
+           follow can spread its NaN through the contacts */
+        if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) ga2d__contain(w, w->moving[k]);
+    }
+}
+
+/* Stage, over the moving bodies: x += h v, q <- q exp(w h e12). */
+static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) ga2d__drift(w, &w->bodies[w->moving[k]], c->h);
+}
+
+/* Stage, over the moving bodies: Verlet's closing half kick and damping.
+   It is capped too: uncapped, a stiff field (a drag of k h / m >> 2) left
+   the step with any speed or turn, and the next step's contacts turned
+   that into NaN. */
+static void ga2d__close_kick(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (b->type != GA2D_BODY_DYNAMIC) continue;
+        ga2d__verlet_kick(w, b, c->h / 2);
+        ga2d__damp(b, c->h);
+        ga2d__cap_body(c, b, w->moving[k]);
+    }
+}
+
+/* The position phase of the world's integrator, ending the substep. */
+static void ga2d__integrate_positions(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int n = w->moving_count;
+    if (w->def.integrator == GA2D_INTEGRATOR_RK4) {
+        ga2d__run(c, ga2d__rk4_positions, n);
+        return;
+    }
+    ga2d__run(c, ga2d__drift_bodies, n);
+    if (w->def.integrator != GA2D_INTEGRATOR_VERLET) return;
+    if (w->def.force_callback) {
+        ga2d__eval_field(w, c->t + (double)c->h);
+        ga2d__run(c, ga2d__cache_field, n);
+    }
+    ga2d__run(c, ga2d__close_kick, n);
+}
+
+/* ------------------------------------------------------- collision stages */
+/* Stage, over the moving bodies: marks each whose fat box no longer holds
+   what it can reach in this step. */
+static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->refit = ga2d__needs_refit(w, b, &b->refit_box);
+    }
+}
+
+/* Book-keeping: the marked bodies' boxes move in the tree, in the moving
+   list's order (the tree's shape depends on it), and the bodies queue
+   for pair finding; then the queue is sorted, without destroyed bodies
+   and repeats (a slot destroyed and reused). */
+static void ga2d__refit_proxies(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, n;
+    for (k = 0; k < w->moving_count; ++k) {
+        int slot = w->moving[k];
+        ga2d__body *b = &w->bodies[slot];
+        if (!b->refit) continue;
+        b->refit = 0;
+        ga2d__tree_move(ga2d__tree_of(w, b), b->proxy, b->refit_box);
+        ga2d__buffer_move(w, slot);
+    }
+    if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
+    for (k = 0, n = 0; k < w->move_count; ++k) {
+        int slot = w->move_buf[k];
+        if (w->bodies[slot].type >= 0 && w->bodies[slot].in_move && (n == 0 || w->move_buf[n - 1] != slot))
+            w->move_buf[n++] = slot;
+    }
+    w->move_count = n;
+    w->new_pair_count = 0;
+}
+
+/* Stage, over the queued bodies: each queued body (moved out of its box,
+   created, teleported, refiltered) is queried against the moving tree
+   (and, if it moves, the static tree); the pairs it finds are listed. */
+static void ga2d__find_pairs(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        int slot = w->move_buf[k];
+        ga2d__pair_query q;
+        ga2d_aabb box = ga2d__fat_box(w, &w->bodies[slot]);
+        q.w = w;
+        q.self = slot;
+        ga2d__tree_query(&w->trees[1], box, ga2d__pair_found, &q);
+        if (w->bodies[slot].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
+    }
+}
+
+/* Book-keeping: the new pairs' contacts are created in key order, so the
+   result is a function of the world's state alone, and the queue empties. */
+static void ga2d__create_pairs(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, n;
+    if (w->new_pair_count > 1) qsort(w->new_pairs, (size_t)w->new_pair_count, sizeof *w->new_pairs, ga2d__cmp_u64);
+    for (k = 0, n = w->new_pair_count; k < n; ++k) {
+        uint64_t key = w->new_pairs[k];
+        if (k > 0 && w->new_pairs[k - 1] == key) continue;
+        if (!ga2d__create_contact(w, (int)(key >> 32), (int)(uint32_t)key)) c->error = GA2D_ERR_OUT_OF_MEMORY;
+    }
+    /* out of memory: some pairs were not made, so every queued body stays
+       queued and is searched again next step (pairs already made are kept) */
+    if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
+    for (k = 0; k < w->move_count; ++k) w->bodies[w->move_buf[k]].in_move = 0;
+    w->move_count = 0;
+}
+
+/* Stage, over the contact pool: each contact whose fat boxes still
+   overlap gets a new manifold (or its last one carried along,
+   ga2d__reuse_manifold), whose points take over the impulses of the old
+   points with the same id (warm starting).  What changes in the world
+   (events, destruction, waking) is left to ga2d__contact_changes. */
+static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int ci;
+    for (ci = begin; ci < end; ++ci) {
+        ga2d__contact *ct = &w->contacts[ci];
+        const ga2d__body *a, *b;
+        ga2d_transform xa, xb;
+        ga2d_manifold m;
+        int i, j, touching;
+        if (ct->next_free != -2) continue;
+        a = &w->bodies[ct->a];
+        b = &w->bodies[ct->b];
+        /* a pair with nothing awake that moves has nothing new to say */
+        if (!(a->awake && a->type != GA2D_BODY_STATIC) && !(b->awake && b->type != GA2D_BODY_STATIC)) continue;
+        if (!ga2d_aabb_overlaps(ga2d__fat_box(w, a), ga2d__fat_box(w, b))) {
+            ct->flags = GA2D__CONTACT_DISJOINT;
+            c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
+            continue;
+        }
+        xa = ga2d__body_xf(a);
+        xb = ga2d__body_xf(b);
+        if (ga2d__reuse_manifold(w, ct, a, b, xa, xb)) {
+            ++w->counters.manifolds_carried;
+        } else {
+            /* keep points as far apart as the pair can close in one step:
+               speculative points only let bodies approach up to the gap */
+            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->v, a->v)) + GA2D__FABS(a->w) * a->extent +
+                              GA2D__FABS(b->w) * b->extent;
+            ga2d__collide(&a->polygon, xa, &b->polygon, xb, w->slop, w->speculative + reach * c->dt, &m);
+            ga2d__hold_manifold(&ct->held, xa, xb, &m);
+            for (i = 0; i < m.count; ++i)
+                for (j = 0; j < ct->manifold.count; ++j)
+                    if (ct->manifold.points[j].id == m.points[i].id) {
+                        m.points[i].normal_impulse = ct->manifold.points[j].normal_impulse;
+                        m.points[i].tangent_impulse = ct->manifold.points[j].tangent_impulse;
+                        m.points[i].persisted = 1;
+                    }
+            touching = m.count > 0;
+            if (!touching && ct->touching) { /* the end is reported with the last touching manifold */
+                ct->flags |= GA2D__CONTACT_ENDED;
+                ct->end_normal = m.normal;
+            } else {
+                ct->manifold = m;
+            }
+            if (touching && !ct->touching) ct->flags |= GA2D__CONTACT_BEGAN;
+            ct->touching = touching;
+        }
+        if (ct->touching && (!a->awake || !b->awake)) ct->flags |= GA2D__CONTACT_WAKES;
+        if (ct->flags) c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
+    }
+}
+
+/* The next contact from ci on that the narrowphase flagged, or -1. */
+static int ga2d__next_changed(const ga2d__step_context *c, int ci, int used)
+{
+    for (; ci < used; ci = (ci | 63) + 1) {
+        uint64_t bits = c->changed[ci >> 6] >> (ci & 63);
+        if (bits) {
+            while (!(bits & 1)) {
+                bits >>= 1;
+                ++ci;
+            }
+            return ci;
+        }
+    }
+    return -1;
+}
+
+/* Book-keeping before the narrowphase: a clear bit for every pool contact.
+   Out of memory, the step reports it and keeps the last manifolds. */
+static int ga2d__reserve_changes(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int words = (w->contact_used + 63) / 64;
+    if (!ga2d__grow(&w->mem, (void **)&c->changed, &c->changed_capacity, words, sizeof *c->changed)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    if (words > 0) memset(c->changed, 0, (size_t)words * sizeof *c->changed);
+    w->counters.manifolds_carried = 0;
+    return 1;
+}
+
+/* Book-keeping, in pool order, of the contacts the narrowphase flagged:
+   touching begins and ends become events, a contact whose boxes parted is
+   destroyed, and a touch wakes a sleeping island once every contact is
+   updated (waking in the stage would let the pool's order decide which
+   contacts of the woken island are updated in this step). */
+static void ga2d__contact_changes(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int ci, used = w->contact_used, wakes = 0;
+    for (ci = ga2d__next_changed(c, 0, used); ci >= 0; ci = ga2d__next_changed(c, ci + 1, used)) {
+        ga2d__contact *ct = &w->contacts[ci];
+        int f = ct->flags;
+        if (f & GA2D__CONTACT_DISJOINT) {
+            ct->flags = 0;
+            if (ct->touching) ga2d__push_event(w, 1, ct);
+            ga2d__destroy_contact(w, ci);
+            continue;
+        }
+        if (f & GA2D__CONTACT_ENDED) {
+            ga2d__push_event(w, 1, ct);
+            memset(&ct->manifold, 0, sizeof ct->manifold); /* as ga2d__collide left it: no point */
+            ct->manifold.normal = ct->end_normal;
+            ct->end_normal = ga2d_vec_make(0, 0);
+        }
+        if (f & GA2D__CONTACT_BEGAN) ga2d__push_event(w, 0, ct);
+        ct->flags = f & GA2D__CONTACT_WAKES;
+        wakes += ct->flags != 0;
+    }
+    for (ci = ga2d__next_changed(c, 0, used); ci >= 0 && wakes > 0; ci = ga2d__next_changed(c, ci + 1, used)) {
+        ga2d__contact *ct = &w->contacts[ci];
+        if (ct->next_free != -2 || !ct->flags) continue;
+        ct->flags = 0;
+        --wakes;
+        ga2d__wake(w, ct->a);
+        ga2d__wake(w, ct->b);
+    }
+}
+
 /* ------------------------------------------------------ the substep plan */
 /* A stage run once per substep (or `repeat` times in a row), over the
    whole of its kind. */
@@ -6097,6 +5960,134 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     w->lock = 0;
     ga2d__leave(w); /* destroyed from the force callback or an allocator hook: gone now */
     return r;
+}
+
+/* ================================================================ sleep */
+/* Wakes a sleeping body and, through the touching contacts that sleeping
+   bodies keep, its whole island. */
+static void ga2d__wake(ga2d_world *w, int slot)
+{
+    int head = 0, tail = 0;
+    ga2d__body *b = &w->bodies[slot];
+    if (b->awake || b->type != GA2D_BODY_DYNAMIC) {
+        b->sleep_time = 0;
+        return;
+    }
+    /* the island's bodies are queued in the move buffer's spare room:
+       its capacity covers every body slot */
+    b->awake = 1;
+    w->wake_queue[tail++] = slot;
+    while (head < tail) {
+        int s = w->wake_queue[head++], link;
+        ga2d__body *x = &w->bodies[s];
+        x->sleep_time = 0;
+        ga2d__moving_add(w, s);
+        x->field_valid = 0;
+        for (link = ga2d__first_edge(w, s); link >= 0; link = ga2d__next_edge(w, link)) {
+            const ga2d__contact *ct = &w->contacts[link >> 1];
+            int other = ga2d__edge_other(w, link);
+            ga2d__body *o = &w->bodies[other];
+            if (!ct->touching || o->awake || o->type != GA2D_BODY_DYNAMIC) continue;
+            o->awake = 1;
+            w->wake_queue[tail++] = other;
+        }
+    }
+}
+
+static void ga2d__put_to_sleep(ga2d_world *w, int slot)
+{
+    ga2d__body *b = &w->bodies[slot];
+    b->awake = 0;
+    b->v = ga2d_vec_make(0, 0);
+    b->w = 0;
+    /* its pose now is its start pose for as long as it sleeps: a body
+       that touches it must see no motion of it */
+    b->center0 = b->center;
+    b->q0 = b->q;
+    b->dq = ga2d_rotor_identity();
+    b->force = ga2d_vec_make(0, 0);
+    b->torque = 0;
+    ga2d__moving_remove(w, slot);
+}
+
+static int ga2d__find(ga2d_world *w, int s)
+{
+    while (w->bodies[s].island != s) {
+        w->bodies[s].island = w->bodies[w->bodies[s].island].island; /* path halving */
+        s = w->bodies[s].island;
+    }
+    return s;
+}
+
+/* A contact overlapped deeper than this (in slops: the speculative
+   distance) keeps its bodies awake: the solver pushes overlap out over
+   several steps, and the relax pass takes the push-out speed out of v, so
+   a body still being pushed out looks at rest.  Resting contacts settle
+   within one slop (the soft contact's target); a 100:1 plank on two boxes
+   settles 1.6 slops deep and sleeps, a 200:1 one 3.2 slops deep sleeps
+   too, a 300:1 one (6.8 slops) stays awake, still being pushed. */
+#define GA2D__SLEEP_MAX_OVERLAP 4
+
+/* Islands of awake dynamic bodies joined by touching contacts (static and
+   kinematic bodies do not join them).  A body rests while max(|v|,
+   extent |w|) stays under 5 cm/s (in metres) and none of its contacts is
+   overlapped by more than GA2D__SLEEP_MAX_OVERLAP slops; an island whose
+   every body has rested for 0.5 s falls asleep and costs nothing until
+   woken.  Book-keeping: it puts bodies to sleep. */
+static void ga2d__update_sleep(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    ga2d_real dt = c->dt;
+    ga2d_real tol = GA2D__R(0.05) * w->def.length_units_per_meter;
+    int k, i, islands = 0;
+    for (k = 0; k < w->moving_count; ++k) {
+        int s = w->moving[k];
+        ga2d__body *b = &w->bodies[s];
+        ga2d_real speed2 = ga2d_dot(b->v, b->v), spin = b->extent * b->w;
+        b->island = s;
+        if (b->type != GA2D_BODY_DYNAMIC) continue;
+        if (speed2 > tol * tol || spin * spin > tol * tol) b->sleep_time = 0;
+        else b->sleep_time += dt;
+    }
+    for (i = 0; i < c->constraint_count; ++i) {
+        const ga2d__constraint *cc = &c->constraints[i];
+        for (k = 0; k < cc->count; ++k)
+            if (cc->p[k].separation < -GA2D__SLEEP_MAX_OVERLAP * w->slop) {
+                w->bodies[cc->a].sleep_time = 0; /* static ones never sleep: harmless */
+                w->bodies[cc->b].sleep_time = 0;
+            }
+    }
+    for (i = 0; i < c->constraint_count; ++i) {
+        const ga2d__constraint *cc = &c->constraints[i];
+        const ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
+        int ra, rb;
+        if (a->type != GA2D_BODY_DYNAMIC || b->type != GA2D_BODY_DYNAMIC || !a->awake || !b->awake) continue;
+        ra = ga2d__find(w, cc->a);
+        rb = ga2d__find(w, cc->b);
+        if (ra != rb) w->bodies[ra > rb ? ra : rb].island = ra < rb ? ra : rb;
+    }
+    /* each root takes its island's shortest rest (a root is its own parent,
+       and a kinematic body in the list is a root nothing joins) */
+    for (k = 0; k < w->moving_count; ++k) {
+        int s = w->moving[k];
+        if (w->bodies[s].type == GA2D_BODY_DYNAMIC && ga2d__find(w, s) == s) {
+            w->bodies[s].island_rest = w->bodies[s].sleep_time;
+            ++islands;
+        }
+    }
+    for (k = 0; k < w->moving_count; ++k) {
+        int s = w->moving[k], r;
+        if (w->bodies[s].type != GA2D_BODY_DYNAMIC) continue;
+        r = ga2d__find(w, s);
+        if (w->bodies[s].sleep_time < w->bodies[r].island_rest) w->bodies[r].island_rest = w->bodies[s].sleep_time;
+    }
+    w->counters.island_count = islands;
+    /* moving_remove swaps the last entry in: walk down */
+    for (k = w->moving_count - 1; k >= 0; --k) {
+        int s = w->moving[k];
+        if (w->bodies[s].type == GA2D_BODY_DYNAMIC && w->bodies[ga2d__find(w, s)].island_rest >= GA2D__R(0.5))
+            ga2d__put_to_sleep(w, s);
+    }
 }
 
 /* ============================================================= snapshots */
@@ -6333,7 +6324,7 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
         !ga2d__grow(&t->mem, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving))
         return -1;
     if (t->def.integrator == GA2D_INTEGRATOR_RK4 &&
-        !ga2d__grow(&t->mem, (void **)&t->step.rk4, &t->step.rk4_capacity, t->moving_capacity, sizeof *t->step.rk4))
+        !ga2d__reserve_rk4(t, t->moving_capacity))
         return -1;
     ga2d__get(r, t->bodies, (size_t)used * sizeof *t->bodies);
     t->body_used = used;
@@ -6560,6 +6551,65 @@ static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
 }
 #endif
 #endif /* GA2D_IMPLEMENTATION */
+
+/*
+------------------------------------------------------------------------------
+VERSION HISTORY (newest first)
+------------------------------------------------------------------------------
+   0.8.2  a def zero-initialised by hand is the defaults, switches
+          included (its enable_* fields read 0 as off, and friction, sleep,
+          warm starting and restitution vanished); the default functions
+          stamp internal_cookie, so their defs keep every zero as set;
+          the defaults are named constants (GA2D_DEFAULT_*) resolved in
+          one function per def; snapshot version 5; the |g| h^2 bound is
+          measured scaled (it overflowed at huge length units);
+          inside, the step reads as a list of stages over ranges of
+          bodies, contacts, constraints and lane groups, its per-step state
+          in one step context, and stages that compute leave creation,
+          destruction, events and waking to the book-keeping after them
+          (bit-identical results).
+   0.8.1  hostile input: user code run from the force callback, the debug
+          draw or the allocator hooks finds the world locked, and a world
+          destroyed from it goes when the library call returns; fat boxes
+          hold all a body can reach in the step (fast bodies passed thin
+          walls every other step); a contact deeper than the speculative
+          distance keeps its island awake; the incident edge is chosen to
+          full precision (a thin arc rocked and sank in float); ids carry
+          their world's tag; bounds on coordinates, the step and gravity
+          (TOO_LARGE); counters.speed_caps; ga2d_world_compact; the margin
+          of a small body's fat box scales with it; lane groups grow as
+          they open (a pile of 0.2 m boxes: 5.5 KB a body, from 9.6);
+          snapshot version 4;
+          the re-entry fuzz harness's findings: restitution writes no
+          static body (a blown-up body made the ground NaN), the force
+          field never reads a non-finite state, RK4's displacement keeps
+          the speed caps, the error body is the lowest slot contained.
+   0.8.0  a touching pair that moved by under half a slop keeps its
+          manifold, carried along with the bodies (no separating-axis
+          search); solver bodies load into the lanes as whole rows; the
+          hull is wrapped as monotone chains (a cloud whose features were
+          near the tolerance could leave a point outside); snapshot
+          version 3; counters.manifolds_carried; the lane groups'
+          impulses go straight back to the manifolds.
+   0.7.0  a manifold's two normal points are solved together (a 2x2
+          complementarity block) instead of one after the other: stacks
+          no longer lean the way the points are ordered.
+   0.6.0  the velocity passes run on groups of constraints with no moved
+          body in common, a SIMD lane each (4 floats or 2 doubles; 8 or 4
+          under AVX), in the same Gauss-Seidel order and with the same bits
+          as one constraint at a time; snapshot version 2.
+   0.5.0  determinism (canonical solver order, same bits across compilers,
+          -O levels and C/C++), world snapshots for rollback, containment
+          of bodies driven non-finite (ga2d_world_error_body); bounces at
+          the defaults reach e^(2n) h0.
+   0.4.0  contact solver: soft step, PGS + Baumgarte, PGS + NGS; friction;
+          restitution as a collision phase; warm starting; sleep.
+   0.3.0  SAT narrowphase, dynamic AABB tree broadphase, contacts, events,
+          filtering.
+   0.2.0  world and bodies; symplectic Euler, Verlet and RK4 integrators;
+          exact and first-order rotor updates; force callback; counters.
+   0.1.0  algebra, polygons, hull, exact mass properties.
+*/
 
 /*
 ------------------------------------------------------------------------------
