@@ -1,11 +1,11 @@
-/* ga2d_physics.h - v0.8.1 - 2D rigid-body physics of convex polygons,
+/* ga2d_physics.h - v0.8.2 - 2D rigid-body physics of convex polygons,
    written in the geometric algebra of the plane.   MIT / public domain.
 
    ==========================================================================
    WHAT IT IS
    ==========================================================================
    One header, C99 (compiles unchanged as C++11), libc and libm only.
-   This first slice holds the foundation everything else stands on:
+   What it holds:
 
      - the geometric algebra G(2,0) of the plane: vectors, bivectors, full
        multivectors with geometric / outer / inner products, and rotors;
@@ -221,7 +221,7 @@
 
    Knobs: substeps; solver kind; contact_hertz; the switches for warm
    starting, friction, restitution and sleep; ga2d_accurate_world_def()
-   (8 substeps, 90 Hz) for tighter stacks at about 1.8x the cost.
+   (8 substeps, 90 Hz) for tighter stacks at about 1.7x the cost.
 
    Sleep: islands of touching dynamic bodies whose points all move under
    5 cm/s for 0.5 s sleep together: they leave the step (no integration, no
@@ -239,7 +239,7 @@
    Bounds: coordinates within GA2D_MAX_COORDINATE; a step of at most
    GA2D_MAX_TIME_STEP whose substep h keeps |g| h^2 within a linear slop;
    |g| within GA2D_MAX_GRAVITY.  Beyond them: GA2D_ERR_TOO_LARGE.  A body
-   driven past 400 m/s (or a quarter turn per substep) is capped, and
+   driven past 400 m/s (or an eighth of a turn per substep) is capped, and
    counters.speed_caps counts it: a program that sees it nonzero after a
    step knows something in the scene is blowing up.
 
@@ -267,55 +267,7 @@
    Other worlds are unaffected: creating or stepping a second world from a
    callback is fine.
 
-   ==========================================================================
-   VERSION HISTORY
-   ==========================================================================
-   0.8.1  hostile input: user code run from the force callback, the debug
-          draw or the allocator hooks finds the world locked, and a world
-          destroyed from it goes when the library call returns; fat boxes
-          hold all a body can reach in the step (fast bodies passed thin
-          walls every other step); a contact deeper than the speculative
-          distance keeps its island awake; the incident edge is chosen to
-          full precision (a thin arc rocked and sank in float); ids carry
-          their world's tag; bounds on coordinates, the step and gravity
-          (TOO_LARGE); counters.speed_caps; ga2d_world_compact; the margin
-          of a small body's fat box scales with it; snapshot version 4;
-          the re-entry fuzz harness's findings: restitution writes no
-          static body (a blown-up body made the ground NaN), the force
-          field never reads a non-finite state, RK4's displacement keeps
-          the speed caps, the error body is the lowest slot contained.
-   0.8.2  a def zero-initialised by hand is the defaults, switches
-          included (its enable_* fields read 0 as off, and friction, sleep,
-          warm starting and restitution vanished); the default functions
-          stamp internal_cookie, so their defs keep every zero as set;
-          the defaults are named constants (GA2D_DEFAULT_*) resolved in
-          one function per def; snapshot version 5.
-   0.8.0  a touching pair that moved by under half a slop keeps its
-          manifold, carried along with the bodies (no separating-axis
-          search); solver bodies load into the lanes as whole rows; the
-          hull is wrapped as monotone chains (a cloud whose features were
-          near the tolerance could leave a point outside); snapshot
-          version 3; counters.manifolds_carried.
-   0.7.0  a manifold's two normal points are solved together (a 2x2
-          complementarity block) instead of one after the other: stacks
-          no longer lean the way the points are ordered.
-   0.6.0  the velocity passes run on groups of constraints with no moved
-          body in common, a SIMD lane each (4 floats or 2 doubles; 8 or 4
-          under AVX), in the same Gauss-Seidel order and with the same bits
-          as one constraint at a time; snapshot version 2.
-   0.5.0  determinism (canonical solver order, same bits across compilers,
-          -O levels and C/C++), world snapshots for rollback, containment
-          of bodies driven non-finite (ga2d_world_error_body); bounces at
-          the defaults reach e^(2n) h0.
-   0.4.0  contact solver: soft step, PGS + Baumgarte, PGS + NGS; friction;
-          restitution as a collision phase; warm starting; sleep.
-   0.3.0  SAT narrowphase, dynamic AABB tree broadphase, contacts, events,
-          filtering.
-   0.2.0  world and bodies; symplectic Euler, Verlet and RK4 integrators;
-          exact and first-order rotor updates; force callback; counters.
-   0.1.0  algebra, polygons, hull, exact mass properties.
-
-   The license is at the end of this file.
+   The version history and the license are at the end of this file.
 */
 #ifndef GA2D_PHYSICS_H
 #define GA2D_PHYSICS_H
@@ -376,7 +328,7 @@ typedef enum ga2d_result {
     GA2D_ERR_NOT_INVERTIBLE,    /* a multivector with no inverse            */
     GA2D_ERR_OUT_OF_MEMORY,
     GA2D_ERR_STALE_ID,          /* a destroyed, reused or forged body id  */
-    GA2D_ERR_LOCKED,            /* the world is stepping (force callback) */
+    GA2D_ERR_LOCKED,            /* called from a callback of this world's (force, draw, allocator) */
     GA2D_ERR_BAD_SNAPSHOT,      /* truncated, corrupted, another version or
                                    another build's snapshot                 */
     GA2D_ERR_BUFFER_TOO_SMALL,  /* the snapshot does not fit the buffer     */
@@ -581,7 +533,7 @@ typedef enum ga2d_rotation_update {
     GA2D_ROTATION_COUNT
 } ga2d_rotation_update;
 
-/* How contacts are solved (DESIGN 6).  Each substep integrates velocities,
+/* How contacts are solved.  Each substep integrates velocities,
    solves the contacts, integrates positions; the kinds differ in how they
    remove overlap:
      SOFT_STEP      soft contacts (a spring-damper of contact_hertz and
@@ -805,7 +757,7 @@ GA2D_API ga2d_result ga2d_world_enable_friction(ga2d_world *w, int on);
 GA2D_API ga2d_result ga2d_world_enable_restitution(ga2d_world *w, int on);
 /* The documented accurate setting: 8 substeps and 90 Hz contacts (twice
    the substeps, and contacts twice as stiff, which a doubled substep rate
-   allows).  A 10-box stack sinks 4 mm instead of 15, at about 1.8 times
+   allows).  A 10-box stack sinks 4 mm instead of 15, at about 1.7 times
    the cost per step. */
 GA2D_API ga2d_world_def ga2d_accurate_world_def(void);
 
@@ -854,7 +806,11 @@ GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id);
 GA2D_API int ga2d_body_is_awake(const ga2d_world *w, ga2d_body_id id);
 GA2D_API ga2d_result ga2d_body_set_awake(ga2d_world *w, ga2d_body_id id, int awake);
 
-/* Getters: for an invalid id they return zero (identity for rotors). */
+/* Getters: for an invalid id they return zero (identity for rotors).
+   Names: a property reads as its noun (ga2d_body_position,
+   ga2d_world_gravity); get_ marks a call that fills the caller's array
+   (ga2d_world_get_contacts) or whose noun is a type's name already
+   (ga2d_body_get_type, ga2d_world_get_counters). */
 GA2D_API ga2d_body_type ga2d_body_get_type(const ga2d_world *w, ga2d_body_id id);
 GA2D_API ga2d_vec ga2d_body_position(const ga2d_world *w, ga2d_body_id id); /* origin */
 GA2D_API ga2d_rotor ga2d_body_rotor(const ga2d_world *w, ga2d_body_id id);
@@ -1084,6 +1040,7 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
 extern "C" {
 #endif
 
+/* ================================================================ algebra */
 /* ---------------------------------------------------------------- results */
 GA2D_API const char *ga2d_result_string(ga2d_result r)
 {
@@ -1338,6 +1295,68 @@ GA2D_API ga2d_transform ga2d_transform_inv_mul(ga2d_transform a, ga2d_transform 
     return ga2d_transform_make(ga2d_transform_apply_inv(a, b.p), ga2d_rotor_mul(ga2d_rotor_inverse(a.q), b.q));
 }
 
+/* ------------------------------------------------------------------ turns */
+/* exp(a e12) = cos a + sin a e12, without libm so that a step gives the
+   same bits on every platform.  |a| <= pi/4 (the usual turn per substep)
+   goes straight to the series; larger a is first reduced by k quarter
+   turns (Cody-Waite: pi/2 in two parts), and e12^k is exact:
+   (c, s) -> (-s, c).  The series (Horner, reciprocal factorials) stop where
+   the next term at pi/4 is below half an ulp: r^9 / r^10 in float,
+   r^17 / r^18 in double. */
+static ga2d_rotor ga2d__exp_e12(ga2d_real a)
+{
+#ifdef GA2D_DOUBLE
+    const ga2d_real pio2_hi = 1.5707963267341256, pio2_lo = 6.077100506506192e-11; /* hi: 33 bits */
+#else
+    const ga2d_real pio2_hi = 1.5707963705062866f, pio2_lo = -4.371139000186243e-08f; /* float pi/2 and the rest */
+#endif
+    ga2d_real r = a, r2, c, s, t;
+    long quarter = 0;
+    if (!(GA2D__FABS(a) <= GA2D__R(0.78539816339744831))) {
+        ga2d_real k;
+        if (!ga2d__finite(a)) return ga2d__rotor(a - a, a - a); /* NaN: the step reports it */
+        if (GA2D__FABS(a) > GA2D__R(1e6)) a = (ga2d_real)fmod((double)a, 6.283185307179586); /* exact */
+        k = (ga2d_real)floor((double)(a * GA2D__R(0.63661977236758134) + GA2D__R(0.5)));
+        r = (a - k * pio2_hi) - k * pio2_lo;
+        quarter = (long)k & 3;
+    }
+    r2 = r * r;
+#ifdef GA2D_DOUBLE
+    c = 1 + r2 * (-1.0 / 2 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800 +
+        r2 * (1.0 / 479001600 + r2 * (-1.0 / 87178291200.0 + r2 * (1.0 / 20922789888000.0))))))));
+    s = r * (1 + r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880 + r2 * (-1.0 / 39916800 +
+        r2 * (1.0 / 6227020800.0 + r2 * (-1.0 / 1307674368000.0 + r2 * (1.0 / 355687428096000.0)))))))));
+#else
+    c = 1 + r2 * (-1.0f / 2 + r2 * (1.0f / 24 + r2 * (-1.0f / 720 + r2 * (1.0f / 40320))));
+    s = r * (1 + r2 * (-1.0f / 6 + r2 * (1.0f / 120 + r2 * (-1.0f / 5040 + r2 * (1.0f / 362880)))));
+#endif
+    for (; quarter > 0; --quarter) { t = c; c = -s; s = t; }
+    return ga2d__rotor(c, s);
+}
+
+/* q turned by `angle`: exactly, q exp(angle e12) followed by one Newton
+   step toward |q| = 1 (r (3 - |r|^2)/2 takes a norm of 1 + d to 1 + O(d^2),
+   so rounding never accumulates); or to first order, q (1 + angle e12)
+   renormalized, which turns by atan(angle) instead of angle. */
+static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update mode)
+{
+    ga2d_rotor r;
+    ga2d_real k;
+    if (mode == GA2D_ROTATION_LINEAR) {
+        r = ga2d__rotor(q.c - angle * q.s, q.s + angle * q.c);
+        k = 1 / GA2D__SQRT(r.c * r.c + r.s * r.s);
+        /* a turn so large that |r|^2 overflows (an NGS fix or RK4 stage on
+           a body of tiny inertia) gave k = 0, the zero rotor: measure it
+           scaled instead (NaN still passes through, for the step to see) */
+        if (k == 0 && ga2d__finite(r.c) && ga2d__finite(r.s)) return ga2d_rotor_normalize(r);
+    } else {
+        r = ga2d_rotor_mul(q, ga2d__exp_e12(angle));
+        k = (3 - (r.c * r.c + r.s * r.s)) / 2;
+    }
+    return ga2d__rotor(r.c * k, r.s * k);
+}
+
+/* =============================================================== geometry */
 /* --------------------------------------------------------------- polygons */
 /* Relative tolerances of polygon validation.  Rounding in a wedge of two
    edges of length <= L is a few eps L^2, so 64 eps L is the smallest gap
@@ -2292,7 +2311,7 @@ GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, con
     return ga2d_collide_polygons_scaled(a, xa, b, xb, 1, out);
 }
 
-/* ============================================================== contacts */
+/* ======================================================== world and bodies */
 /* A touching manifold as ga2d__collide last made it, in A's frame, for
    ga2d__reuse_manifold: B's placement in that frame then (xa^-1 xb), the
    normal, each point (midway between the surfaces) and its separation.
@@ -2312,11 +2331,19 @@ typedef struct ga2d__contact {
     ga2d_manifold manifold;
     ga2d_real friction, restitution;
     int touching;
-    int wakes;               /* touched a sleeping body in this update */
+    int flags;               /* GA2D__CONTACT_*: what the narrowphase found, until book-kept */
+    ga2d_vec end_normal;     /* an ended touch's new normal, while its end is reported */
     ga2d__held held;         /* the manifold in A's frame, while touching */
     int next_free;           /* -2 while in use */
     uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
 } ga2d__contact;
+
+/* What the narrowphase stage found of a contact, for the book-keeping
+   after it (ga2d__contact.flags; zero between steps). */
+#define GA2D__CONTACT_DISJOINT 1 /* the fat boxes parted: destroy it */
+#define GA2D__CONTACT_BEGAN 2    /* began touching */
+#define GA2D__CONTACT_ENDED 4    /* stopped touching: its last touching manifold kept for the event */
+#define GA2D__CONTACT_WAKES 8    /* touches a sleeping body */
 
 static uint64_t ga2d__pair_key(int a, int b) { return ((uint64_t)(uint32_t)a << 32) | (uint32_t)b; }
 
@@ -2330,174 +2357,6 @@ static uint32_t ga2d__hash(uint64_t k)
     return (uint32_t)k;
 }
 
-/* A contact point as the solver sees it: anchors from each body's centre
-   of mass (world orientation, fixed for the step), the effective masses,
-   and the accumulated impulses. */
-typedef struct ga2d__cpoint {
-    ga2d_vec ra, rb;
-    ga2d_real separation;        /* at the step's start */
-    ga2d_real normal_mass, tangent_mass;
-    ga2d_real normal_impulse, tangent_impulse;
-    ga2d_real restitution_impulse; /* what the collision phase gave it */
-} ga2d__cpoint;
-
-typedef struct ga2d__constraint {
-    int contact, a, b;           /* pool index, body slots */
-    ga2d_vec normal;
-    ga2d_real friction, restitution;
-    ga2d_real inv_ma, inv_ia, inv_mb, inv_ib;
-    int to_static;               /* the other body cannot move: stiffer */
-    int count;
-    int lane;                    /* group * GA2D__LANES + lane in the lane solver */
-    ga2d__cpoint p[2];
-} ga2d__constraint;
-
-/* The solver's innermost helpers run hundreds of thousands of times a
-   step; inlined into its passes they cost 10 % less (large_pyramid). */
-#if defined(__GNUC__) || defined(__clang__)
-#define GA2D__HOT inline __attribute__((always_inline))
-#elif defined(_MSC_VER)
-#define GA2D__HOT __forceinline
-#else
-#define GA2D__HOT inline
-#endif
-
-/* ------------------------------------------------------ the lane solver */
-/* The velocity passes (warm start, solve, relax) run on groups of
-   constraints that share no body they move, one constraint per lane, so
-   each pass is GA2D__LANES independent sequential-impulse updates at once.  A
-   group is solved as a whole and the groups one after the other: still
-   Gauss-Seidel, in an order close to the canonical one.  Under gcc and
-   clang a lane set is a vector of the compiler's (SSE2 on x86-64, NEON on
-   arm64); elsewhere, or with GA2D_NO_SIMD, a struct of lanes.  Each lane
-   computes exactly what the scalar code would, operation for operation, so
-   both give the same bits (the determinism check builds both). */
-/* 16 bytes, the width every 64-bit target has; 32 where the compiler is
-   told of AVX (-mavx2, -march=native).  The width changes no bit of the
-   results: constraints that share no moved body commute exactly, and the
-   groups keep every body's own constraints in order. */
-#if defined(__AVX__) && !defined(GA2D_NO_SIMD)
-#define GA2D__BYTES 32
-#else
-#define GA2D__BYTES 16
-#endif
-#ifdef GA2D_DOUBLE
-#define GA2D__LANES (GA2D__BYTES / 8)
-#else
-#define GA2D__LANES (GA2D__BYTES / 4)
-#endif
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(GA2D_NO_SIMD)
-/* aligned to one element, as a user's allocator owes no more */
-#ifdef GA2D_DOUBLE
-typedef double ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(8)));
-typedef int64_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(8)));
-#else
-typedef float ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(4)));
-typedef int32_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(4)));
-#endif
-#define GA2D__LANE(x, i) (x)[i]
-#define GA2D__WINIT(...) {__VA_ARGS__}
-static GA2D__HOT ga2d__w ga2d__wadd(ga2d__w a, ga2d__w b) { return a + b; }
-static GA2D__HOT ga2d__w ga2d__wsub(ga2d__w a, ga2d__w b) { return a - b; }
-static GA2D__HOT ga2d__w ga2d__wmul(ga2d__w a, ga2d__w b) { return a * b; }
-static GA2D__HOT ga2d__w ga2d__wdiv(ga2d__w a, ga2d__w b) { return a / b; }
-static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a > b); }
-static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a >= b); }
-static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b) { return a & b; }
-/* m ? a : b, lane by lane (m all ones or all zeros) */
-static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
-{
-    return (ga2d__w)((m & (ga2d__wmask)a) | (~m & (ga2d__wmask)b));
-}
-#else
-typedef struct ga2d__w { ga2d_real lane[GA2D__LANES]; } ga2d__w;
-typedef struct ga2d__wmask { int lane[GA2D__LANES]; } ga2d__wmask;
-#define GA2D__LANE(x, i) (x).lane[i]
-#define GA2D__WINIT(...) {{__VA_ARGS__}}
-#define GA2D__WOP(name, op)                                                                                            \
-    static GA2D__HOT ga2d__w name(ga2d__w a, ga2d__w b)                                                               \
-    {                                                                                                                  \
-        int i;                                                                                                         \
-        for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] op b.lane[i];                                                   \
-        return a;                                                                                                      \
-    }
-GA2D__WOP(ga2d__wadd, +)
-GA2D__WOP(ga2d__wsub, -)
-GA2D__WOP(ga2d__wmul, *)
-GA2D__WOP(ga2d__wdiv, /)
-#undef GA2D__WOP
-static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b)
-{
-    ga2d__wmask m;
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] > b.lane[i];
-    return m;
-}
-static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b)
-{
-    ga2d__wmask m;
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] >= b.lane[i];
-    return m;
-}
-static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b)
-{
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] && b.lane[i];
-    return a;
-}
-static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
-{
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = m.lane[i] ? a.lane[i] : b.lane[i];
-    return a;
-}
-#endif
-
-static GA2D__HOT ga2d__w ga2d__wsplat(ga2d_real x)
-{
-    ga2d__w r;
-    int i;
-    for (i = 0; i < GA2D__LANES; ++i) GA2D__LANE(r, i) = x;
-    return r;
-}
-
-/* a x + b y: the dot product of the lanes' vectors (a, b) and (x, y) */
-static GA2D__HOT ga2d__w ga2d__wdot(ga2d__w a, ga2d__w b, ga2d__w x, ga2d__w y)
-{
-    return ga2d__wadd(ga2d__wmul(a, x), ga2d__wmul(b, y));
-}
-
-/* A body as the passes see it: velocity, spin, and its motion since the
-   step began (displacement dp, turn dq = q q0~).  Bodies that do not move
-   keep v, w and a zero motion; one slot past the last body is a dummy for
-   empty lanes.  Eight reals, so that the lanes' bodies load as whole rows
-   and are transposed in registers (ga2d__wload). */
-typedef struct ga2d__sbody {
-    ga2d_real vx, vy, w, pad, dpx, dpy, dqc, dqs;
-} ga2d__sbody;
-
-/* GA2D__LANES constraints, lane by lane: the bodies (the dummy slot in an empty
-   lane), which of them the lane moves, its constraint's index, and the
-   constraint's data.  A one-point contact's second point and an empty lane
-   have zero masses, so their impulses stay zero. */
-typedef struct ga2d__group {
-    int a[GA2D__LANES], b[GA2D__LANES], con[GA2D__LANES];
-    int contact[GA2D__LANES];   /* the constraint's contact (pool index) */
-    ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
-    int count;              /* lanes in use */
-    int skip;               /* when full: a later group to look at first */
-    ga2d__w nx, ny, friction, ima, iia, imb, iib;
-    ga2d__w dx, dy;         /* centre B - centre A when the step began */
-    ga2d__w soft_rate, soft_mass, soft_impulse;
-    ga2d__w rax[2], ray[2], rbx[2], rby[2];
-    ga2d__w adjust[2];      /* start separation - (d0 + rB - rA).n */
-    ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
-    ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
-    ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
-} ga2d__group;
-
-/* ======================================================== world and bodies */
 /* A body slot.  State is kept at the centre of mass (position `center`,
    orientation `q`, velocity `v`, angular velocity `w` of Omega = w e12);
    the origin that users see is center - local_center q. */
@@ -2530,6 +2389,8 @@ typedef struct ga2d__body {
     ga2d_filter filter;
     int proxy;                   /* leaf in trees[type != static] */
     int in_move;                 /* queued for pair finding */
+    int refit;                   /* its fat box must move to refit_box (between two stages of a step) */
+    ga2d_aabb refit_box;
     int contact_head;            /* first (oldest) link of its contact list, or -1 */
     int contact_tail;            /* last (newest) link, or -1 */
     ga2d_real extent;            /* farthest vertex from the centre */
@@ -2541,13 +2402,57 @@ typedef struct ga2d__body {
     void *user_data;
 } ga2d__body;
 
-/* RK4's per-body scratch for one substep: the start state, the derivative
-   of the last stage and the weighted sum of the stages. */
-typedef struct ga2d__rk4 {
-    ga2d_vec x0, v0, kx, kv, sx, sv;
-    ga2d_rotor q0;
-    ga2d_real w0, kth, kw, sth, sw;
-} ga2d__rk4;
+/* The solver's types, defined with the solver; the step context holds
+   them by pointer. */
+typedef struct ga2d__constraint ga2d__constraint;
+typedef struct ga2d__group ga2d__group;
+typedef struct ga2d__sbody ga2d__sbody;
+typedef struct ga2d__rk4 ga2d__rk4;
+
+/* A soft constraint: a spring of `hertz` and damping ratio `zeta` seen by
+   an implicit step of h, as a bias rate and the scales of mass and of the
+   accumulated impulse (Catto's soft step). */
+typedef struct ga2d__soft { ga2d_real bias_rate, mass_scale, impulse_scale; } ga2d__soft;
+
+/* What a step computes and throws away, apart from the world's lasting
+   state: the step's times, the contact softness, what it will report, and
+   the solver's arrays (kept between steps only to reuse their memory).
+   Every stage reads and writes the world through it. */
+typedef struct ga2d__step_context {
+    ga2d_world *world;
+    ga2d_real dt;                /* this step's dt (the last one's between steps) */
+    ga2d_real h, inv_h;          /* the substep and its inverse */
+    double t0, t;                /* world time at the step's and the substep's start */
+    ga2d__soft soft, stiff;      /* contacts between moving bodies, and against a fixed one */
+    ga2d_result error;           /* what the step will report */
+    int error_slot;              /* the lowest slot it contained, or -1 */
+    ga2d__constraint *constraints; /* the touching contacts, in canonical order */
+    int constraint_count, constraint_capacity;
+    ga2d__group *groups;         /* the lane solver's, live during the substeps */
+    int group_count, group_capacity;
+    ga2d__sbody *sbodies;        /* its body state, by slot (one dummy past the end) */
+    int sbody_capacity;
+    int *last_group;             /* by slot: the last group that moves the body */
+    int last_group_capacity;
+    ga2d__rk4 *rk4;              /* RK4's scratch, one per moving body's capacity */
+    int rk4_capacity;
+    uint64_t *changed;           /* a bit per pool contact the narrowphase flagged */
+    int changed_capacity;        /* in 64-bit words */
+    ga2d_real rk4_at, rk4_weight; /* the RK4 stage under way: its time in substeps, its weight */
+} ga2d__step_context;
+
+/* A stage of the step over items [begin, end) of its kind (moving bodies,
+   contacts, constraints or lane groups).  Items of one stage never share
+   what the stage writes, so a range is a unit of work (threads will hand
+   ranges to workers); a stage only computes: what creates, destroys or
+   wakes is book-kept after it, in order. */
+typedef void ga2d__range_fn(ga2d__step_context *c, int begin, int end);
+
+/* Runs a stage over all n items. */
+static void ga2d__run(ga2d__step_context *c, ga2d__range_fn *fn, int n)
+{
+    if (n > 0) fn(c, 0, n);
+}
 
 struct ga2d_world {
     ga2d_world_def def;          /* as resolved at creation, kept current */
@@ -2555,8 +2460,6 @@ struct ga2d_world {
     int body_capacity, body_used, body_count, free_head;
     int *moving;                 /* slots of kinematic and dynamic bodies */
     int moving_count, moving_capacity;
-    ga2d__rk4 *rk4;              /* only while the integrator is RK4 */
-    int rk4_capacity;
     double time, eval_time;
     int lock;                    /* GA2D__LOCK_* bits: why changes are refused now */
     int depth;                   /* entry points under way that may run user code */
@@ -2580,17 +2483,7 @@ struct ga2d_world {
     ga2d_contact_data *begin_events, *end_events;
     int begin_count, end_count, begin_capacity, end_capacity;
     ga2d_real slop, speculative, aabb_margin; /* scaled by length units */
-    ga2d_real step_dt;           /* this step's dt (the last one's between steps) */
-    ga2d_result step_error;      /* what the step will report */
-    int error_slot;              /* the first body it contained, or -1 */
-    ga2d__constraint *constraints;
-    int constraint_count, constraint_capacity;
-    ga2d__group *groups;         /* the lane solver's, live during the substeps */
-    int group_count, group_capacity;
-    ga2d__sbody *sbodies;        /* its body state, by slot (one dummy past the end) */
-    int sbody_capacity;
-    int *last_group;             /* by slot: the last group that moves the body */
-    int last_group_capacity;
+    ga2d__step_context step;
     int *wake_queue;             /* one entry per body slot */
     int wake_capacity;
 };
@@ -2659,6 +2552,9 @@ GA2D_API int ga2d_body_id_equal(ga2d_body_id a, ga2d_body_id b) { return a.index
    so the ids of a saved world stay valid in the world that loads it. */
 static uint32_t ga2d__world_tag(const ga2d_world *w) { return ga2d__hash((uint64_t)(uintptr_t)w); }
 
+/* The slot an id names (the null id's is -1); ga2d__lookup checks it. */
+static int ga2d__slot(ga2d_body_id id) { return (int)id.index1 - 1; }
+
 /* The live body an id names, or NULL: out-of-range, free and reused slots
    are all refused by the index and generation check. */
 static ga2d__body *ga2d__lookup(const ga2d_world *w, ga2d_body_id id)
@@ -2668,6 +2564,13 @@ static ga2d__body *ga2d__lookup(const ga2d_world *w, ga2d_body_id id)
     b = &w->bodies[id.index1 - 1];
     if (b->type < 0 || (b->generation ^ w->tag) != id.generation) return NULL;
     return b;
+}
+
+/* Position, rotor and velocities all finite. */
+static int ga2d__state_finite(const ga2d__body *b)
+{
+    return ga2d__finite_vec(b->center) && ga2d__finite(b->q.c) && ga2d__finite(b->q.s) && ga2d__finite_vec(b->v) &&
+           ga2d__finite(b->w);
 }
 
 /* Refuses a change while the world is stepping. */
@@ -2681,7 +2584,12 @@ static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__bo
 
 static void ga2d__wake(ga2d_world *w, int slot);
 static void ga2d__put_to_sleep(ga2d_world *w, int slot);
-static void ga2d__lane_clear(ga2d_world *w, int lane);
+static void ga2d__lane_clear(ga2d__step_context *c, int lane);
+static void ga2d__contain(ga2d_world *w, int slot);
+static int ga2d__reserve_rk4(ga2d_world *w, int n);
+static void ga2d__step_release(ga2d_world *w);
+static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c);
+static void ga2d__update_sleep(ga2d__step_context *c);
 
 /* ------------------------------------------------------------- pair set */
 /* Which body pairs have a contact: open addressing, linear probing, kept
@@ -2776,6 +2684,18 @@ static void ga2d__unlink_contact(ga2d_world *w, int ci, int side)
 }
 
 /* Friction mixes as sqrt(mu_a mu_b), restitution as max(e_a, e_b). */
+/* A body's edges, oldest first: the links of its contact list (joints
+   will join them).  Islands, waking and the solver's canonical order all
+   walk them so: for (l = first_edge; l >= 0; l = next_edge). */
+static int ga2d__first_edge(const ga2d_world *w, int slot) { return w->bodies[slot].contact_head; }
+static int ga2d__next_edge(const ga2d_world *w, int link) { return w->contacts[link >> 1].next[link & 1]; }
+/* The body at an edge's other end. */
+static int ga2d__edge_other(const ga2d_world *w, int link)
+{
+    const ga2d__contact *c = &w->contacts[link >> 1];
+    return (link & 1) ? c->a : c->b;
+}
+
 static int ga2d__create_contact(ga2d_world *w, int a, int b)
 {
     ga2d__contact *c;
@@ -2838,7 +2758,7 @@ static void ga2d__push_event(ga2d_world *w, int end, const ga2d__contact *c)
     ga2d_contact_data **arr = end ? &w->end_events : &w->begin_events;
     int *count = end ? &w->end_count : &w->begin_count, *cap = end ? &w->end_capacity : &w->begin_capacity;
     if (!ga2d__grow(&w->mem, (void **)arr, cap, *count + 1, sizeof **arr)) {
-        w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+        w->step.error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
     ga2d__contact_data(w, c, &(*arr)[(*count)++]);
@@ -2907,12 +2827,7 @@ static ga2d_result ga2d__compact(ga2d_world *w)
 {
     if (!ga2d__contacts_compact(w)) return GA2D_ERR_OUT_OF_MEMORY;
     ga2d__release(w, (void **)&w->new_pairs, &w->new_pair_capacity, sizeof *w->new_pairs);
-    ga2d__release(w, (void **)&w->constraints, &w->constraint_capacity, sizeof *w->constraints);
-    w->constraint_count = 0;
-    ga2d__release(w, (void **)&w->groups, &w->group_capacity, sizeof *w->groups);
-    w->group_count = 0;
-    ga2d__release(w, (void **)&w->sbodies, &w->sbody_capacity, sizeof *w->sbodies);
-    ga2d__release(w, (void **)&w->last_group, &w->last_group_capacity, sizeof *w->last_group);
+    ga2d__step_release(w);
     return GA2D_OK;
 }
 
@@ -2969,6 +2884,12 @@ static ga2d_transform ga2d__body_xf(const ga2d__body *b)
 
 static ga2d__tree *ga2d__tree_of(ga2d_world *w, const ga2d__body *b) { return &w->trees[b->type != GA2D_BODY_STATIC]; }
 
+/* A body's fat box, as its tree holds it. */
+static ga2d_aabb ga2d__fat_box(const ga2d_world *w, const ga2d__body *b)
+{
+    return w->trees[b->type != GA2D_BODY_STATIC].nodes[b->proxy].box;
+}
+
 /* Queue a body for pair finding (capacity is kept >= the body slots). */
 static void ga2d__buffer_move(ga2d_world *w, int slot)
 {
@@ -3003,24 +2924,30 @@ static ga2d_aabb ga2d__reach_box(const ga2d__body *b, ga2d_aabb box, ga2d_real d
     return ga2d__fatten(box, swing);
 }
 
-/* Re-fit a body's fat box when it no longer holds all the body can reach
-   in this step, and queue the body for pair finding: then every pair the
-   step can bring into touch exists before the narrowphase runs.  The new
-   box is the reach grown by the margin and stretched along one more step
-   of motion, so a body flying steadily re-fits every other step; a box
-   more than four margins larger than that (a fast body that has slowed)
-   is re-fitted too, or it would hold pairs it can no longer reach. */
+/* Whether a body's fat box no longer holds all it can reach in this
+   step, and the box it needs then (*fat): the reach grown by the margin
+   and stretched along one more step of motion, so a body flying steadily
+   re-fits every other step.  A box more than four margins larger than
+   that (a fast body that has slowed) is re-fitted too, or it would hold
+   pairs it can no longer reach. */
+static int ga2d__needs_refit(const ga2d_world *w, const ga2d__body *b, ga2d_aabb *fat)
+{
+    ga2d_aabb now = ga2d_polygon_aabb(&b->polygon, ga2d__body_xf(b));
+    ga2d_aabb reach = ga2d__reach_box(b, now, w->step.dt), box = ga2d__fat_box(w, b);
+    ga2d_real margin = ga2d__margin(w, b);
+    *fat = ga2d__fatten(ga2d__reach_box(b, reach, w->step.dt), margin);
+    return !(ga2d_aabb_contains(box, reach) && ga2d_aabb_contains(ga2d__fatten(*fat, 4 * margin), box));
+}
+
+/* The tree takes a body's new fat box and the body is queued for pair
+   finding: then every pair the step can bring into touch exists before
+   the narrowphase runs. */
 static void ga2d__update_proxy(ga2d_world *w, int slot)
 {
     ga2d__body *b = &w->bodies[slot];
-    ga2d__tree *t = ga2d__tree_of(w, b);
-    ga2d_aabb now = ga2d_polygon_aabb(&b->polygon, ga2d__body_xf(b));
-    ga2d_aabb reach = ga2d__reach_box(b, now, w->step_dt), fat;
-    const ga2d_aabb *box = &t->nodes[b->proxy].box;
-    ga2d_real margin = ga2d__margin(w, b);
-    fat = ga2d__fatten(ga2d__reach_box(b, reach, w->step_dt), margin);
-    if (ga2d_aabb_contains(*box, reach) && ga2d_aabb_contains(ga2d__fatten(fat, 4 * margin), *box)) return;
-    ga2d__tree_move(t, b->proxy, fat);
+    ga2d_aabb fat;
+    if (!ga2d__needs_refit(w, b, &fat)) return;
+    ga2d__tree_move(ga2d__tree_of(w, b), b->proxy, fat);
     ga2d__buffer_move(w, slot);
 }
 
@@ -3038,7 +2965,7 @@ static void ga2d__pair_found(void *ctx, int other)
     if (!ga2d__pair_wanted(w, a, b) || ga2d__pairs_find(w, ga2d__pair_key(a, b)) >= 0) return;
     if (!ga2d__grow(&w->mem, (void **)&w->new_pairs, &w->new_pair_capacity, w->new_pair_count + 1,
                     sizeof *w->new_pairs)) {
-        w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+        w->step.error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
     w->new_pairs[w->new_pair_count++] = ga2d__pair_key(a, b);
@@ -3049,47 +2976,6 @@ static int ga2d__cmp_u64(const void *x, const void *y)
 {
     uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
     return (a > b) - (a < b);
-}
-
-/* The broadphase part of a step: fat boxes follow the moving bodies, then
-   every queued body (moved out of its box, created, teleported, refiltered)
-   is queried against the moving tree (and, if it moves, the static tree);
-   new pairs are created in key order, so the result is a function of the
-   world's state alone. */
-static void ga2d__update_pairs(ga2d_world *w)
-{
-    int k, n;
-    for (k = 0; k < w->moving_count; ++k) ga2d__update_proxy(w, w->moving[k]);
-    if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
-    /* drop destroyed bodies and repeats (a slot destroyed and reused) */
-    for (k = 0, n = 0; k < w->move_count; ++k) {
-        int slot = w->move_buf[k];
-        if (w->bodies[slot].type >= 0 && w->bodies[slot].in_move && (n == 0 || w->move_buf[n - 1] != slot))
-            w->move_buf[n++] = slot;
-    }
-    w->move_count = n;
-    w->new_pair_count = 0;
-    for (k = 0; k < w->move_count; ++k) {
-        int slot = w->move_buf[k];
-        ga2d__pair_query q;
-        ga2d_aabb box;
-        q.w = w;
-        q.self = slot;
-        box = ga2d__tree_of(w, &w->bodies[slot])->nodes[w->bodies[slot].proxy].box;
-        ga2d__tree_query(&w->trees[1], box, ga2d__pair_found, &q);
-        if (w->bodies[slot].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
-    }
-    if (w->new_pair_count > 1) qsort(w->new_pairs, (size_t)w->new_pair_count, sizeof *w->new_pairs, ga2d__cmp_u64);
-    for (k = 0, n = w->new_pair_count; k < n; ++k) {
-        uint64_t key = w->new_pairs[k];
-        if (k > 0 && w->new_pairs[k - 1] == key) continue;
-        if (!ga2d__create_contact(w, (int)(key >> 32), (int)(uint32_t)key)) w->step_error = GA2D_ERR_OUT_OF_MEMORY;
-    }
-    /* out of memory: some pairs were not made, so every queued body stays
-       queued and is searched again next step (pairs already made are kept) */
-    if (w->step_error == GA2D_ERR_OUT_OF_MEMORY) return;
-    for (k = 0; k < w->move_count; ++k) w->bodies[w->move_buf[k]].in_move = 0;
-    w->move_count = 0;
 }
 
 /* A touching pair that has hardly moved since its manifold was made gets
@@ -3104,7 +2990,7 @@ static void ga2d__update_pairs(ga2d_world *w)
    speculative margin (4 slop), so it cannot have come into touch, and a
    point clipped at a face's end is off by at most that half slop along
    the face.  A resting pile then skips the separating-axis search for
-   nearly every pair (large_pyramid: 98 % of updates).  Returns 0 when the
+   nearly every pair.  Returns 0 when the
    pair moved too far and must be collided anew. */
 static int ga2d__reuse_manifold(const ga2d_world *w, ga2d__contact *c, const ga2d__body *a, const ga2d__body *b,
                                 ga2d_transform xa, ga2d_transform xb)
@@ -3144,78 +3030,12 @@ static void ga2d__hold_manifold(ga2d__held *hd, ga2d_transform xa, ga2d_transfor
     }
 }
 
-/* The narrowphase part: each contact whose fat boxes still overlap gets a
-   new manifold (or its last one carried along, ga2d__reuse_manifold),
-   whose points take over the impulses of the old points with the same id
-   (warm starting); touching begins and ends become events.  A contact
-   whose boxes parted is destroyed. */
-static void ga2d__update_contacts(ga2d_world *w)
-{
-    int ci, wakes = 0;
-    w->begin_count = w->end_count = 0;
-    w->counters.manifolds_carried = 0;
-    for (ci = 0; ci < w->contact_used; ++ci) {
-        ga2d__contact *c = &w->contacts[ci];
-        const ga2d__body *a, *b;
-        ga2d_transform xa, xb;
-        ga2d_manifold m;
-        int i, j, touching;
-        if (c->next_free != -2) continue;
-        a = &w->bodies[c->a];
-        b = &w->bodies[c->b];
-        /* a pair with nothing awake that moves has nothing new to say */
-        if (!(a->awake && a->type != GA2D_BODY_STATIC) && !(b->awake && b->type != GA2D_BODY_STATIC)) continue;
-        if (!ga2d_aabb_overlaps(ga2d__tree_of(w, a)->nodes[a->proxy].box, ga2d__tree_of(w, b)->nodes[b->proxy].box)) {
-            if (c->touching) ga2d__push_event(w, 1, c);
-            ga2d__destroy_contact(w, ci);
-            continue;
-        }
-        xa = ga2d__body_xf(a);
-        xb = ga2d__body_xf(b);
-        if (ga2d__reuse_manifold(w, c, a, b, xa, xb)) {
-            ++w->counters.manifolds_carried;
-        } else {
-            /* keep points as far apart as the pair can close in one step:
-               speculative points only let bodies approach up to the gap */
-            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->v, a->v)) + GA2D__FABS(a->w) * a->extent +
-                              GA2D__FABS(b->w) * b->extent;
-            ga2d__collide(&a->polygon, xa, &b->polygon, xb, w->slop, w->speculative + reach * w->step_dt, &m);
-            ga2d__hold_manifold(&c->held, xa, xb, &m);
-            for (i = 0; i < m.count; ++i)
-                for (j = 0; j < c->manifold.count; ++j)
-                    if (c->manifold.points[j].id == m.points[i].id) {
-                        m.points[i].normal_impulse = c->manifold.points[j].normal_impulse;
-                        m.points[i].tangent_impulse = c->manifold.points[j].tangent_impulse;
-                        m.points[i].persisted = 1;
-                    }
-            touching = m.count > 0;
-            if (!touching && c->touching) ga2d__push_event(w, 1, c); /* with its last touching manifold */
-            c->manifold = m;
-            if (touching && !c->touching) ga2d__push_event(w, 0, c);
-            c->touching = touching;
-        }
-        /* a touch wakes a sleeping island, once every contact is updated:
-           waking here would let the pool's order decide which contacts
-           of the woken island are updated in this step */
-        c->wakes = c->touching && (!a->awake || !b->awake);
-        wakes += c->wakes;
-    }
-    for (ci = 0; ci < w->contact_used && wakes > 0; ++ci) {
-        ga2d__contact *c = &w->contacts[ci];
-        if (c->next_free != -2 || !c->wakes) continue;
-        c->wakes = 0;
-        --wakes;
-        ga2d__wake(w, c->a);
-        ga2d__wake(w, c->b);
-    }
-}
-
 /* Ends every contact of a body (it is being destroyed or refiltered). */
 static void ga2d__destroy_body_contacts(ga2d_world *w, int slot, int only_unwanted)
 {
-    int link = w->bodies[slot].contact_head;
+    int link = ga2d__first_edge(w, slot);
     while (link >= 0) {
-        int ci = link >> 1, side = link & 1, next = w->contacts[ci].next[side];
+        int ci = link >> 1, next = ga2d__next_edge(w, link);
         if (!only_unwanted || !ga2d__pair_wanted(w, w->contacts[ci].a, w->contacts[ci].b)) ga2d__destroy_contact(w, ci);
         link = next;
     }
@@ -3227,10 +3047,10 @@ GA2D_API ga2d_result ga2d_body_set_filter(ga2d_world *w, ga2d_body_id id, ga2d_f
     ga2d__body *b;
     ga2d_result r = ga2d__writable(w, id, &b);
     if (r != GA2D_OK) return r;
-    ga2d__wake(w, (int)id.index1 - 1);
+    ga2d__wake(w, ga2d__slot(id));
     b->filter = f;
-    ga2d__destroy_body_contacts(w, (int)id.index1 - 1, 1);
-    ga2d__buffer_move(w, (int)id.index1 - 1); /* pairs it may now make */
+    ga2d__destroy_body_contacts(w, ga2d__slot(id), 1);
+    ga2d__buffer_move(w, ga2d__slot(id)); /* pairs it may now make */
     return GA2D_OK;
 }
 
@@ -3247,7 +3067,7 @@ GA2D_API ga2d_aabb ga2d_body_fat_aabb(const ga2d_world *w, ga2d_body_id id)
     const ga2d__body *b = ga2d__lookup(w, id);
     ga2d_aabb box;
     memset(&box, 0, sizeof box);
-    return b ? w->trees[b->type != GA2D_BODY_STATIC].nodes[b->proxy].box : box;
+    return b ? ga2d__fat_box(w, b) : box;
 }
 
 static int ga2d__list_contacts(const ga2d_world *w, ga2d_contact_data *out, int capacity, int touching_only)
@@ -3290,7 +3110,7 @@ GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_c
     const ga2d__body *b = ga2d__lookup(w, id);
     int link, n = 0;
     if (!b) return 0;
-    for (link = b->contact_head; link >= 0; link = w->contacts[link >> 1].next[link & 1]) {
+    for (link = ga2d__first_edge(w, ga2d__slot(id)); link >= 0; link = ga2d__next_edge(w, link)) {
         const ga2d__contact *c = &w->contacts[link >> 1];
         if (!c->touching) continue;
         if (out && n < capacity) ga2d__contact_data(w, c, &out[n]);
@@ -3434,11 +3254,12 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     w->trees[0].root = w->trees[0].free_list = -1;
     w->trees[1].root = w->trees[1].free_list = -1;
     w->contact_free = -1;
-    w->error_slot = -1;
+    w->step.world = w;
+    w->step.error_slot = -1;
     w->slop = GA2D__R(GA2D_LINEAR_SLOP) * d.length_units_per_meter;
     w->speculative = GA2D__R(GA2D_SPECULATIVE_DISTANCE) * d.length_units_per_meter;
     w->aabb_margin = GA2D__R(GA2D_AABB_MARGIN) * d.length_units_per_meter;
-    w->step_dt = GA2D__R(1.0 / 60);
+    w->step.dt = GA2D__R(1.0 / 60);
     return w;
 }
 
@@ -3452,7 +3273,7 @@ static void ga2d__destroy_now(ga2d_world *w)
     memset(w, 0, sizeof *w);
     w->def = dead.def;
     w->mem = dead.mem;
-    w->free_head = w->contact_free = w->error_slot = -1;
+    w->free_head = w->contact_free = w->step.error_slot = -1;
     w->trees[0].root = w->trees[0].free_list = w->trees[1].root = w->trees[1].free_list = -1;
     w->lock = GA2D__LOCK_DEAD;
     w->depth = 1; /* a destroy from a free hook changes nothing */
@@ -3460,7 +3281,6 @@ static void ga2d__destroy_now(ga2d_world *w)
     w = &dead;
     ga2d__free(a, w->bodies, (size_t)w->body_capacity * sizeof *w->bodies);
     ga2d__free(a, w->moving, (size_t)w->moving_capacity * sizeof *w->moving);
-    ga2d__free(a, w->rk4, (size_t)w->rk4_capacity * sizeof *w->rk4);
     ga2d__tree_release(a, &w->trees[0]);
     ga2d__tree_release(a, &w->trees[1]);
     ga2d__free(a, w->move_buf, (size_t)w->move_capacity * sizeof *w->move_buf);
@@ -3470,10 +3290,7 @@ static void ga2d__destroy_now(ga2d_world *w)
     ga2d__free(a, w->pair_vals, (size_t)w->pair_capacity * sizeof *w->pair_vals);
     ga2d__free(a, w->begin_events, (size_t)w->begin_capacity * sizeof *w->begin_events);
     ga2d__free(a, w->end_events, (size_t)w->end_capacity * sizeof *w->end_events);
-    ga2d__free(a, w->constraints, (size_t)w->constraint_capacity * sizeof *w->constraints);
-    ga2d__free(a, w->groups, (size_t)w->group_capacity * sizeof *w->groups);
-    ga2d__free(a, w->sbodies, (size_t)w->sbody_capacity * sizeof *w->sbodies);
-    ga2d__free(a, w->last_group, (size_t)w->last_group_capacity * sizeof *w->last_group);
+    ga2d__step_free(a, &w->step);
     ga2d__free(a, w->wake_queue, (size_t)w->wake_capacity * sizeof *w->wake_queue);
     ga2d__free(&user, a->ctx, sizeof *w);
 }
@@ -3494,8 +3311,8 @@ GA2D_API void ga2d_world_destroy(ga2d_world *w)
 GA2D_API ga2d_body_id ga2d_world_error_body(const ga2d_world *w)
 {
     ga2d_body_id id = ga2d_body_id_null();
-    if (!w || w->error_slot < 0 || w->error_slot >= w->body_used || w->bodies[w->error_slot].type < 0) return id;
-    return ga2d__id_of(w, w->error_slot);
+    if (!w || w->step.error_slot < 0 || w->step.error_slot >= w->body_used || w->bodies[w->step.error_slot].type < 0) return id;
+    return ga2d__id_of(w, w->step.error_slot);
 }
 
 GA2D_API double ga2d_world_time(const ga2d_world *w)
@@ -3577,7 +3394,7 @@ GA2D_API ga2d_result ga2d_world_set_integrator(ga2d_world *w, ga2d_integrator in
     if (integrator == GA2D_INTEGRATOR_RK4) {
         int ok;
         ga2d__enter(w);
-        ok = ga2d__grow(&w->mem, (void **)&w->rk4, &w->rk4_capacity, w->moving_capacity, sizeof *w->rk4);
+        ok = ga2d__reserve_rk4(w, w->moving_capacity);
         /* the world may have been destroyed from the allocator: it is
            still here until the leave, and it is not touched after it */
         if (!ok || w->destroy_pending) {
@@ -3784,7 +3601,7 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
         if (!ga2d__grow(&w->mem, (void **)&w->moving, &w->moving_capacity, w->body_used + 1, sizeof *w->moving))
             return id;
         if (w->def.integrator == GA2D_INTEGRATOR_RK4 &&
-            !ga2d__grow(&w->mem, (void **)&w->rk4, &w->rk4_capacity, w->moving_capacity, sizeof *w->rk4))
+            !ga2d__reserve_rk4(w, w->moving_capacity))
             return id;
     }
     ga2d_polygon_make(def->polygon.vertices, def->polygon.count, &poly); /* validated above */
@@ -3867,13 +3684,13 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
     ga2d_result r = ga2d__writable(w, id, &b);
     int slot;
     if (r != GA2D_OK) return r;
-    slot = (int)id.index1 - 1;
+    slot = ga2d__slot(id);
     {
         /* what rested on it must not hang in the air: wake its neighbours */
         int link;
-        for (link = b->contact_head; link >= 0; link = w->contacts[link >> 1].next[link & 1]) {
+        for (link = ga2d__first_edge(w, slot); link >= 0; link = ga2d__next_edge(w, link)) {
             const ga2d__contact *ct = &w->contacts[link >> 1];
-            if (ct->touching) ga2d__wake(w, (link & 1) ? ct->a : ct->b);
+            if (ct->touching) ga2d__wake(w, ga2d__edge_other(w, link));
         }
     }
     ga2d__destroy_body_contacts(w, slot, 0);
@@ -3916,18 +3733,18 @@ GA2D_API ga2d_result ga2d_body_set_awake(ga2d_world *w, ga2d_body_id id, int awa
     int head = 0, tail = 0;
     if (r != GA2D_OK) return r;
     if (awake) {
-        ga2d__wake(w, (int)id.index1 - 1);
+        ga2d__wake(w, ga2d__slot(id));
         return GA2D_OK;
     }
     if (b->type != GA2D_BODY_DYNAMIC || !b->awake) return GA2D_OK;
     /* gather the awake island through touching contacts, then sleep it */
-    w->wake_queue[tail++] = (int)id.index1 - 1;
+    w->wake_queue[tail++] = ga2d__slot(id);
     b->sleep_time = -1; /* marks "queued" while gathering */
     while (head < tail) {
         int s = w->wake_queue[head++], link;
-        for (link = w->bodies[s].contact_head; link >= 0; link = w->contacts[link >> 1].next[link & 1]) {
+        for (link = ga2d__first_edge(w, s); link >= 0; link = ga2d__next_edge(w, link)) {
             const ga2d__contact *ct = &w->contacts[link >> 1];
-            int other = (link & 1) ? ct->a : ct->b;
+            int other = ga2d__edge_other(w, link);
             ga2d__body *o = &w->bodies[other];
             if (!ct->touching || !o->awake || o->type != GA2D_BODY_DYNAMIC || o->sleep_time < 0) continue;
             o->sleep_time = -1;
@@ -4043,12 +3860,12 @@ GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2
         b->q = ga2d__rotor(u.x, u.y);
         b->center = c;
     }
-    ga2d__wake(w, (int)id.index1 - 1);
+    ga2d__wake(w, ga2d__slot(id));
     b->center0 = b->center;
     b->q0 = b->q;
     b->dq = ga2d_rotor_identity();
     b->field_valid = 0;
-    ga2d__update_proxy(w, (int)id.index1 - 1);
+    ga2d__update_proxy(w, ga2d__slot(id));
     return GA2D_OK;
 }
 
@@ -4059,7 +3876,7 @@ GA2D_API ga2d_result ga2d_body_set_velocity(ga2d_world *w, ga2d_body_id id, ga2d
     if (r != GA2D_OK) return r;
     if (!ga2d__finite_vec(v)) return GA2D_ERR_NOT_FINITE;
     if (b->type == GA2D_BODY_STATIC) return GA2D_ERR_INVALID_ARGUMENT; /* a static body cannot move */
-    ga2d__wake(w, (int)id.index1 - 1);
+    ga2d__wake(w, ga2d__slot(id));
     b->v = v;
     return GA2D_OK;
 }
@@ -4073,7 +3890,7 @@ GA2D_API ga2d_result ga2d_body_set_angular_velocity(ga2d_world *w, ga2d_body_id 
     if (b->type == GA2D_BODY_STATIC) return GA2D_ERR_INVALID_ARGUMENT;
     /* fixed rotation, or inertia 0 from set_mass_data: it cannot turn */
     if (b->type == GA2D_BODY_DYNAMIC && b->inv_inertia == 0 && omega != 0) return GA2D_ERR_INVALID_ARGUMENT;
-    ga2d__wake(w, (int)id.index1 - 1);
+    ga2d__wake(w, ga2d__slot(id));
     b->w = omega;
     return GA2D_OK;
 }
@@ -4094,7 +3911,7 @@ GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2
     /* a centre so far out that the world position overflows: refused,
        like any input that would make the state not finite */
     if (!ga2d__finite_vec(center) || !ga2d__finite_vec(v)) return GA2D_ERR_NOT_FINITE;
-    ga2d__wake(w, (int)id.index1 - 1);
+    ga2d__wake(w, ga2d__slot(id));
     b->center = center;
     b->v = v;
     b->local_center = m.center;
@@ -4113,7 +3930,7 @@ GA2D_API ga2d_result ga2d_body_set_gravity_scale(ga2d_world *w, ga2d_body_id id,
     ga2d_result r = ga2d__writable(w, id, &b);
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(scale)) return GA2D_ERR_NOT_FINITE;
-    ga2d__wake(w, (int)id.index1 - 1);
+    ga2d__wake(w, ga2d__slot(id));
     b->gravity_scale = scale;
     return GA2D_OK;
 }
@@ -4166,7 +3983,7 @@ GA2D_API ga2d_result ga2d_body_apply_force(ga2d_world *w, ga2d_body_id id, ga2d_
         ga2d_real nt = *t + tau;
         /* finite inputs can still overflow the sums: refuse, keep the old */
         if (!ga2d__finite_vec(nf) || !ga2d__finite(nt)) return GA2D_ERR_NOT_FINITE;
-        if (!(w->lock & GA2D__LOCK_FIELD)) ga2d__wake(w, (int)id.index1 - 1);
+        if (!(w->lock & GA2D__LOCK_FIELD)) ga2d__wake(w, ga2d__slot(id));
         *f = nf;
         *t = nt;
     }
@@ -4191,7 +4008,7 @@ GA2D_API ga2d_result ga2d_body_apply_torque(ga2d_world *w, ga2d_body_id id, ga2d
     {
         ga2d_real *t = (w->lock & GA2D__LOCK_FIELD) ? &b->field_torque : &b->torque;
         if (!ga2d__finite(*t + torque)) return GA2D_ERR_NOT_FINITE;
-        if (!(w->lock & GA2D__LOCK_FIELD)) ga2d__wake(w, (int)id.index1 - 1);
+        if (!(w->lock & GA2D__LOCK_FIELD)) ga2d__wake(w, ga2d__slot(id));
         *t += torque;
     }
     return GA2D_OK;
@@ -4208,7 +4025,7 @@ GA2D_API ga2d_result ga2d_body_apply_impulse(ga2d_world *w, ga2d_body_id id, ga2
         ga2d_vec v = ga2d_vec_add(b->v, ga2d_vec_scale(impulse, b->inv_mass));
         ga2d_real om = b->w + b->inv_inertia * ga2d_wedge(ga2d_vec_sub(point, b->center), impulse); /* I^-1 (r ^ P) */
         if (!ga2d__finite_vec(v) || !ga2d__finite(om)) return GA2D_ERR_NOT_FINITE;
-        ga2d__wake(w, (int)id.index1 - 1);
+        ga2d__wake(w, ga2d__slot(id));
         b->v = v;
         b->w = om;
     }
@@ -4223,382 +4040,180 @@ GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id
     if (!ga2d__finite(impulse)) return GA2D_ERR_NOT_FINITE;
     if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
     if (!ga2d__finite(b->w + b->inv_inertia * impulse)) return GA2D_ERR_NOT_FINITE;
-    ga2d__wake(w, (int)id.index1 - 1);
+    ga2d__wake(w, ga2d__slot(id));
     b->w += b->inv_inertia * impulse;
     return GA2D_OK;
 }
 
-/* ============================================================ world step */
-/* exp(a e12) = cos a + sin a e12, without libm so that a step gives the
-   same bits on every platform.  |a| <= pi/4 (the usual turn per substep)
-   goes straight to the series; larger a is first reduced by k quarter
-   turns (Cody-Waite: pi/2 in two parts), and e12^k is exact:
-   (c, s) -> (-s, c).  The series (Horner, reciprocal factorials) stop where
-   the next term at pi/4 is below half an ulp: r^9 / r^10 in float,
-   r^17 / r^18 in double. */
-static ga2d_rotor ga2d__exp_e12(ga2d_real a)
-{
-#ifdef GA2D_DOUBLE
-    const ga2d_real pio2_hi = 1.5707963267341256, pio2_lo = 6.077100506506192e-11; /* hi: 33 bits */
-#else
-    const ga2d_real pio2_hi = 1.5707963705062866f, pio2_lo = -4.371139000186243e-08f; /* float pi/2 and the rest */
-#endif
-    ga2d_real r = a, r2, c, s, t;
-    long quarter = 0;
-    if (!(GA2D__FABS(a) <= GA2D__R(0.78539816339744831))) {
-        ga2d_real k;
-        if (!ga2d__finite(a)) return ga2d__rotor(a - a, a - a); /* NaN: the step reports it */
-        if (GA2D__FABS(a) > GA2D__R(1e6)) a = (ga2d_real)fmod((double)a, 6.283185307179586); /* exact */
-        k = (ga2d_real)floor((double)(a * GA2D__R(0.63661977236758134) + GA2D__R(0.5)));
-        r = (a - k * pio2_hi) - k * pio2_lo;
-        quarter = (long)k & 3;
-    }
-    r2 = r * r;
-#ifdef GA2D_DOUBLE
-    c = 1 + r2 * (-1.0 / 2 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800 +
-        r2 * (1.0 / 479001600 + r2 * (-1.0 / 87178291200.0 + r2 * (1.0 / 20922789888000.0))))))));
-    s = r * (1 + r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880 + r2 * (-1.0 / 39916800 +
-        r2 * (1.0 / 6227020800.0 + r2 * (-1.0 / 1307674368000.0 + r2 * (1.0 / 355687428096000.0)))))))));
-#else
-    c = 1 + r2 * (-1.0f / 2 + r2 * (1.0f / 24 + r2 * (-1.0f / 720 + r2 * (1.0f / 40320))));
-    s = r * (1 + r2 * (-1.0f / 6 + r2 * (1.0f / 120 + r2 * (-1.0f / 5040 + r2 * (1.0f / 362880)))));
-#endif
-    for (; quarter > 0; --quarter) { t = c; c = -s; s = t; }
-    return ga2d__rotor(c, s);
-}
-
-/* q turned by `angle`: exactly, q exp(angle e12) followed by one Newton
-   step toward |q| = 1 (r (3 - |r|^2)/2 takes a norm of 1 + d to 1 + O(d^2),
-   so rounding never accumulates); or to first order, q (1 + angle e12)
-   renormalized, which turns by atan(angle) instead of angle. */
-static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update mode)
-{
-    ga2d_rotor r;
-    ga2d_real k;
-    if (mode == GA2D_ROTATION_LINEAR) {
-        r = ga2d__rotor(q.c - angle * q.s, q.s + angle * q.c);
-        k = 1 / GA2D__SQRT(r.c * r.c + r.s * r.s);
-        /* a turn so large that |r|^2 overflows (an NGS fix or RK4 stage on
-           a body of tiny inertia) gave k = 0, the zero rotor: measure it
-           scaled instead (NaN still passes through, for the step to see) */
-        if (k == 0 && ga2d__finite(r.c) && ga2d__finite(r.s)) return ga2d_rotor_normalize(r);
-    } else {
-        r = ga2d_rotor_mul(q, ga2d__exp_e12(angle));
-        k = (3 - (r.c * r.c + r.s * r.s)) / 2;
-    }
-    return ga2d__rotor(r.c * k, r.s * k);
-}
-
-/* Runs the force callback at time t on the bodies' current state. */
-static void ga2d__contain(ga2d_world *w, int slot);
-
-/* Position, rotor and velocities all finite. */
-static int ga2d__state_finite(const ga2d__body *b)
-{
-    return ga2d__finite_vec(b->center) && ga2d__finite(b->q.c) && ga2d__finite(b->q.s) && ga2d__finite_vec(b->v) &&
-           ga2d__finite(b->w);
-}
-
-/* The field never reads a state that is not finite: a body driven there
-   since the last containment (a restitution above 1, an RK4 stage, a
-   solver pass) is contained first. */
-static void ga2d__eval_field(ga2d_world *w, double t)
-{
-    int k;
-    if (!w->def.force_callback || w->destroy_pending) return; /* destroyed from it: no more calls */
-    for (k = 0; k < w->moving_count; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        b->field_force = ga2d_vec_make(0, 0);
-        b->field_torque = 0;
-        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
-    }
-    w->lock |= GA2D__LOCK_FIELD;
-    w->eval_time = t;
-    w->def.force_callback(w, w->def.force_context);
-    w->lock &= ~GA2D__LOCK_FIELD;
-    ++w->counters.force_evaluations;
-}
-
-/* a = g s + (F_user + F_field)/m and alpha = (tau_user + tau_field)/I */
-static void ga2d__acceleration(const ga2d_world *w, const ga2d__body *b, ga2d_vec *a, ga2d_real *alpha)
-{
-    ga2d_vec f = ga2d_vec_add(b->force, b->field_force);
-    *a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(f, b->inv_mass));
-    *alpha = (b->torque + b->field_torque) * b->inv_inertia;
-}
-
-/* Damping as the implicit factor 1/(1 + c h): stable for any c h. */
-static void ga2d__damp(ga2d__body *b, ga2d_real h)
-{
-    if (b->linear_damping > 0) b->v = ga2d_vec_scale(b->v, 1 / (1 + h * b->linear_damping));
-    if (b->angular_damping > 0) b->w *= 1 / (1 + h * b->angular_damping);
-}
-
-/* Position update x += h v, q <- q exp(w h e12).  A body that does not
-   turn (fixed rotation, or w = 0) skips the rotor altogether. */
-static void ga2d__drift(ga2d_world *w, ga2d__body *b, ga2d_real h)
-{
-    b->center = ga2d_vec_add(b->center, ga2d_vec_scale(b->v, h));
-    if (b->w != 0) {
-        b->q = ga2d__turn(b->q, b->w * h, w->def.rotation_update);
-        ++w->counters.rotation_updates;
-    }
-    ++w->counters.integrated_bodies;
-}
-
-/* ----------------------------------------------- velocities and positions */
-/* Each integrator is split into a velocity phase and a position phase, so
-   that the contact solver can act on the velocities in between (DESIGN 6):
-   symplectic Euler kicks by h then drifts; Verlet kicks by h/2, drifts,
-   evaluates the field and kicks by h/2 again; RK4 runs its four stages for
-   the free motion, and the position phase adds to RK4's displacement what
-   the contacts changed in the velocity (h dv). */
-
-/* Containment: a body whose state is no longer finite (an absurd force,
-   impulse or field drove it there) is put back where the step began, at
-   rest and without forces, before anything it touches can see it; the
-   step reports GA2D_ERR_NOT_FINITE and ga2d_world_error_body names the
-   lowest slot of them (not the first met: the moving list's order is not
-   a snapshot's).  Its neighbours stay finite. */
-static void ga2d__contain(ga2d_world *w, int slot)
-{
-    ga2d__body *b = &w->bodies[slot];
-    b->center = b->center0;
-    b->q = b->q0;
-    b->v = ga2d_vec_make(0, 0);
-    b->w = 0;
-    b->force = ga2d_vec_make(0, 0);
-    b->torque = 0;
-    b->field_valid = 0;
-    b->sleep_time = 0;
-    {
-        /* its contacts' accumulated impulses may hold what drove it: they
-           restart from zero, or warm starting and the passes that follow
-           would hand the NaN back to it and on to its neighbours */
-        int i, k;
-        for (i = 0; i < w->constraint_count; ++i) {
-            ga2d__constraint *c = &w->constraints[i];
-            if (c->a != slot && c->b != slot) continue;
-            for (k = 0; k < c->count; ++k) {
-                ga2d_manifold_point *mp = &w->contacts[c->contact].manifold.points[k];
-                c->p[k].normal_impulse = c->p[k].tangent_impulse = c->p[k].restitution_impulse = 0;
-                mp->normal_impulse = mp->tangent_impulse = 0;
-            }
-            if (w->group_count > 0) ga2d__lane_clear(w, c->lane);
-        }
-    }
-    if (w->step_error == GA2D_OK) w->step_error = GA2D_ERR_NOT_FINITE;
-    if (w->error_slot < 0 || slot < w->error_slot) w->error_slot = slot;
-}
-
-/* Shortens *v to length max if longer (returns 1 then); the length is
-   taken after scaling by the larger component, so a huge but finite v is
-   capped, not turned into inf or NaN. */
-static int ga2d__cap_length(ga2d_vec *v, ga2d_real max)
-{
-    ga2d_real ax = GA2D__FABS(v->x), ay = GA2D__FABS(v->y), m = ax > ay ? ax : ay;
-    if (m > max * GA2D__R(0.7)) { /* |v| may exceed max: measure it safely */
-        ga2d_vec u = ga2d_vec_scale(*v, 1 / m);
-        ga2d_real len = m * GA2D__SQRT(ga2d_dot(u, u));
-        if (len > max) {
-            *v = ga2d_vec_scale(u, m * (max / len));
-            return 1;
-        }
-    }
-    return 0;
-}
-
-static int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
-{
-    if (!(*th > max || *th < -max)) return 0;
-    *th = *th > 0 ? max : -max;
-    return 1;
-}
-
-/* The velocity cap and the largest turn per substep, as Box2D: beyond
-   them a body is tunnelling anyway; each capped body counts in
-   speed_caps.  Returns 0 for a velocity that is not finite. */
-static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
-{
-    if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) return 0;
-    w->counters.speed_caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
-    w->counters.speed_caps += ga2d__cap_turn(&b->w, GA2D__MAX_TURN / h);
-    return 1;
-}
-
-/* Caches the field's acceleration of every moving body (Verlet). */
-static void ga2d__cache_field(ga2d_world *w)
-{
-    int k;
-    for (k = 0; k < w->moving_count; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        b->field_accel = ga2d_vec_scale(b->field_force, b->inv_mass);
-        b->field_alpha = b->field_torque * b->inv_inertia;
-        b->field_valid = 1;
-    }
-}
-
-/* Half a kick with the cached field plus gravity and the user's forces. */
-static void ga2d__verlet_kick(ga2d_world *w, ga2d__body *b, ga2d_real half)
-{
-    ga2d_vec a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale),
-                              ga2d_vec_add(b->field_accel, ga2d_vec_scale(b->force, b->inv_mass)));
-    b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, half));
-    b->w += (b->field_alpha + b->torque * b->inv_inertia) * half;
-}
-
-/* Classic RK4 on (x, theta, v, w), theta the turn since the substep began
-   (rotations in the plane commute, so q = q0 exp(theta e12)); damping is
-   the continuous -c v.  Leaves every body at its start state with its free
-   end velocity; the displacement waits in the scratch.  Without a force
-   callback no stage writes a trial state and nothing is evaluated. */
-static void ga2d__rk4_velocities(ga2d_world *w, ga2d_real h, double t)
-{
-    static const ga2d_real at[4] = {0, GA2D__R(0.5), GA2D__R(0.5), 1};
-    static const ga2d_real weight[4] = {1, 2, 2, 1};
-    int k, stage, n = w->moving_count, field = w->def.force_callback != NULL;
-    ga2d__rk4 *s = w->rk4;
-    GA2D_ASSERT(w->rk4_capacity >= n);
-    for (k = 0; k < n; ++k) {
-        const ga2d__body *b = &w->bodies[w->moving[k]];
-        memset(&s[k], 0, sizeof s[k]);
-        s[k].x0 = b->center;
-        s[k].q0 = b->q;
-        s[k].v0 = b->v;
-        s[k].w0 = b->w;
-    }
-    for (stage = 0; stage < 4; ++stage) {
-        ga2d_real c = at[stage] * h;
-        if (field) {
-            for (k = 0; k < n; ++k) {
-                ga2d__body *b = &w->bodies[w->moving[k]];
-                b->center = ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].kx, c));
-                b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, c));
-                b->w = s[k].w0 + s[k].kw * c;
-                b->q = s[k].kth * c != 0 ? ga2d__turn(s[k].q0, s[k].kth * c, w->def.rotation_update) : s[k].q0;
-            }
-            ga2d__eval_field(w, t + (double)c);
-        }
-        for (k = 0; k < n; ++k) {
-            ga2d__body *b = &w->bodies[w->moving[k]];
-            ga2d_vec v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, c));
-            ga2d_real om = s[k].w0 + s[k].kw * c;
-            s[k].kx = v;
-            s[k].kth = om;
-            if (b->type == GA2D_BODY_DYNAMIC) {
-                ga2d_vec a;
-                ga2d_real alpha;
-                ga2d__acceleration(w, b, &a, &alpha);
-                s[k].kv = ga2d_vec_sub(a, ga2d_vec_scale(v, b->linear_damping));
-                s[k].kw = alpha - b->angular_damping * om;
-            }
-            s[k].sx = ga2d_vec_add(s[k].sx, ga2d_vec_scale(s[k].kx, weight[stage]));
-            s[k].sv = ga2d_vec_add(s[k].sv, ga2d_vec_scale(s[k].kv, weight[stage]));
-            s[k].sth += s[k].kth * weight[stage];
-            s[k].sw += s[k].kw * weight[stage];
-        }
-    }
-    for (k = 0; k < n; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        b->center = s[k].x0;
-        b->q = s[k].q0;
-        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].sv, h / 6));
-        b->w = s[k].w0 + s[k].sw * (h / 6);
-        s[k].kv = b->v; /* the free end velocities, for the position phase */
-        s[k].kw = b->w;
-    }
-}
-
-static void ga2d__integrate_velocities(ga2d_world *w, ga2d_real h, double t)
-{
-    int k;
-    if (w->def.integrator == GA2D_INTEGRATOR_RK4) {
-        ga2d__rk4_velocities(w, h, t);
-    } else if (w->def.integrator == GA2D_INTEGRATOR_VERLET) {
-        int stale = 0;
-        if (w->def.force_callback) {
-            for (k = 0; k < w->moving_count && !stale; ++k) stale = !w->bodies[w->moving[k]].field_valid;
-            if (stale) {
-                ga2d__eval_field(w, t);
-                ga2d__cache_field(w);
-            }
-        }
-        for (k = 0; k < w->moving_count; ++k) {
-            ga2d__body *b = &w->bodies[w->moving[k]];
-            if (b->type == GA2D_BODY_DYNAMIC) ga2d__verlet_kick(w, b, h / 2);
-        }
-    } else {
-        ga2d__eval_field(w, t);
-        for (k = 0; k < w->moving_count; ++k) {
-            ga2d__body *b = &w->bodies[w->moving[k]];
-            ga2d_vec a;
-            ga2d_real alpha;
-            if (b->type != GA2D_BODY_DYNAMIC) continue;
-            ga2d__acceleration(w, b, &a, &alpha);
-            b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, h));
-            b->w += alpha * h;
-            ga2d__damp(b, h);
-        }
-    }
-    for (k = 0; k < w->moving_count; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(w, b, h)) ga2d__contain(w, w->moving[k]);
-    }
-}
-
-static void ga2d__integrate_positions(ga2d_world *w, ga2d_real h, double t)
-{
-    int k;
-    if (w->def.integrator == GA2D_INTEGRATOR_RK4) {
-        ga2d__rk4 *s = w->rk4;
-        for (k = 0; k < w->moving_count; ++k) {
-            ga2d__body *b = &w->bodies[w->moving[k]];
-            /* RK4's displacement plus h times what the contacts changed,
-               under the caps the velocities have (the stages' own
-               velocities are not capped) */
-            ga2d_real th = s[k].sth * (h / 6) + (b->w - s[k].kw) * h;
-            ga2d_vec d;
-            b->center = ga2d_vec_add(ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].sx, h / 6)),
-                                     ga2d_vec_scale(ga2d_vec_sub(b->v, s[k].kv), h));
-            d = ga2d_vec_sub(b->center, s[k].x0);
-            if (ga2d__cap_length(&d, GA2D__MAX_SPEED * w->def.length_units_per_meter * h)) b->center = ga2d_vec_add(s[k].x0, d);
-            ga2d__cap_turn(&th, GA2D__MAX_TURN);
-            if (th != 0) {
-                b->q = ga2d__turn(s[k].q0, th, w->def.rotation_update);
-                ++w->counters.rotation_updates;
-            }
-            ++w->counters.integrated_bodies;
-            /* a body contained in the velocity phase still has its stages'
-               sums here: contain it again before the solver passes that
-               follow can spread its NaN through the contacts */
-            if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) ga2d__contain(w, w->moving[k]);
-        }
-        return;
-    }
-    for (k = 0; k < w->moving_count; ++k) ga2d__drift(w, &w->bodies[w->moving[k]], h);
-    if (w->def.integrator == GA2D_INTEGRATOR_VERLET) {
-        if (w->def.force_callback) {
-            ga2d__eval_field(w, t + (double)h);
-            ga2d__cache_field(w);
-        }
-        for (k = 0; k < w->moving_count; ++k) {
-            ga2d__body *b = &w->bodies[w->moving[k]];
-            if (b->type != GA2D_BODY_DYNAMIC) continue;
-            ga2d__verlet_kick(w, b, h / 2);
-            ga2d__damp(b, h);
-            /* the closing half kick is capped too: uncapped, a stiff field
-               (a drag of k h / m >> 2) left the step with any speed or
-               turn, and the next step's contacts turned that into NaN */
-            if (!ga2d__clamp_velocity(w, b, h)) ga2d__contain(w, w->moving[k]);
-        }
-    }
-}
-
 /* ========================================================== contact solver */
-/* A soft constraint: a spring of `hertz` and damping ratio `zeta` seen by
-   an implicit step of h, as a bias rate and the scales of mass and of the
-   accumulated impulse (Catto's soft step). */
-typedef struct ga2d__soft { ga2d_real bias_rate, mass_scale, impulse_scale; } ga2d__soft;
+/* A contact point as the solver sees it: anchors from each body's centre
+   of mass (world orientation, fixed for the step), the effective masses,
+   and the accumulated impulses. */
+typedef struct ga2d__cpoint {
+    ga2d_vec ra, rb;
+    ga2d_real separation;        /* at the step's start */
+    ga2d_real normal_mass, tangent_mass;
+    ga2d_real normal_impulse, tangent_impulse;
+} ga2d__cpoint;
+
+struct ga2d__constraint {
+    int contact, a, b;           /* pool index, body slots */
+    ga2d_vec normal;
+    ga2d_real friction, restitution;
+    ga2d_real inv_ma, inv_ia, inv_mb, inv_ib;
+    int to_static;               /* the other body cannot move: stiffer */
+    int count;
+    int lane;                    /* group * GA2D__LANES + lane in the lane solver */
+    ga2d__cpoint p[2];
+};
+
+/* The solver's innermost helpers run hundreds of thousands of times a
+   step: they are inlined into its passes, where the compiler keeps the
+   lanes in registers across them. */
+#if defined(__GNUC__) || defined(__clang__)
+#define GA2D__HOT inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define GA2D__HOT __forceinline
+#else
+#define GA2D__HOT inline
+#endif
+
+/* ------------------------------------------------------ the lane solver */
+/* The velocity passes (warm start, solve, relax) run on groups of
+   constraints that share no body they move, one constraint per lane, so
+   each pass is GA2D__LANES independent sequential-impulse updates at once.  A
+   group is solved as a whole and the groups one after the other: still
+   Gauss-Seidel, in an order close to the canonical one.  Under gcc and
+   clang a lane set is a vector of the compiler's (SSE2 on x86-64, NEON on
+   arm64); elsewhere, or with GA2D_NO_SIMD, a struct of lanes.  Each lane
+   computes exactly what the scalar code would, operation for operation, so
+   both give the same bits (the determinism check builds both). */
+/* 16 bytes, the width every 64-bit target has; 32 where the compiler is
+   told of AVX (-mavx2, -march=native).  The width changes no bit of the
+   results: constraints that share no moved body commute exactly, and the
+   groups keep every body's own constraints in order. */
+#if defined(__AVX__) && !defined(GA2D_NO_SIMD)
+#define GA2D__BYTES 32
+#else
+#define GA2D__BYTES 16
+#endif
+#ifdef GA2D_DOUBLE
+#define GA2D__LANES (GA2D__BYTES / 8)
+#else
+#define GA2D__LANES (GA2D__BYTES / 4)
+#endif
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(GA2D_NO_SIMD)
+/* aligned to one element, as a user's allocator owes no more */
+#ifdef GA2D_DOUBLE
+typedef double ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(8)));
+typedef int64_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(8)));
+#else
+typedef float ga2d__w __attribute__((vector_size(GA2D__BYTES), aligned(4)));
+typedef int32_t ga2d__wmask __attribute__((vector_size(GA2D__BYTES), aligned(4)));
+#endif
+#define GA2D__LANE(x, i) (x)[i]
+#define GA2D__WINIT(...) {__VA_ARGS__}
+static GA2D__HOT ga2d__w ga2d__wadd(ga2d__w a, ga2d__w b) { return a + b; }
+static GA2D__HOT ga2d__w ga2d__wsub(ga2d__w a, ga2d__w b) { return a - b; }
+static GA2D__HOT ga2d__w ga2d__wmul(ga2d__w a, ga2d__w b) { return a * b; }
+static GA2D__HOT ga2d__w ga2d__wdiv(ga2d__w a, ga2d__w b) { return a / b; }
+static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a > b); }
+static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a >= b); }
+static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b) { return a & b; }
+/* m ? a : b, lane by lane (m all ones or all zeros) */
+static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
+{
+    return (ga2d__w)((m & (ga2d__wmask)a) | (~m & (ga2d__wmask)b));
+}
+#else
+typedef struct ga2d__w { ga2d_real lane[GA2D__LANES]; } ga2d__w;
+typedef struct ga2d__wmask { int lane[GA2D__LANES]; } ga2d__wmask;
+#define GA2D__LANE(x, i) (x).lane[i]
+#define GA2D__WINIT(...) {{__VA_ARGS__}}
+#define GA2D__WOP(name, op)                                                                                            \
+    static GA2D__HOT ga2d__w name(ga2d__w a, ga2d__w b)                                                               \
+    {                                                                                                                  \
+        int i;                                                                                                         \
+        for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] op b.lane[i];                                                   \
+        return a;                                                                                                      \
+    }
+GA2D__WOP(ga2d__wadd, +)
+GA2D__WOP(ga2d__wsub, -)
+GA2D__WOP(ga2d__wmul, *)
+GA2D__WOP(ga2d__wdiv, /)
+#undef GA2D__WOP
+static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b)
+{
+    ga2d__wmask m;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] > b.lane[i];
+    return m;
+}
+static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b)
+{
+    ga2d__wmask m;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] >= b.lane[i];
+    return m;
+}
+static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b)
+{
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] && b.lane[i];
+    return a;
+}
+static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
+{
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = m.lane[i] ? a.lane[i] : b.lane[i];
+    return a;
+}
+#endif
+
+static GA2D__HOT ga2d__w ga2d__wsplat(ga2d_real x)
+{
+    ga2d__w r;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) GA2D__LANE(r, i) = x;
+    return r;
+}
+
+/* a x + b y: the dot product of the lanes' vectors (a, b) and (x, y) */
+static GA2D__HOT ga2d__w ga2d__wdot(ga2d__w a, ga2d__w b, ga2d__w x, ga2d__w y)
+{
+    return ga2d__wadd(ga2d__wmul(a, x), ga2d__wmul(b, y));
+}
+
+/* A body as the passes see it: velocity, spin, and its motion since the
+   step began (displacement dp, turn dq = q q0~).  Bodies that do not move
+   keep v, w and a zero motion; one slot past the last body is a dummy for
+   empty lanes.  Eight reals, so that the lanes' bodies load as whole rows
+   and are transposed in registers (ga2d__wload). */
+struct ga2d__sbody {
+    ga2d_real vx, vy, w, pad, dpx, dpy, dqc, dqs;
+};
+
+/* GA2D__LANES constraints, lane by lane: the bodies (the dummy slot in an empty
+   lane), which of them the lane moves, its constraint's index, and the
+   constraint's data.  A one-point contact's second point and an empty lane
+   have zero masses, so their impulses stay zero. */
+struct ga2d__group {
+    int a[GA2D__LANES], b[GA2D__LANES];
+    int con[GA2D__LANES];       /* the lane's constraint, -1 in an empty lane */
+    ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
+    int count;              /* lanes in use */
+    int skip;               /* when full: a later group to look at first */
+    ga2d__w nx, ny, friction, ima, iia, imb, iib;
+    ga2d__w dx, dy;         /* centre B - centre A when the step began */
+    ga2d__w soft_rate, soft_mass, soft_impulse;
+    ga2d__w rax[2], ray[2], rbx[2], rby[2];
+    ga2d__w adjust[2];      /* start separation - (d0 + rB - rA).n */
+    ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
+    ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
+    ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
+};
+
+/* A soft constraint seen by an implicit step (ga2d__make_soft). */
 
 static ga2d__soft ga2d__make_soft(ga2d_real hertz, ga2d_real zeta, ga2d_real h)
 {
@@ -4676,81 +4291,87 @@ static ga2d_vec ga2d__free_accel(const ga2d_world *w, const ga2d__body *b)
     return ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(b->force, b->inv_mass));
 }
 
-/* The constraint of contact ci, if it has one; 0 when out of memory. */
-static int ga2d__add_constraint(ga2d_world *w, int ci)
-{
-    const ga2d__contact *ct = &w->contacts[ci];
-    const ga2d__body *a, *b;
-    ga2d__constraint *c;
-    ga2d_vec ca, cb;
-    int i;
-    if (!ct->touching) return 1;
-    a = &w->bodies[ct->a];
-    b = &w->bodies[ct->b];
-    if (!((a->type == GA2D_BODY_DYNAMIC && a->awake) || (b->type == GA2D_BODY_DYNAMIC && b->awake))) return 1;
-    if (!ga2d__grow(&w->mem, (void **)&w->constraints, &w->constraint_capacity, w->constraint_count + 1,
-                    sizeof *w->constraints)) {
-        w->step_error = GA2D_ERR_OUT_OF_MEMORY;
-        return 0;
-    }
-    c = &w->constraints[w->constraint_count++];
-    c->contact = ci;
-    c->a = ct->a;
-    c->b = ct->b;
-    c->normal = ct->manifold.normal;
-    c->friction = ct->friction;
-    c->restitution = ct->restitution;
-    c->inv_ma = a->awake && a->type == GA2D_BODY_DYNAMIC ? a->inv_mass : 0;
-    c->inv_ia = a->awake && a->type == GA2D_BODY_DYNAMIC ? a->inv_inertia : 0;
-    c->inv_mb = b->awake && b->type == GA2D_BODY_DYNAMIC ? b->inv_mass : 0;
-    c->inv_ib = b->awake && b->type == GA2D_BODY_DYNAMIC ? b->inv_inertia : 0;
-    c->to_static = c->inv_ma == 0 || c->inv_mb == 0;
-    c->count = ct->manifold.count;
-    /* anchors from the centres, taken from the origin-relative ones so
-       that no large coordinates are subtracted */
-    ca = ga2d_rotate(a->q, a->local_center);
-    cb = ga2d_rotate(b->q, b->local_center);
-    for (i = 0; i < c->count; ++i) {
-        const ga2d_manifold_point *mp = &ct->manifold.points[i];
-        ga2d__cpoint *p = &c->p[i];
-        p->ra = ga2d_vec_sub(mp->anchor_a, ca);
-        p->rb = ga2d_vec_sub(mp->anchor_b, cb);
-        p->separation = mp->separation;
-        p->normal_mass = ga2d__effective_mass(c, p->ra, p->rb, c->normal);
-        p->tangent_mass = ga2d__effective_mass(c, p->ra, p->rb, ga2d__tangent(c->normal));
-        p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
-        p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
-        p->restitution_impulse = 0;
-    }
-    return 1;
-}
+/* Whether a contact's bodies can move in the solver: an awake dynamic one. */
+static int ga2d__solver_moves(const ga2d__body *b) { return b->type == GA2D_BODY_DYNAMIC && b->awake; }
 
-/* Builds a constraint for every touching contact with an awake dynamic
-   body; static, kinematic and sleeping partners keep their velocities
-   (inverse mass and inertia 0 here).  The order is canonical, not the
-   pool's: body slots ascending, each body's own contacts (those where it
-   is A, the lower slot) oldest first, as its list holds them.  Contacts
-   elsewhere in the world, made and freed, shuffle the pool but not this
-   order, so a scene's bits do not depend on them (issue 8's determinism).
-   Oldest first matters: a pyramid's contacts, made in key order, are then
-   solved bottom up. */
-static void ga2d__prepare_contacts(ga2d_world *w)
+/* Book-keeping: a constraint for every touching contact with an awake
+   dynamic body, in canonical order, not the pool's: body slots ascending,
+   each body's own contacts (those where it is A, the lower slot) oldest
+   first, as its list holds them.  Contacts elsewhere in the world, made
+   and freed, shuffle the pool but not this order, so a scene's bits do
+   not depend on them.  Oldest first matters: a pyramid's contacts, made
+   in key order, are then solved bottom up.  Out of memory, the step
+   reports it and solves the constraints listed so far. */
+static void ga2d__order_constraints(ga2d__step_context *c)
 {
+    ga2d_world *w = c->world;
     int slot, link;
-    w->constraint_count = 0;
+    c->constraint_count = 0;
     for (slot = 0; slot < w->body_used; ++slot) {
         if (w->bodies[slot].type < 0) continue;
-        for (link = w->bodies[slot].contact_head; link >= 0; link = w->contacts[link >> 1].next[link & 1])
-            if ((link & 1) == 0 && !ga2d__add_constraint(w, link >> 1)) return;
+        for (link = ga2d__first_edge(w, slot); link >= 0; link = ga2d__next_edge(w, link)) {
+            const ga2d__contact *ct = &w->contacts[link >> 1];
+            if ((link & 1) != 0 || !ct->touching) continue;
+            if (!ga2d__solver_moves(&w->bodies[ct->a]) && !ga2d__solver_moves(&w->bodies[ct->b])) continue;
+            if (!ga2d__grow(&w->mem, (void **)&c->constraints, &c->constraint_capacity, c->constraint_count + 1,
+                            sizeof *c->constraints)) {
+                c->error = GA2D_ERR_OUT_OF_MEMORY;
+                return;
+            }
+            c->constraints[c->constraint_count++].contact = link >> 1;
+        }
     }
 }
 
-/* Where each moving body was when the step began: the solver measures a
-   point's current separation by how far its anchors have moved since. */
-static void ga2d__remember_start(ga2d_world *w)
+/* Stage, over the constraints: each takes its contact's normal, material
+   and points; static, kinematic and sleeping partners keep their
+   velocities (inverse mass and inertia 0 here). */
+static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
 {
+    ga2d_world *w = c->world;
+    int n, i;
+    for (n = begin; n < end; ++n) {
+        ga2d__constraint *cc = &c->constraints[n];
+        const ga2d__contact *ct = &w->contacts[cc->contact];
+        const ga2d__body *a = &w->bodies[ct->a], *b = &w->bodies[ct->b];
+        ga2d_vec ca, cb;
+        cc->a = ct->a;
+        cc->b = ct->b;
+        cc->normal = ct->manifold.normal;
+        cc->friction = ct->friction;
+        cc->restitution = ct->restitution;
+        cc->inv_ma = ga2d__solver_moves(a) ? a->inv_mass : 0;
+        cc->inv_ia = ga2d__solver_moves(a) ? a->inv_inertia : 0;
+        cc->inv_mb = ga2d__solver_moves(b) ? b->inv_mass : 0;
+        cc->inv_ib = ga2d__solver_moves(b) ? b->inv_inertia : 0;
+        cc->to_static = cc->inv_ma == 0 || cc->inv_mb == 0;
+        cc->count = ct->manifold.count;
+        /* anchors from the centres, taken from the origin-relative ones so
+           that no large coordinates are subtracted */
+        ca = ga2d_rotate(a->q, a->local_center);
+        cb = ga2d_rotate(b->q, b->local_center);
+        for (i = 0; i < cc->count; ++i) {
+            const ga2d_manifold_point *mp = &ct->manifold.points[i];
+            ga2d__cpoint *p = &cc->p[i];
+            p->ra = ga2d_vec_sub(mp->anchor_a, ca);
+            p->rb = ga2d_vec_sub(mp->anchor_b, cb);
+            p->separation = mp->separation;
+            p->normal_mass = ga2d__effective_mass(cc, p->ra, p->rb, cc->normal);
+            p->tangent_mass = ga2d__effective_mass(cc, p->ra, p->rb, ga2d__tangent(cc->normal));
+            p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
+            p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
+        }
+    }
+}
+
+/* Stage, over the moving bodies: where each was when the step began (the
+   solver measures a point's current separation by how far its anchors
+   have moved since). */
+static void ga2d__remember_start(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
     int k;
-    for (k = 0; k < w->moving_count; ++k) {
+    for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
         b->center0 = b->center;
         b->q0 = b->q;
@@ -4758,12 +4379,13 @@ static void ga2d__remember_start(ga2d_world *w)
     }
 }
 
-/* Each moving body's turn since the step began, once per solver pass
-   rather than once per contact point. */
-static void ga2d__refresh_turns(ga2d_world *w)
+/* Stage, over the moving bodies: each one's turn since the step began,
+   once per solver pass rather than once per contact point. */
+static void ga2d__refresh_turns(ga2d__step_context *c, int begin, int end)
 {
+    ga2d_world *w = c->world;
     int k;
-    for (k = 0; k < w->moving_count; ++k) {
+    for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
         b->dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0));
     }
@@ -4798,7 +4420,7 @@ typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
 /* The lanes' bodies as whole rows: lane l's body, GA2D__LANES reals at a
    time, is row l of a square block; transposed in registers, row k holds
    field k of every lane.  Gathering field by field instead costs a scalar
-   load and an insert per lane and field (large_pyramid: 8 % slower).  It
+   load and an insert per lane and field.  It
    needs the compiler's vector shuffle: clang's and gcc 12's
    __builtin_shufflevector, or older gcc's __builtin_shuffle in C (its
    index vector is a compound literal, which C++ lacks). */
@@ -4810,7 +4432,7 @@ typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
 #endif
 #endif
 /* 8 lanes (AVX floats) gather faster field by field: an 8 x 8 transpose
-   crosses the register's halves (large_pyramid: 6.2 ms against 4.0) */
+   crosses the register's 128-bit halves, each crossing a slow shuffle */
 #if defined(GA2D__SHUF) && GA2D__LANES < 8
 static GA2D__HOT ga2d__w ga2d__wrow(const ga2d_real *p)
 {
@@ -5085,15 +4707,16 @@ static GA2D__HOT void ga2d__wblock(const ga2d__group *g, const ga2d__w *inv_a, c
     lambda[1] = ga2d__wsel(both, b2, l2);
 }
 
-/* Each point's accumulated impulses applied again at its anchors now. */
-static void ga2d__warm_start(ga2d_world *w)
+/* Stage, over the groups: each point's accumulated impulses applied again
+   at its anchors now. */
+static void ga2d__warm_start(ga2d__step_context *c, int begin, int end)
 {
     int gi, k;
-    for (gi = 0; gi < w->group_count; ++gi) {
-        const ga2d__group *g = &w->groups[gi];
+    for (gi = begin; gi < end; ++gi) {
+        const ga2d__group *g = &c->groups[gi];
         ga2d__wbody A, B, A0, B0;
-        ga2d__wload(w->sbodies, g->a, &A);
-        ga2d__wload(w->sbodies, g->b, &B);
+        ga2d__wload(c->sbodies, g->a, &A);
+        ga2d__wload(c->sbodies, g->b, &B);
         A0 = A;
         B0 = B;
         for (k = 0; k < 2; ++k) {
@@ -5104,8 +4727,8 @@ static void ga2d__warm_start(ga2d_world *w)
             ga2d__wpoint_now(g, k, &A, &B, &r);
             ga2d__wapply(g, &A, &B, &r, px, py);
         }
-        ga2d__wstore(w->sbodies, g->a, g->move_a, &A, &A0);
-        ga2d__wstore(w->sbodies, g->b, g->move_b, &B, &B0);
+        ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
+        ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
     }
 }
 
@@ -5117,9 +4740,10 @@ enum { GA2D__BIAS_NONE, GA2D__BIAS_SOFT, GA2D__BIAS_BAUMGARTE };
    accumulated within +-mu times the point's normal impulse.  A point still
    apart (separation s > 0) may approach by s in this substep: that is the
    speculative contact that catches fast bodies. */
-static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
+static void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int bias_kind)
 {
-    ga2d_real inv_h = 1 / h, push = w->def.contact_push_max_velocity * w->def.length_units_per_meter;
+    ga2d_world *w = c->world;
+    ga2d_real inv_h = c->inv_h, push = w->def.contact_push_max_velocity * w->def.length_units_per_meter;
     const ga2d__w zero = ga2d__wsplat(0), one = ga2d__wsplat(1), winv_h = ga2d__wsplat(inv_h);
     const ga2d__w low = ga2d__wsplat(-push), slop = ga2d__wsplat(w->slop), nslop = ga2d__wsplat(-w->slop);
     const ga2d__w baumgarte = ga2d__wsplat(GA2D__R(0.2) * inv_h);
@@ -5129,14 +4753,14 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
        an impulse several times too large for its lever arm is applied and
        the passes diverge (deep overlaps of small bodies reached NaN) */
     int fresh = w->def.solver == GA2D_SOLVER_PGS_NGS;
-    for (gi = 0; gi < w->group_count; ++gi) {
-        ga2d__group *g = &w->groups[gi];
+    for (gi = begin; gi < end; ++gi) {
+        ga2d__group *g = &c->groups[gi];
         ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
         ga2d__wbody A, B, A0, B0;
         ga2d__wanchors r[2];
         ga2d__w inv_a[2], own[2], lambda[2];
-        ga2d__wload(w->sbodies, g->a, &A);
-        ga2d__wload(w->sbodies, g->b, &B);
+        ga2d__wload(c->sbodies, g->a, &A);
+        ga2d__wload(c->sbodies, g->b, &B);
         A0 = A;
         B0 = B;
         for (k = 0; k < 2; ++k) {
@@ -5177,9 +4801,18 @@ static void ga2d__solve_contacts(ga2d_world *w, ga2d_real h, int bias_kind)
             g->timp[k] = total;
             ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, dt), ga2d__wmul(ty, dt));
         }
-        ga2d__wstore(w->sbodies, g->a, g->move_a, &A, &A0);
-        ga2d__wstore(w->sbodies, g->b, g->move_b, &B, &B0);
+        ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
+        ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
     }
+}
+
+/* Stages, over the groups: the soft pass, the relax pass (rigid, no bias)
+   and the Baumgarte pass. */
+static void ga2d__solve_soft(ga2d__step_context *c, int begin, int end) { ga2d__solve_contacts(c, begin, end, GA2D__BIAS_SOFT); }
+static void ga2d__solve_rigid(ga2d__step_context *c, int begin, int end) { ga2d__solve_contacts(c, begin, end, GA2D__BIAS_NONE); }
+static void ga2d__solve_baumgarte(ga2d__step_context *c, int begin, int end)
+{
+    ga2d__solve_contacts(c, begin, end, GA2D__BIAS_BAUMGARTE);
 }
 
 /* Lane l of group g holds constraint c (d: B's centre less A's), every
@@ -5218,45 +4851,31 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__constraint *c, g
     }
 }
 
-/* Puts constraint ci into lane g->count of group g. */
-static void ga2d__lane_put(ga2d_world *w, ga2d__group *g, int ci, const ga2d__soft *soft, const ga2d__soft *stiff,
-                           const ga2d__constraint *none)
+/* Puts constraint ci into lane g->count of group g (its data is written
+   by ga2d__fill_lanes). */
+static void ga2d__lane_put(ga2d__step_context *c, ga2d__group *g, int ci)
 {
-    ga2d__constraint *c = &w->constraints[ci];
+    ga2d_world *w = c->world;
+    ga2d__constraint *cc = &c->constraints[ci];
     int l = g->count++, e;
-    g->a[l] = c->a;
-    g->b[l] = c->b;
+    g->a[l] = cc->a;
+    g->b[l] = cc->b;
     g->con[l] = ci;
-    g->contact[l] = c->contact;
-    GA2D__LANE(g->move_a, l) = -(c->inv_ma != 0 || c->inv_ia != 0);
-    GA2D__LANE(g->move_b, l) = -(c->inv_mb != 0 || c->inv_ib != 0);
-    c->lane = (int)(g - w->groups) * GA2D__LANES + l;
-    ga2d__lane_write(g, l, c, ga2d_vec_sub(w->bodies[c->b].center, w->bodies[c->a].center), c->to_static ? stiff : soft,
-                     none);
+    GA2D__LANE(g->move_a, l) = -(cc->inv_ma != 0 || cc->inv_ia != 0);
+    GA2D__LANE(g->move_b, l) = -(cc->inv_mb != 0 || cc->inv_ib != 0);
+    cc->lane = (int)(g - c->groups) * GA2D__LANES + l;
     /* a body the lane does not move: not gathered per pass (static or
        asleep), it is seen as it is, at rest where the step began */
     for (e = 0; e < 2; ++e) {
-        int slot = e ? c->b : c->a;
+        int slot = e ? cc->b : cc->a;
         const ga2d__body *b = &w->bodies[slot];
-        ga2d__sbody *s = &w->sbodies[slot];
+        ga2d__sbody *s = &c->sbodies[slot];
         if (b->move_index >= 0) continue;
         s->vx = b->v.x;
         s->vy = b->v.y;
         s->w = b->w;
         s->pad = s->dpx = s->dpy = s->dqs = 0;
         s->dqc = 1;
-    }
-}
-
-/* The lanes a group was closed without: the dummy slot, all zero. */
-static void ga2d__group_pad(ga2d_world *w, ga2d__group *g, const ga2d__constraint *none, const ga2d__soft *zero)
-{
-    int l;
-    for (l = g->count; l < GA2D__LANES; ++l) {
-        g->a[l] = g->b[l] = w->body_used;
-        g->con[l] = g->contact[l] = -1;
-        GA2D__LANE(g->move_a, l) = GA2D__LANE(g->move_b, l) = 0;
-        ga2d__lane_write(g, l, none, ga2d_vec_make(0, 0), zero, none);
     }
 }
 
@@ -5269,87 +4888,107 @@ static void ga2d__group_open(ga2d__group *g)
 
 /* The first group from gi on with a free lane (or group_count): full
    groups point past themselves, and the path is halved as it is walked. */
-static int ga2d__group_free(ga2d_world *w, int gi)
+static int ga2d__group_free(ga2d__step_context *c, int gi)
 {
-    while (gi < w->group_count && w->groups[gi].count == GA2D__LANES) {
-        int next = w->groups[gi].skip;
-        if (next < w->group_count && w->groups[next].count == GA2D__LANES) w->groups[gi].skip = w->groups[next].skip;
+    while (gi < c->group_count && c->groups[gi].count == GA2D__LANES) {
+        int next = c->groups[gi].skip;
+        if (next < c->group_count && c->groups[next].count == GA2D__LANES) c->groups[gi].skip = c->groups[next].skip;
         gi = next;
     }
     return gi;
 }
 
-/* Packs the constraints, in their canonical order, into groups of lanes
-   that share no moved body.  A constraint goes to the first group with a
-   free lane after the last group that moves either of its bodies (or to a
-   new one), so two constraints on one body are solved in their canonical
-   order: the passes give what one constraint at a time in that order
-   would, up to rounding, and the groups only find what can run side by
-   side.  A pyramid fills nearly every lane.  The solver bodies and the
-   groups are sized here; out of memory, the step reports it and no
-   contact is solved. */
-static void ga2d__batch(ga2d_world *w, ga2d_real h)
+/* Book-keeping: packs the constraints, in their canonical order, into
+   groups of lanes that share no moved body.  A constraint goes to the
+   first group with a free lane after the last group that moves either of
+   its bodies (or to a new one), so two constraints on one body are solved
+   in their canonical order: the passes give what one constraint at a time
+   in that order would, up to rounding, and the groups only find what can
+   run side by side.  A pyramid fills nearly every lane.  The solver
+   bodies and the groups are sized here; out of memory, the step reports
+   it and no contact is solved. */
+static void ga2d__assign_lanes(ga2d__step_context *c)
 {
-    ga2d_real inv_h = 1 / h;
-    ga2d_real hz = w->def.contact_hertz < GA2D__R(0.25) * inv_h ? w->def.contact_hertz : GA2D__R(0.25) * inv_h;
-    ga2d__soft soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
-    ga2d__soft stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
+    ga2d_world *w = c->world;
     int used = w->body_used, i;
     int *last;
     ga2d__sbody *dummy;
-    ga2d__constraint none;
-    ga2d__soft zero;
-    w->group_count = 0;
-    if (w->constraint_count == 0) return;
-    /* groups grow as they open (below): a group holds up to GA2D__LANES
-       constraints, so room for one per constraint (the worst case, every
-       constraint on one body) was 632 bytes per touching contact */
-    if (!ga2d__grow(&w->mem, (void **)&w->sbodies, &w->sbody_capacity, used + 1, sizeof *w->sbodies) ||
-        !ga2d__grow(&w->mem, (void **)&w->last_group, &w->last_group_capacity, used, sizeof *w->last_group)) {
-        w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+    c->group_count = 0;
+    if (c->constraint_count == 0) return;
+    /* groups grow as they open (below), not to one per constraint (the
+       worst case, every constraint on one body): a group holds up to
+       GA2D__LANES constraints, so that would be GA2D__LANES times the room */
+    if (!ga2d__grow(&w->mem, (void **)&c->sbodies, &c->sbody_capacity, used + 1, sizeof *c->sbodies) ||
+        !ga2d__grow(&w->mem, (void **)&c->last_group, &c->last_group_capacity, used, sizeof *c->last_group)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
-    memset(&none, 0, sizeof none);
-    memset(&zero, 0, sizeof zero);
-    last = w->last_group;
+    last = c->last_group;
     for (i = 0; i < used; ++i) last[i] = -1;
-    dummy = &w->sbodies[used];
+    dummy = &c->sbodies[used];
     memset(dummy, 0, sizeof *dummy);
     dummy->dqc = 1;
-    for (i = 0; i < w->constraint_count; ++i) {
-        const ga2d__constraint *c = &w->constraints[i];
-        int ma = c->inv_ma != 0 || c->inv_ia != 0, mb = c->inv_mb != 0 || c->inv_ib != 0, gi = 0;
+    for (i = 0; i < c->constraint_count; ++i) {
+        const ga2d__constraint *cc = &c->constraints[i];
+        int ma = cc->inv_ma != 0 || cc->inv_ia != 0, mb = cc->inv_mb != 0 || cc->inv_ib != 0, gi = 0;
         ga2d__group *g;
-        if (ma && last[c->a] >= gi) gi = last[c->a] + 1;
-        if (mb && last[c->b] >= gi) gi = last[c->b] + 1;
-        gi = ga2d__group_free(w, gi);
-        if (gi == w->group_count) {
-            if (!ga2d__grow(&w->mem, (void **)&w->groups, &w->group_capacity, w->group_count + 1, sizeof *w->groups)) {
-                w->group_count = 0;
-                w->step_error = GA2D_ERR_OUT_OF_MEMORY;
+        if (ma && last[cc->a] >= gi) gi = last[cc->a] + 1;
+        if (mb && last[cc->b] >= gi) gi = last[cc->b] + 1;
+        gi = ga2d__group_free(c, gi);
+        if (gi == c->group_count) {
+            if (!ga2d__grow(&w->mem, (void **)&c->groups, &c->group_capacity, c->group_count + 1, sizeof *c->groups)) {
+                c->group_count = 0;
+                c->error = GA2D_ERR_OUT_OF_MEMORY;
                 return;
             }
-            ga2d__group_open(&w->groups[w->group_count++]);
+            ga2d__group_open(&c->groups[c->group_count++]);
         }
-        g = &w->groups[gi];
-        ga2d__lane_put(w, g, i, &soft, &stiff, &none);
+        g = &c->groups[gi];
+        ga2d__lane_put(c, g, i);
         if (g->count == GA2D__LANES) g->skip = gi + 1;
-        if (ma) last[c->a] = gi;
-        if (mb) last[c->b] = gi;
+        if (ma) last[cc->a] = gi;
+        if (mb) last[cc->b] = gi;
     }
-    for (i = 0; i < w->group_count; ++i) ga2d__group_pad(w, &w->groups[i], &none, &zero);
 }
 
-/* The moving bodies' velocities and motion since the step began, into
-   the solver bodies, before a run of passes. */
-static void ga2d__gather(ga2d_world *w)
+/* Stage, over the groups: each lane takes its constraint's data (d: B's
+   centre less A's); the lanes a group was closed without take the dummy
+   slot and all zeros. */
+static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
 {
+    ga2d_world *w = c->world;
+    ga2d__constraint none;
+    ga2d__soft zero;
+    int gi, l;
+    memset(&none, 0, sizeof none);
+    memset(&zero, 0, sizeof zero);
+    for (gi = begin; gi < end; ++gi) {
+        ga2d__group *g = &c->groups[gi];
+        for (l = 0; l < g->count; ++l) {
+            const ga2d__constraint *cc = &c->constraints[g->con[l]];
+            ga2d_vec d = ga2d_vec_sub(w->bodies[cc->b].center, w->bodies[cc->a].center);
+            ga2d__lane_write(g, l, cc, d, cc->to_static ? &c->stiff : &c->soft, &none);
+        }
+        for (; l < GA2D__LANES; ++l) {
+            g->a[l] = g->b[l] = w->body_used;
+            g->con[l] = -1;
+            GA2D__LANE(g->move_a, l) = GA2D__LANE(g->move_b, l) = 0;
+            ga2d__lane_write(g, l, &none, ga2d_vec_make(0, 0), &zero, &none);
+        }
+    }
+}
+
+/* Stage, over the moving bodies: their velocities and motion since the
+   step began, into the solver bodies, before a run of passes. */
+static void ga2d__gather(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
     int k;
-    if (w->group_count == 0) return;
-    for (k = 0; k < w->moving_count; ++k) {
+    if (c->group_count == 0) return;
+    for (k = begin; k < end; ++k) {
         int slot = w->moving[k];
         const ga2d__body *b = &w->bodies[slot];
-        ga2d__sbody *s = &w->sbodies[slot];
+        ga2d__sbody *s = &c->sbodies[slot];
         ga2d_rotor dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0));
         s->vx = b->v.x;
         s->vy = b->v.y;
@@ -5362,15 +5001,16 @@ static void ga2d__gather(ga2d_world *w)
     }
 }
 
-/* ... and the velocities back after them. */
-static void ga2d__scatter(ga2d_world *w)
+/* Stage, over the moving bodies: the velocities back after them. */
+static void ga2d__scatter(ga2d__step_context *c, int begin, int end)
 {
+    ga2d_world *w = c->world;
     int k;
-    if (w->group_count == 0) return;
-    for (k = 0; k < w->moving_count; ++k) {
+    if (c->group_count == 0) return;
+    for (k = begin; k < end; ++k) {
         int slot = w->moving[k];
         ga2d__body *b = &w->bodies[slot];
-        const ga2d__sbody *s = &w->sbodies[slot];
+        const ga2d__sbody *s = &c->sbodies[slot];
         if (b->type != GA2D_BODY_DYNAMIC) continue;
         b->v = ga2d_vec_make(s->vx, s->vy);
         b->w = s->w;
@@ -5378,9 +5018,9 @@ static void ga2d__scatter(ga2d_world *w)
 }
 
 /* Lane `lane` (group * GA2D__LANES + lane) forgets its impulses (containment). */
-static void ga2d__lane_clear(ga2d_world *w, int lane)
+static void ga2d__lane_clear(ga2d__step_context *c, int lane)
 {
-    ga2d__group *g = &w->groups[lane / GA2D__LANES];
+    ga2d__group *g = &c->groups[lane / GA2D__LANES];
     int k;
     for (k = 0; k < 2; ++k) {
         GA2D__LANE(g->nimp[k], lane % GA2D__LANES) = 0;
@@ -5388,50 +5028,51 @@ static void ga2d__lane_clear(ga2d_world *w, int lane)
     }
 }
 
-/* The groups' accumulated impulses back to the contacts, to warm-start
-   the next step (straight to the manifolds: one pass over scattered
-   memory, not two). */
-static void ga2d__unbatch(ga2d_world *w)
+/* Stage, over the groups: the accumulated impulses back to the contacts,
+   to warm-start the next step (straight to the manifolds: one pass over
+   scattered memory, not two). */
+static void ga2d__store_impulses(ga2d__step_context *c, int begin, int end)
 {
+    ga2d_world *w = c->world;
     int gi, l, k;
-    for (gi = 0; gi < w->group_count; ++gi) {
-        const ga2d__group *g = &w->groups[gi];
+    for (gi = begin; gi < end; ++gi) {
+        const ga2d__group *g = &c->groups[gi];
         for (l = 0; l < g->count; ++l) {
-            ga2d_manifold *m = &w->contacts[g->contact[l]].manifold;
+            ga2d_manifold *m = &w->contacts[c->constraints[g->con[l]].contact].manifold;
             for (k = 0; k < m->count; ++k) {
                 m->points[k].normal_impulse = GA2D__LANE(g->nimp[k], l);
                 m->points[k].tangent_impulse = GA2D__LANE(g->timp[k], l);
             }
         }
     }
-    w->group_count = 0;
 }
 
-/* Non-linear Gauss-Seidel: moves the bodies apart directly, 0.2 of the
+/* Stage, over the constraints (in order: Gauss-Seidel): non-linear
+   Gauss-Seidel moves the bodies apart directly, 0.2 of the
    overlap past slop per pass, at most 0.2 m (in metres) at a time. */
-static void ga2d__solve_positions(ga2d_world *w)
+static void ga2d__push_apart(ga2d__step_context *c, int begin, int end)
 {
+    ga2d_world *w = c->world;
     ga2d_real max_fix = GA2D__R(0.2) * w->def.length_units_per_meter;
     int i, k;
-    ga2d__refresh_turns(w);
-    for (i = 0; i < w->constraint_count; ++i) {
-        ga2d__constraint *c = &w->constraints[i];
-        ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
-        for (k = 0; k < c->count; ++k) {
-            ga2d__cpoint *p = &c->p[k];
+    for (i = begin; i < end; ++i) {
+        ga2d__constraint *cc = &c->constraints[i];
+        ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
+        for (k = 0; k < cc->count; ++k) {
+            ga2d__cpoint *p = &cc->p[k];
             ga2d_vec ra, rb, P;
-            ga2d_real s = ga2d__point_now(c, a, b, p, &ra, &rb), fix = GA2D__R(0.2) * (s + w->slop), lambda;
+            ga2d_real s = ga2d__point_now(cc, a, b, p, &ra, &rb), fix = GA2D__R(0.2) * (s + w->slop), lambda;
             fix = fix < -max_fix ? -max_fix : (fix > 0 ? 0 : fix);
-            lambda = -ga2d__effective_mass(c, ra, rb, c->normal) * fix; /* at the anchors as they are now */
-            P = ga2d_vec_scale(c->normal, lambda);
-            a->center = ga2d_vec_sub(a->center, ga2d_vec_scale(P, c->inv_ma));
-            b->center = ga2d_vec_add(b->center, ga2d_vec_scale(P, c->inv_mb));
-            if (c->inv_ia != 0) {
-                a->q = ga2d__turn(a->q, -c->inv_ia * ga2d_wedge(ra, P), GA2D_ROTATION_LINEAR);
+            lambda = -ga2d__effective_mass(cc, ra, rb, cc->normal) * fix; /* at the anchors as they are now */
+            P = ga2d_vec_scale(cc->normal, lambda);
+            a->center = ga2d_vec_sub(a->center, ga2d_vec_scale(P, cc->inv_ma));
+            b->center = ga2d_vec_add(b->center, ga2d_vec_scale(P, cc->inv_mb));
+            if (cc->inv_ia != 0) {
+                a->q = ga2d__turn(a->q, -cc->inv_ia * ga2d_wedge(ra, P), GA2D_ROTATION_LINEAR);
                 a->dq = ga2d_rotor_mul(a->q, ga2d_rotor_inverse(a->q0));
             }
-            if (c->inv_ib != 0) {
-                b->q = ga2d__turn(b->q, c->inv_ib * ga2d_wedge(rb, P), GA2D_ROTATION_LINEAR);
+            if (cc->inv_ib != 0) {
+                b->q = ga2d__turn(b->q, cc->inv_ib * ga2d_wedge(rb, P), GA2D_ROTATION_LINEAR);
                 b->dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0));
             }
         }
@@ -5451,56 +5092,55 @@ static void ga2d__solve_positions(ga2d_world *w)
    turned around where it is, leaves at sqrt(e^2 v_i^2 - 2 a s), what it
    would have at height s after a true bounce.  Restitution mixes as the
    larger of the two. */
-static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
+static void ga2d__restitute(ga2d__step_context *c)
 {
+    ga2d_world *w = c->world;
     ga2d_real threshold = w->def.restitution_threshold * w->def.length_units_per_meter;
-    ga2d_real h = dt / (ga2d_real)w->def.substeps, look = dt + h;
+    ga2d_real h = c->h, look = c->dt + h;
     int i, k, pass, busy = 1, euler = w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER;
     for (pass = 0; pass < 32 && busy; ++pass) {
         busy = 0;
-        for (i = 0; i < w->constraint_count; ++i) {
-            ga2d__constraint *c = &w->constraints[i];
-            ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
+        for (i = 0; i < c->constraint_count; ++i) {
+            ga2d__constraint *cc = &c->constraints[i];
+            ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
             ga2d_real closing, vn[2], want[2], lambda[2];
             int hit = 0;
-            if (c->restitution == 0) continue;
-            closing = -ga2d_dot(ga2d_vec_sub(ga2d__free_accel(w, b), ga2d__free_accel(w, a)), c->normal);
+            if (cc->restitution == 0) continue;
+            closing = -ga2d_dot(ga2d_vec_sub(ga2d__free_accel(w, b), ga2d__free_accel(w, a)), cc->normal);
             closing = closing > 0 ? closing : 0;
-            for (k = 0; k < c->count; ++k) {
-                ga2d_real gap = c->p[k].separation > 0 ? c->p[k].separation : 0, vi2, leave2;
+            for (k = 0; k < cc->count; ++k) {
+                ga2d_real gap = cc->p[k].separation > 0 ? cc->p[k].separation : 0, vi2, leave2;
                 /* symplectic Euler's velocity is the one its last drift
                    used, half a kick behind the true one: its modified
                    energy v^2 + 2 g y - g h v is (v - g h/2)^2 + 2 g y up to
                    a constant.  The bounce acts on the true speed, so the
                    flight that follows is e times as fast, not e times
-                   less g h (issue 5's e^2n heights) */
-                vn[k] = ga2d_dot(ga2d__relative_velocity(a, b, c->p[k].ra, c->p[k].rb), c->normal) - (euler ? closing * h / 2 : 0);
+                   less g h, and bounce heights go as e^2n */
+                vn[k] = ga2d_dot(ga2d__relative_velocity(a, b, cc->p[k].ra, cc->p[k].rb), cc->normal) - (euler ? closing * h / 2 : 0);
                 /* closing within the step, or the first substep of the next
                    (the last relax pass brakes a point that is still apart
                    as if a substep followed; the next step would then see a
                    braked approach), or within slop of it, collides now */
                 if (vn[k] < -threshold && gap + vn[k] * look - closing * look * look / 2 <= w->slop) hit = 1;
                 vi2 = vn[k] * vn[k] + 2 * closing * gap;
-                leave2 = c->restitution * c->restitution * vi2 - 2 * closing * gap;
+                leave2 = cc->restitution * cc->restitution * vi2 - 2 * closing * gap;
                 want[k] = vn[k] < 0 ? (leave2 > 0 ? GA2D__SQRT(leave2) : 0) : vn[k]; /* leaving: as it is */
             }
             if (!hit) continue;
             busy = 1;
             lambda[0] = lambda[1] = 0;
-            if (c->count == 2 && (vn[0] >= 0 || vn[1] >= 0)) {
+            if (cc->count == 2 && (vn[0] >= 0 || vn[1] >= 0)) {
                 /* a point already leaving is not held to its speed (that
                    would push on it and add energy): only the other collides */
                 int j = vn[0] >= 0 ? 1 : 0;
-                lambda[j] = want[j] > vn[j] ? (want[j] - vn[j]) * c->p[j].normal_mass : 0;
-            } else if (c->count == 2) {
+                lambda[j] = want[j] > vn[j] ? (want[j] - vn[j]) * cc->p[j].normal_mass : 0;
+            } else if (cc->count == 2) {
                 /* K lambda = want - vn, K_ij = 1/m_a + 1/m_b + (w_ai w_aj)/I_a + (w_bi w_bj)/I_b
                    with w = r ^ n: the points' coupling through the bodies */
-                ga2d_real wa0 = ga2d_wedge(c->p[0].ra, c->normal), wa1 = ga2d_wedge(c->p[1].ra, c->normal);
-                ga2d_real wb0 = ga2d_wedge(c->p[0].rb, c->normal), wb1 = ga2d_wedge(c->p[1].rb, c->normal);
-                ga2d_real m = c->inv_ma + c->inv_mb;
-                ga2d_real k11 = m + c->inv_ia * wa0 * wa0 + c->inv_ib * wb0 * wb0;
-                ga2d_real k22 = m + c->inv_ia * wa1 * wa1 + c->inv_ib * wb1 * wb1;
-                ga2d_real k12 = m + c->inv_ia * wa0 * wa1 + c->inv_ib * wb0 * wb1;
+                const ga2d__cpoint *p0 = &cc->p[0], *p1 = &cc->p[1];
+                ga2d_real k11 = ga2d__coupling(cc, p0->ra, p0->rb, p0->ra, p0->rb);
+                ga2d_real k22 = ga2d__coupling(cc, p1->ra, p1->rb, p1->ra, p1->rb);
+                ga2d_real k12 = ga2d__coupling(cc, p0->ra, p0->rb, p1->ra, p1->rb);
                 ga2d_real det = k11 * k22 - k12 * k12, d0 = want[0] - vn[0], d1 = want[1] - vn[1];
                 if (det > GA2D__EPS * 1024 * k11 * k22) {
                     lambda[0] = (k22 * d0 - k12 * d1) / det;
@@ -5508,19 +5148,18 @@ static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
                 }
                 /* a pulling block falls back to the point that must push */
                 if (!(det > GA2D__EPS * 1024 * k11 * k22) || lambda[0] < 0 || lambda[1] < 0) {
-                    lambda[0] = d0 > 0 ? d0 * c->p[0].normal_mass : 0;
+                    lambda[0] = d0 > 0 ? d0 * cc->p[0].normal_mass : 0;
                     lambda[1] = 0;
-                    if (d1 * c->p[1].normal_mass > lambda[0]) {
-                        lambda[1] = d1 * c->p[1].normal_mass;
+                    if (d1 * cc->p[1].normal_mass > lambda[0]) {
+                        lambda[1] = d1 * cc->p[1].normal_mass;
                         lambda[0] = 0;
                     }
                 }
             } else {
-                lambda[0] = want[0] > vn[0] ? (want[0] - vn[0]) * c->p[0].normal_mass : 0;
+                lambda[0] = want[0] > vn[0] ? (want[0] - vn[0]) * cc->p[0].normal_mass : 0;
             }
-            for (k = 0; k < c->count; ++k) {
-                c->p[k].restitution_impulse += lambda[k];
-                ga2d__apply_impulse(c, a, b, c->p[k].ra, c->p[k].rb, ga2d_vec_scale(c->normal, lambda[k]));
+            for (k = 0; k < cc->count; ++k) {
+                ga2d__apply_impulse(cc, a, b, cc->p[k].ra, cc->p[k].rb, ga2d_vec_scale(cc->normal, lambda[k]));
             }
         }
     }
@@ -5530,6 +5169,797 @@ static void ga2d__restitute(ga2d_world *w, ga2d_real dt)
        ran only if the first collided */
     for (k = 0; k < w->moving_count && pass > 1; ++k)
         if (!ga2d__state_finite(&w->bodies[w->moving[k]])) ga2d__contain(w, w->moving[k]);
+}
+
+/* ============================================================ world step */
+/* RK4's per-body scratch for one substep: the start state, the derivative
+   of the last stage and the weighted sum of the stages. */
+struct ga2d__rk4 {
+    ga2d_vec x0, v0, kx, kv, sx, sv;
+    ga2d_rotor q0;
+    ga2d_real w0, kth, kw, sth, sw;
+};
+
+/* ------------------------------------------------- the context's memory */
+/* RK4's scratch for n moving bodies: kept at the moving list's capacity,
+   so that a step never allocates it. */
+static int ga2d__reserve_rk4(ga2d_world *w, int n)
+{
+    return ga2d__grow(&w->mem, (void **)&w->step.rk4, &w->step.rk4_capacity, n, sizeof *w->step.rk4);
+}
+
+/* The solver's arrays given back (ga2d_world_compact); the next step
+   allocates what it needs. */
+static void ga2d__step_release(ga2d_world *w)
+{
+    ga2d__step_context *c = &w->step;
+    ga2d__release(w, (void **)&c->constraints, &c->constraint_capacity, sizeof *c->constraints);
+    c->constraint_count = 0;
+    ga2d__release(w, (void **)&c->groups, &c->group_capacity, sizeof *c->groups);
+    c->group_count = 0;
+    ga2d__release(w, (void **)&c->sbodies, &c->sbody_capacity, sizeof *c->sbodies);
+    ga2d__release(w, (void **)&c->last_group, &c->last_group_capacity, sizeof *c->last_group);
+    ga2d__release(w, (void **)&c->changed, &c->changed_capacity, sizeof *c->changed);
+}
+
+/* Everything the context holds, freed with its world. */
+static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
+{
+    ga2d__free(a, c->rk4, (size_t)c->rk4_capacity * sizeof *c->rk4);
+    ga2d__free(a, c->constraints, (size_t)c->constraint_capacity * sizeof *c->constraints);
+    ga2d__free(a, c->groups, (size_t)c->group_capacity * sizeof *c->groups);
+    ga2d__free(a, c->sbodies, (size_t)c->sbody_capacity * sizeof *c->sbodies);
+    ga2d__free(a, c->last_group, (size_t)c->last_group_capacity * sizeof *c->last_group);
+    ga2d__free(a, c->changed, (size_t)c->changed_capacity * sizeof *c->changed);
+}
+
+/* Runs the force callback at time t on the bodies' current state.  The
+   field never reads a state that is not finite: a body driven there
+   since the last containment (a restitution above 1, an RK4 stage, a
+   solver pass) is contained first. */
+static void ga2d__eval_field(ga2d_world *w, double t)
+{
+    int k;
+    if (!w->def.force_callback || w->destroy_pending) return; /* destroyed from it: no more calls */
+    for (k = 0; k < w->moving_count; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->field_force = ga2d_vec_make(0, 0);
+        b->field_torque = 0;
+        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
+    }
+    w->lock |= GA2D__LOCK_FIELD;
+    w->eval_time = t;
+    w->def.force_callback(w, w->def.force_context);
+    w->lock &= ~GA2D__LOCK_FIELD;
+    ++w->counters.force_evaluations;
+}
+
+/* a = g s + (F_user + F_field)/m and alpha = (tau_user + tau_field)/I */
+static void ga2d__acceleration(const ga2d_world *w, const ga2d__body *b, ga2d_vec *a, ga2d_real *alpha)
+{
+    ga2d_vec f = ga2d_vec_add(b->force, b->field_force);
+    *a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(f, b->inv_mass));
+    *alpha = (b->torque + b->field_torque) * b->inv_inertia;
+}
+
+/* Damping as the implicit factor 1/(1 + c h): stable for any c h. */
+static void ga2d__damp(ga2d__body *b, ga2d_real h)
+{
+    if (b->linear_damping > 0) b->v = ga2d_vec_scale(b->v, 1 / (1 + h * b->linear_damping));
+    if (b->angular_damping > 0) b->w *= 1 / (1 + h * b->angular_damping);
+}
+
+/* Position update x += h v, q <- q exp(w h e12).  A body that does not
+   turn (fixed rotation, or w = 0) skips the rotor altogether. */
+static void ga2d__drift(ga2d_world *w, ga2d__body *b, ga2d_real h)
+{
+    b->center = ga2d_vec_add(b->center, ga2d_vec_scale(b->v, h));
+    if (b->w != 0) {
+        b->q = ga2d__turn(b->q, b->w * h, w->def.rotation_update);
+        ++w->counters.rotation_updates;
+    }
+    ++w->counters.integrated_bodies;
+}
+
+/* ----------------------------------------------- velocities and positions */
+/* Each integrator is split into a velocity phase and a position phase, so
+   that the contact solver can act on the velocities in between:
+   symplectic Euler kicks by h then drifts; Verlet kicks by h/2, drifts,
+   evaluates the field and kicks by h/2 again; RK4 runs its four stages for
+   the free motion, and the position phase adds to RK4's displacement what
+   the contacts changed in the velocity (h dv). */
+
+/* Containment: a body whose state is no longer finite (an absurd force,
+   impulse or field drove it there) is put back where the step began, at
+   rest and without forces, before anything it touches can see it; the
+   step reports GA2D_ERR_NOT_FINITE and ga2d_world_error_body names the
+   lowest slot of them (not the first met: the moving list's order is not
+   a snapshot's).  Its neighbours stay finite. */
+static void ga2d__contain(ga2d_world *w, int slot)
+{
+    ga2d__body *b = &w->bodies[slot];
+    b->center = b->center0;
+    b->q = b->q0;
+    b->v = ga2d_vec_make(0, 0);
+    b->w = 0;
+    b->force = ga2d_vec_make(0, 0);
+    b->torque = 0;
+    b->field_valid = 0;
+    b->sleep_time = 0;
+    {
+        /* its contacts' accumulated impulses may hold what drove it: they
+           restart from zero, or warm starting and the passes that follow
+           would hand the NaN back to it and on to its neighbours */
+        int i, k;
+        for (i = 0; i < w->step.constraint_count; ++i) {
+            ga2d__constraint *c = &w->step.constraints[i];
+            if (c->a != slot && c->b != slot) continue;
+            for (k = 0; k < c->count; ++k) {
+                ga2d_manifold_point *mp = &w->contacts[c->contact].manifold.points[k];
+                c->p[k].normal_impulse = c->p[k].tangent_impulse = 0;
+                mp->normal_impulse = mp->tangent_impulse = 0;
+            }
+            if (w->step.group_count > 0) ga2d__lane_clear(&w->step, c->lane);
+        }
+    }
+    if (w->step.error == GA2D_OK) w->step.error = GA2D_ERR_NOT_FINITE;
+    if (w->step.error_slot < 0 || slot < w->step.error_slot) w->step.error_slot = slot;
+}
+
+/* Shortens *v to length max if longer (returns 1 then); the length is
+   taken after scaling by the larger component, so a huge but finite v is
+   capped, not turned into inf or NaN. */
+static int ga2d__cap_length(ga2d_vec *v, ga2d_real max)
+{
+    ga2d_real ax = GA2D__FABS(v->x), ay = GA2D__FABS(v->y), m = ax > ay ? ax : ay;
+    if (m > max * GA2D__R(0.7)) { /* |v| may exceed max: measure it safely */
+        ga2d_vec u = ga2d_vec_scale(*v, 1 / m);
+        ga2d_real len = m * GA2D__SQRT(ga2d_dot(u, u));
+        if (len > max) {
+            *v = ga2d_vec_scale(u, m * (max / len));
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
+{
+    if (!(*th > max || *th < -max)) return 0;
+    *th = *th > 0 ? max : -max;
+    return 1;
+}
+
+/* The velocity cap and the largest turn per substep, as Box2D: beyond
+   them a body is tunnelling anyway; each capped body counts in
+   speed_caps.  Returns 0 for a velocity that is not finite. */
+static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
+{
+    if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) return 0;
+    w->counters.speed_caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
+    w->counters.speed_caps += ga2d__cap_turn(&b->w, GA2D__MAX_TURN / h);
+    return 1;
+}
+
+/* A dynamic body's velocities capped, or the body contained when they are
+   not finite. */
+static void ga2d__cap_body(ga2d__step_context *c, ga2d__body *b, int slot)
+{
+    if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(c->world, b, c->h)) ga2d__contain(c->world, slot);
+}
+
+/* Stage, over the moving bodies: caches the field's acceleration (Verlet). */
+static void ga2d__cache_field(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->field_accel = ga2d_vec_scale(b->field_force, b->inv_mass);
+        b->field_alpha = b->field_torque * b->inv_inertia;
+        b->field_valid = 1;
+    }
+}
+
+/* Half a kick with the cached field plus gravity and the user's forces. */
+static void ga2d__verlet_kick(ga2d_world *w, ga2d__body *b, ga2d_real half)
+{
+    ga2d_vec a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale),
+                              ga2d_vec_add(b->field_accel, ga2d_vec_scale(b->force, b->inv_mass)));
+    b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, half));
+    b->w += (b->field_alpha + b->torque * b->inv_inertia) * half;
+}
+
+/* Classic RK4 on (x, theta, v, w), theta the turn since the substep began
+   (rotations in the plane commute, so q = q0 exp(theta e12)); damping is
+   the continuous -c v.  The velocity phase leaves every body at its start
+   state with its free end velocity; the displacement waits in the
+   scratch.  Without a force callback no stage writes a trial state and
+   nothing is evaluated.  These four stages run over the moving bodies. */
+static void ga2d__rk4_begin(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    int k;
+    for (k = begin; k < end; ++k) {
+        const ga2d__body *b = &w->bodies[w->moving[k]];
+        memset(&s[k], 0, sizeof s[k]);
+        s[k].x0 = b->center;
+        s[k].q0 = b->q;
+        s[k].v0 = b->v;
+        s[k].w0 = b->w;
+    }
+}
+
+/* The trial state of the stage at rk4_at h, for the field to read. */
+static void ga2d__rk4_trial(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    ga2d_real at = c->rk4_at * c->h;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->center = ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].kx, at));
+        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, at));
+        b->w = s[k].w0 + s[k].kw * at;
+        b->q = s[k].kth * at != 0 ? ga2d__turn(s[k].q0, s[k].kth * at, w->def.rotation_update) : s[k].q0;
+    }
+}
+
+/* The stage's derivative, added to the weighted sum. */
+static void ga2d__rk4_derive(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    ga2d_real at = c->rk4_at * c->h, weight = c->rk4_weight;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d_vec v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, at));
+        ga2d_real om = s[k].w0 + s[k].kw * at;
+        s[k].kx = v;
+        s[k].kth = om;
+        if (b->type == GA2D_BODY_DYNAMIC) {
+            ga2d_vec a;
+            ga2d_real alpha;
+            ga2d__acceleration(w, b, &a, &alpha);
+            s[k].kv = ga2d_vec_sub(a, ga2d_vec_scale(v, b->linear_damping));
+            s[k].kw = alpha - b->angular_damping * om;
+        }
+        s[k].sx = ga2d_vec_add(s[k].sx, ga2d_vec_scale(s[k].kx, weight));
+        s[k].sv = ga2d_vec_add(s[k].sv, ga2d_vec_scale(s[k].kv, weight));
+        s[k].sth += s[k].kth * weight;
+        s[k].sw += s[k].kw * weight;
+    }
+}
+
+/* The free end velocities, capped, from the start state. */
+static void ga2d__rk4_end(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    ga2d_real h = c->h;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->center = s[k].x0;
+        b->q = s[k].q0;
+        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].sv, h / 6));
+        b->w = s[k].w0 + s[k].sw * (h / 6);
+        s[k].kv = b->v; /* the free end velocities, for the position phase */
+        s[k].kw = b->w;
+        ga2d__cap_body(c, b, w->moving[k]);
+    }
+}
+
+/* Stage, over the moving bodies: symplectic Euler's kick v += h a,
+   w += h alpha, then damping and the caps. */
+static void ga2d__kick(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d_real h = c->h;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d_vec a;
+        ga2d_real alpha;
+        if (b->type != GA2D_BODY_DYNAMIC) continue;
+        ga2d__acceleration(w, b, &a, &alpha);
+        b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, h));
+        b->w += alpha * h;
+        ga2d__damp(b, h);
+        ga2d__cap_body(c, b, w->moving[k]);
+    }
+}
+
+/* Stage, over the moving bodies: Verlet's opening half kick, capped. */
+static void ga2d__open_kick(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (b->type != GA2D_BODY_DYNAMIC) continue;
+        ga2d__verlet_kick(w, b, c->h / 2);
+        ga2d__cap_body(c, b, w->moving[k]);
+    }
+}
+
+/* Whether some moving body lacks its cached field (Verlet). */
+static int ga2d__field_stale(const ga2d_world *w)
+{
+    int k;
+    for (k = 0; k < w->moving_count; ++k)
+        if (!w->bodies[w->moving[k]].field_valid) return 1;
+    return 0;
+}
+
+/* The velocity phase of the world's integrator, at the substep's start. */
+static void ga2d__integrate_velocities(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int n = w->moving_count, stage;
+    if (w->def.integrator == GA2D_INTEGRATOR_RK4) {
+        static const ga2d_real at[4] = {0, GA2D__R(0.5), GA2D__R(0.5), 1};
+        static const ga2d_real weight[4] = {1, 2, 2, 1};
+        GA2D_ASSERT(c->rk4_capacity >= n);
+        ga2d__run(c, ga2d__rk4_begin, n);
+        for (stage = 0; stage < 4; ++stage) {
+            c->rk4_at = at[stage];
+            c->rk4_weight = weight[stage];
+            if (w->def.force_callback) {
+                ga2d__run(c, ga2d__rk4_trial, n);
+                ga2d__eval_field(w, c->t + (double)(at[stage] * c->h));
+            }
+            ga2d__run(c, ga2d__rk4_derive, n);
+        }
+        ga2d__run(c, ga2d__rk4_end, n);
+    } else if (w->def.integrator == GA2D_INTEGRATOR_VERLET) {
+        if (w->def.force_callback && ga2d__field_stale(w)) {
+            ga2d__eval_field(w, c->t);
+            ga2d__run(c, ga2d__cache_field, n);
+        }
+        ga2d__run(c, ga2d__open_kick, n);
+    } else {
+        ga2d__eval_field(w, c->t);
+        ga2d__run(c, ga2d__kick, n);
+    }
+}
+
+/* Stage, over the moving bodies: RK4's displacement plus h times what
+   the contacts changed, under the caps the velocities have (the stages'
+   own velocities are not capped). */
+static void ga2d__rk4_positions(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    ga2d__rk4 *s = c->rk4;
+    ga2d_real h = c->h;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d_real th = s[k].sth * (h / 6) + (b->w - s[k].kw) * h;
+        ga2d_vec d;
+        b->center = ga2d_vec_add(ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].sx, h / 6)),
+                                 ga2d_vec_scale(ga2d_vec_sub(b->v, s[k].kv), h));
+        d = ga2d_vec_sub(b->center, s[k].x0);
+        if (ga2d__cap_length(&d, GA2D__MAX_SPEED * w->def.length_units_per_meter * h)) b->center = ga2d_vec_add(s[k].x0, d);
+        ga2d__cap_turn(&th, GA2D__MAX_TURN);
+        if (th != 0) {
+            b->q = ga2d__turn(s[k].q0, th, w->def.rotation_update);
+            ++w->counters.rotation_updates;
+        }
+        ++w->counters.integrated_bodies;
+        /* a body contained in the velocity phase still has its stages'
+           sums here: contain it again before the solver passes that
+           follow can spread its NaN through the contacts */
+        if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) ga2d__contain(w, w->moving[k]);
+    }
+}
+
+/* Stage, over the moving bodies: x += h v, q <- q exp(w h e12). */
+static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) ga2d__drift(w, &w->bodies[w->moving[k]], c->h);
+}
+
+/* Stage, over the moving bodies: Verlet's closing half kick and damping.
+   It is capped too: uncapped, a stiff field (a drag of k h / m >> 2) left
+   the step with any speed or turn, and the next step's contacts turned
+   that into NaN. */
+static void ga2d__close_kick(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (b->type != GA2D_BODY_DYNAMIC) continue;
+        ga2d__verlet_kick(w, b, c->h / 2);
+        ga2d__damp(b, c->h);
+        ga2d__cap_body(c, b, w->moving[k]);
+    }
+}
+
+/* The position phase of the world's integrator, ending the substep. */
+static void ga2d__integrate_positions(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int n = w->moving_count;
+    if (w->def.integrator == GA2D_INTEGRATOR_RK4) {
+        ga2d__run(c, ga2d__rk4_positions, n);
+        return;
+    }
+    ga2d__run(c, ga2d__drift_bodies, n);
+    if (w->def.integrator != GA2D_INTEGRATOR_VERLET) return;
+    if (w->def.force_callback) {
+        ga2d__eval_field(w, c->t + (double)c->h);
+        ga2d__run(c, ga2d__cache_field, n);
+    }
+    ga2d__run(c, ga2d__close_kick, n);
+}
+
+/* ------------------------------------------------------- collision stages */
+/* Stage, over the moving bodies: marks each whose fat box no longer holds
+   what it can reach in this step. */
+static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        b->refit = ga2d__needs_refit(w, b, &b->refit_box);
+    }
+}
+
+/* Book-keeping: the marked bodies' boxes move in the tree, in the moving
+   list's order (the tree's shape depends on it), and the bodies queue
+   for pair finding; then the queue is sorted, without destroyed bodies
+   and repeats (a slot destroyed and reused). */
+static void ga2d__refit_proxies(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, n;
+    for (k = 0; k < w->moving_count; ++k) {
+        int slot = w->moving[k];
+        ga2d__body *b = &w->bodies[slot];
+        if (!b->refit) continue;
+        b->refit = 0;
+        ga2d__tree_move(ga2d__tree_of(w, b), b->proxy, b->refit_box);
+        ga2d__buffer_move(w, slot);
+    }
+    if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
+    for (k = 0, n = 0; k < w->move_count; ++k) {
+        int slot = w->move_buf[k];
+        if (w->bodies[slot].type >= 0 && w->bodies[slot].in_move && (n == 0 || w->move_buf[n - 1] != slot))
+            w->move_buf[n++] = slot;
+    }
+    w->move_count = n;
+    w->new_pair_count = 0;
+}
+
+/* Stage, over the queued bodies: each queued body (moved out of its box,
+   created, teleported, refiltered) is queried against the moving tree
+   (and, if it moves, the static tree); the pairs it finds are listed. */
+static void ga2d__find_pairs(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        int slot = w->move_buf[k];
+        ga2d__pair_query q;
+        ga2d_aabb box = ga2d__fat_box(w, &w->bodies[slot]);
+        q.w = w;
+        q.self = slot;
+        ga2d__tree_query(&w->trees[1], box, ga2d__pair_found, &q);
+        if (w->bodies[slot].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
+    }
+}
+
+/* Book-keeping: the new pairs' contacts are created in key order, so the
+   result is a function of the world's state alone, and the queue empties. */
+static void ga2d__create_pairs(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, n;
+    if (w->new_pair_count > 1) qsort(w->new_pairs, (size_t)w->new_pair_count, sizeof *w->new_pairs, ga2d__cmp_u64);
+    for (k = 0, n = w->new_pair_count; k < n; ++k) {
+        uint64_t key = w->new_pairs[k];
+        if (k > 0 && w->new_pairs[k - 1] == key) continue;
+        if (!ga2d__create_contact(w, (int)(key >> 32), (int)(uint32_t)key)) c->error = GA2D_ERR_OUT_OF_MEMORY;
+    }
+    /* out of memory: some pairs were not made, so every queued body stays
+       queued and is searched again next step (pairs already made are kept) */
+    if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
+    for (k = 0; k < w->move_count; ++k) w->bodies[w->move_buf[k]].in_move = 0;
+    w->move_count = 0;
+}
+
+/* Stage, over the contact pool: each contact whose fat boxes still
+   overlap gets a new manifold (or its last one carried along,
+   ga2d__reuse_manifold), whose points take over the impulses of the old
+   points with the same id (warm starting).  What changes in the world
+   (events, destruction, waking) is left to ga2d__contact_changes. */
+static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int ci;
+    for (ci = begin; ci < end; ++ci) {
+        ga2d__contact *ct = &w->contacts[ci];
+        const ga2d__body *a, *b;
+        ga2d_transform xa, xb;
+        ga2d_manifold m;
+        int i, j, touching;
+        if (ct->next_free != -2) continue;
+        a = &w->bodies[ct->a];
+        b = &w->bodies[ct->b];
+        /* a pair with nothing awake that moves has nothing new to say */
+        if (!(a->awake && a->type != GA2D_BODY_STATIC) && !(b->awake && b->type != GA2D_BODY_STATIC)) continue;
+        if (!ga2d_aabb_overlaps(ga2d__fat_box(w, a), ga2d__fat_box(w, b))) {
+            ct->flags = GA2D__CONTACT_DISJOINT;
+            c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
+            continue;
+        }
+        xa = ga2d__body_xf(a);
+        xb = ga2d__body_xf(b);
+        if (ga2d__reuse_manifold(w, ct, a, b, xa, xb)) {
+            ++w->counters.manifolds_carried;
+        } else {
+            /* keep points as far apart as the pair can close in one step:
+               speculative points only let bodies approach up to the gap */
+            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->v, a->v)) + GA2D__FABS(a->w) * a->extent +
+                              GA2D__FABS(b->w) * b->extent;
+            ga2d__collide(&a->polygon, xa, &b->polygon, xb, w->slop, w->speculative + reach * c->dt, &m);
+            ga2d__hold_manifold(&ct->held, xa, xb, &m);
+            for (i = 0; i < m.count; ++i)
+                for (j = 0; j < ct->manifold.count; ++j)
+                    if (ct->manifold.points[j].id == m.points[i].id) {
+                        m.points[i].normal_impulse = ct->manifold.points[j].normal_impulse;
+                        m.points[i].tangent_impulse = ct->manifold.points[j].tangent_impulse;
+                        m.points[i].persisted = 1;
+                    }
+            touching = m.count > 0;
+            if (!touching && ct->touching) { /* the end is reported with the last touching manifold */
+                ct->flags |= GA2D__CONTACT_ENDED;
+                ct->end_normal = m.normal;
+            } else {
+                ct->manifold = m;
+            }
+            if (touching && !ct->touching) ct->flags |= GA2D__CONTACT_BEGAN;
+            ct->touching = touching;
+        }
+        if (ct->touching && (!a->awake || !b->awake)) ct->flags |= GA2D__CONTACT_WAKES;
+        if (ct->flags) c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
+    }
+}
+
+/* The next contact from ci on that the narrowphase flagged, or -1. */
+static int ga2d__next_changed(const ga2d__step_context *c, int ci, int used)
+{
+    for (; ci < used; ci = (ci | 63) + 1) {
+        uint64_t bits = c->changed[ci >> 6] >> (ci & 63);
+        if (bits) {
+            while (!(bits & 1)) {
+                bits >>= 1;
+                ++ci;
+            }
+            return ci;
+        }
+    }
+    return -1;
+}
+
+/* Book-keeping before the narrowphase: a clear bit for every pool contact.
+   Out of memory, the step reports it and keeps the last manifolds. */
+static int ga2d__reserve_changes(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int words = (w->contact_used + 63) / 64;
+    if (!ga2d__grow(&w->mem, (void **)&c->changed, &c->changed_capacity, words, sizeof *c->changed)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    if (words > 0) memset(c->changed, 0, (size_t)words * sizeof *c->changed);
+    w->counters.manifolds_carried = 0;
+    return 1;
+}
+
+/* Book-keeping, in pool order, of the contacts the narrowphase flagged:
+   touching begins and ends become events, a contact whose boxes parted is
+   destroyed, and a touch wakes a sleeping island once every contact is
+   updated (waking in the stage would let the pool's order decide which
+   contacts of the woken island are updated in this step). */
+static void ga2d__contact_changes(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int ci, used = w->contact_used, wakes = 0;
+    for (ci = ga2d__next_changed(c, 0, used); ci >= 0; ci = ga2d__next_changed(c, ci + 1, used)) {
+        ga2d__contact *ct = &w->contacts[ci];
+        int f = ct->flags;
+        if (f & GA2D__CONTACT_DISJOINT) {
+            ct->flags = 0;
+            if (ct->touching) ga2d__push_event(w, 1, ct);
+            ga2d__destroy_contact(w, ci);
+            continue;
+        }
+        if (f & GA2D__CONTACT_ENDED) {
+            ga2d__push_event(w, 1, ct);
+            memset(&ct->manifold, 0, sizeof ct->manifold); /* as ga2d__collide left it: no point */
+            ct->manifold.normal = ct->end_normal;
+            ct->end_normal = ga2d_vec_make(0, 0);
+        }
+        if (f & GA2D__CONTACT_BEGAN) ga2d__push_event(w, 0, ct);
+        ct->flags = f & GA2D__CONTACT_WAKES;
+        wakes += ct->flags != 0;
+    }
+    for (ci = ga2d__next_changed(c, 0, used); ci >= 0 && wakes > 0; ci = ga2d__next_changed(c, ci + 1, used)) {
+        ga2d__contact *ct = &w->contacts[ci];
+        if (ct->next_free != -2 || !ct->flags) continue;
+        ct->flags = 0;
+        --wakes;
+        ga2d__wake(w, ct->a);
+        ga2d__wake(w, ct->b);
+    }
+}
+
+/* ------------------------------------------------------ the substep plan */
+/* A stage run once per substep (or `repeat` times in a row), over the
+   whole of its kind. */
+typedef void ga2d__stage_fn(ga2d__step_context *c);
+typedef struct ga2d__stage { ga2d__stage_fn *run; int repeat; } ga2d__stage;
+#define GA2D__MAX_STAGES 10
+
+static void ga2d__stage_gather(ga2d__step_context *c) { ga2d__run(c, ga2d__gather, c->world->moving_count); }
+static void ga2d__stage_scatter(ga2d__step_context *c) { ga2d__run(c, ga2d__scatter, c->world->moving_count); }
+static void ga2d__stage_warm_start(ga2d__step_context *c) { ga2d__run(c, ga2d__warm_start, c->group_count); }
+static void ga2d__stage_solve(ga2d__step_context *c) { ga2d__run(c, ga2d__solve_soft, c->group_count); }
+static void ga2d__stage_relax(ga2d__step_context *c) { ga2d__run(c, ga2d__solve_rigid, c->group_count); }
+static void ga2d__stage_baumgarte(ga2d__step_context *c) { ga2d__run(c, ga2d__solve_baumgarte, c->group_count); }
+static void ga2d__stage_push_apart(ga2d__step_context *c)
+{
+    ga2d__run(c, ga2d__refresh_turns, c->world->moving_count);
+    ga2d__run(c, ga2d__push_apart, c->constraint_count);
+}
+
+static int ga2d__plan_add(ga2d__stage *plan, int n, ga2d__stage_fn *run, int repeat)
+{
+    GA2D_ASSERT(n < GA2D__MAX_STAGES);
+    plan[n].run = run;
+    plan[n].repeat = repeat;
+    return n + 1;
+}
+
+/* The substep as the world's solver kind has it (ga2d_solver):
+   soft step   velocities, warm start, a soft pass, positions, a rigid
+               relax pass;
+   Baumgarte   velocities, warm start, velocity_iterations biased rigid
+               passes, positions;
+   NGS         velocities, warm start, velocity_iterations rigid passes,
+               positions, position_iterations passes that push bodies
+               apart.
+   The solver passes work on the solver bodies, gathered before them and
+   scattered after. */
+static int ga2d__plan_substep(const ga2d_world *w, ga2d__stage *plan)
+{
+    int n = 0, soft = w->def.solver == GA2D_SOLVER_SOFT_STEP, ngs = w->def.solver == GA2D_SOLVER_PGS_NGS;
+    n = ga2d__plan_add(plan, n, ga2d__integrate_velocities, 1);
+    n = ga2d__plan_add(plan, n, ga2d__stage_gather, 1);
+    if (w->def.enable_warm_starting) n = ga2d__plan_add(plan, n, ga2d__stage_warm_start, 1);
+    if (soft) n = ga2d__plan_add(plan, n, ga2d__stage_solve, 1);
+    else n = ga2d__plan_add(plan, n, ngs ? ga2d__stage_relax : ga2d__stage_baumgarte, w->def.velocity_iterations);
+    n = ga2d__plan_add(plan, n, ga2d__stage_scatter, 1);
+    n = ga2d__plan_add(plan, n, ga2d__integrate_positions, 1);
+    if (soft) {
+        n = ga2d__plan_add(plan, n, ga2d__stage_gather, 1);
+        n = ga2d__plan_add(plan, n, ga2d__stage_relax, 1);
+        n = ga2d__plan_add(plan, n, ga2d__stage_scatter, 1);
+    }
+    if (ngs) n = ga2d__plan_add(plan, n, ga2d__stage_push_apart, w->def.position_iterations);
+    return n;
+}
+
+/* Stage, over the moving bodies: a body a contained neighbour's NaN
+   reached (positions too: RK4's own stages, huge coordinates; and
+   velocities: 0 x NaN from a contact reaches kinematic bodies) is
+   contained; the user's forces are spent. */
+static void ga2d__finish_bodies(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
+        b->force = ga2d_vec_make(0, 0);
+        b->torque = 0;
+    }
+}
+
+/* The step's context: its times, what it reports, the contact softness.
+   Contacts are softer than the substep can resolve at no more than a
+   quarter of its rate, and twice as stiff against a body that cannot
+   move (it takes none of the push). */
+static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
+{
+    ga2d__step_context *c = &w->step;
+    ga2d_real hz;
+    c->world = w;
+    c->dt = dt;
+    c->h = h;
+    c->inv_h = 1 / h;
+    c->t0 = c->t = w->time;
+    c->error = GA2D_OK;
+    c->error_slot = -1;
+    hz = w->def.contact_hertz < GA2D__R(0.25) * c->inv_h ? w->def.contact_hertz : GA2D__R(0.25) * c->inv_h;
+    c->soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
+    c->stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
+    w->counters.integrated_bodies = 0;
+    w->counters.force_evaluations = 0;
+    w->counters.rotation_updates = 0;
+    w->counters.speed_caps = 0;
+}
+
+/* The step, stage by stage (a stage run with ga2d__run works over a range
+   of its items; the others are book-keeping, in order). */
+static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
+{
+    ga2d__step_context *c = &w->step;
+    ga2d__stage plan[GA2D__MAX_STAGES];
+    int s, i, r, stages;
+    ga2d__step_begin(w, dt, h);
+    /* collision: fat boxes, new pairs, manifolds */
+    ga2d__run(c, ga2d__mark_refits, w->moving_count);
+    ga2d__refit_proxies(c);
+    ga2d__run(c, ga2d__find_pairs, w->move_count);
+    ga2d__create_pairs(c);
+    w->begin_count = w->end_count = 0;
+    if (ga2d__reserve_changes(c)) {
+        ga2d__run(c, ga2d__collide_contacts, w->contact_used);
+        ga2d__contact_changes(c);
+    }
+    /* constraints, the collision phase, the lanes */
+    ga2d__order_constraints(c);
+    ga2d__run(c, ga2d__prepare_constraints, c->constraint_count);
+    ga2d__run(c, ga2d__remember_start, w->moving_count);
+    if (w->def.enable_restitution) ga2d__restitute(c);
+    ga2d__assign_lanes(c);
+    ga2d__run(c, ga2d__fill_lanes, c->group_count);
+    /* the substeps */
+    stages = ga2d__plan_substep(w, plan);
+    for (s = 0; s < w->def.substeps; ++s) {
+        c->t = c->t0 + (double)h * s; /* no drift from summing h */
+        for (i = 0; i < stages; ++i)
+            for (r = 0; r < plan[i].repeat; ++r) plan[i].run(c);
+    }
+    /* impulses kept for the next step, bodies finished, sleep */
+    ga2d__run(c, ga2d__store_impulses, c->group_count);
+    c->group_count = 0;
+    ga2d__run(c, ga2d__finish_bodies, w->moving_count);
+    w->counters.constraint_count = c->constraint_count;
+    w->time = c->t0 + (double)dt;
+    if (w->def.enable_sleep) ga2d__update_sleep(c);
+    ++w->counters.step_count;
+}
+
+GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
+{
+    ga2d_real h;
+    ga2d_result r;
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->lock) return GA2D_ERR_LOCKED;
+    if (!ga2d__finite(dt) || !(dt > 0)) return GA2D_ERR_INVALID_ARGUMENT;
+    h = dt / (ga2d_real)w->def.substeps;
+    if (!(h > 0)) return GA2D_ERR_INVALID_ARGUMENT; /* dt underflows when split */
+    /* the bounds of GA2D_MAX_TIME_STEP: g h^2 is how far gravity moves a
+       body from rest in a substep, before its contact pushes back */
+    if (dt > GA2D__R(GA2D_MAX_TIME_STEP) || ga2d__length_times(w->def.gravity, h * h) > w->slop) return GA2D_ERR_TOO_LARGE;
+    w->lock = GA2D__LOCK_STEP;
+    ga2d__enter(w);
+    ga2d__step(w, dt, h);
+    r = w->step.error;
+    w->lock = 0;
+    ga2d__leave(w); /* destroyed from the force callback or an allocator hook: gone now */
+    return r;
 }
 
 /* ================================================================ sleep */
@@ -5553,9 +5983,9 @@ static void ga2d__wake(ga2d_world *w, int slot)
         x->sleep_time = 0;
         ga2d__moving_add(w, s);
         x->field_valid = 0;
-        for (link = x->contact_head; link >= 0; link = w->contacts[link >> 1].next[link & 1]) {
+        for (link = ga2d__first_edge(w, s); link >= 0; link = ga2d__next_edge(w, link)) {
             const ga2d__contact *ct = &w->contacts[link >> 1];
-            int other = (link & 1) ? ct->a : ct->b;
+            int other = ga2d__edge_other(w, link);
             ga2d__body *o = &w->bodies[other];
             if (!ct->touching || o->awake || o->type != GA2D_BODY_DYNAMIC) continue;
             o->awake = 1;
@@ -5603,9 +6033,11 @@ static int ga2d__find(ga2d_world *w, int s)
    extent |w|) stays under 5 cm/s (in metres) and none of its contacts is
    overlapped by more than GA2D__SLEEP_MAX_OVERLAP slops; an island whose
    every body has rested for 0.5 s falls asleep and costs nothing until
-   woken. */
-static void ga2d__update_sleep(ga2d_world *w, ga2d_real dt)
+   woken.  Book-keeping: it puts bodies to sleep. */
+static void ga2d__update_sleep(ga2d__step_context *c)
 {
+    ga2d_world *w = c->world;
+    ga2d_real dt = c->dt;
     ga2d_real tol = GA2D__R(0.05) * w->def.length_units_per_meter;
     int k, i, islands = 0;
     for (k = 0; k < w->moving_count; ++k) {
@@ -5617,21 +6049,21 @@ static void ga2d__update_sleep(ga2d_world *w, ga2d_real dt)
         if (speed2 > tol * tol || spin * spin > tol * tol) b->sleep_time = 0;
         else b->sleep_time += dt;
     }
-    for (i = 0; i < w->constraint_count; ++i) {
-        const ga2d__constraint *c = &w->constraints[i];
-        for (k = 0; k < c->count; ++k)
-            if (c->p[k].separation < -GA2D__SLEEP_MAX_OVERLAP * w->slop) {
-                w->bodies[c->a].sleep_time = 0; /* static ones never sleep: harmless */
-                w->bodies[c->b].sleep_time = 0;
+    for (i = 0; i < c->constraint_count; ++i) {
+        const ga2d__constraint *cc = &c->constraints[i];
+        for (k = 0; k < cc->count; ++k)
+            if (cc->p[k].separation < -GA2D__SLEEP_MAX_OVERLAP * w->slop) {
+                w->bodies[cc->a].sleep_time = 0; /* static ones never sleep: harmless */
+                w->bodies[cc->b].sleep_time = 0;
             }
     }
-    for (i = 0; i < w->constraint_count; ++i) {
-        const ga2d__constraint *c = &w->constraints[i];
-        const ga2d__body *a = &w->bodies[c->a], *b = &w->bodies[c->b];
+    for (i = 0; i < c->constraint_count; ++i) {
+        const ga2d__constraint *cc = &c->constraints[i];
+        const ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
         int ra, rb;
         if (a->type != GA2D_BODY_DYNAMIC || b->type != GA2D_BODY_DYNAMIC || !a->awake || !b->awake) continue;
-        ra = ga2d__find(w, c->a);
-        rb = ga2d__find(w, c->b);
+        ra = ga2d__find(w, cc->a);
+        rb = ga2d__find(w, cc->b);
         if (ra != rb) w->bodies[ra > rb ? ra : rb].island = ra < rb ? ra : rb;
     }
     /* each root takes its island's shortest rest (a root is its own parent,
@@ -5656,92 +6088,6 @@ static void ga2d__update_sleep(ga2d_world *w, ga2d_real dt)
         if (w->bodies[s].type == GA2D_BODY_DYNAMIC && w->bodies[ga2d__find(w, s)].island_rest >= GA2D__R(0.5))
             ga2d__put_to_sleep(w, s);
     }
-}
-
-/* =========================================================== world step */
-/* The step (DESIGN 6): broadphase pairs, manifolds, constraints; then per
-   substep: velocities, warm start, solve, positions, relax (soft step) or
-   the PGS kinds' passes; then restitution, the impulses stored for the
-   next step, and sleep. */
-static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
-{
-    double t0;
-    int s, k, it;
-    w->step_error = GA2D_OK;
-    w->error_slot = -1;
-    w->step_dt = dt;
-    w->counters.integrated_bodies = 0;
-    w->counters.force_evaluations = 0;
-    w->counters.rotation_updates = 0;
-    w->counters.speed_caps = 0;
-    ga2d__update_pairs(w);
-    ga2d__update_contacts(w);
-    ga2d__prepare_contacts(w);
-    ga2d__remember_start(w);
-    if (w->def.enable_restitution) ga2d__restitute(w, dt);
-    ga2d__batch(w, h);
-    t0 = w->time;
-    for (s = 0; s < w->def.substeps; ++s) {
-        double t = t0 + (double)h * s; /* no drift from summing h */
-        ga2d__integrate_velocities(w, h, t);
-        ga2d__gather(w);
-        if (w->def.enable_warm_starting) ga2d__warm_start(w);
-        switch (w->def.solver) {
-        case GA2D_SOLVER_PGS_BAUMGARTE:
-            for (it = 0; it < w->def.velocity_iterations; ++it) ga2d__solve_contacts(w, h, GA2D__BIAS_BAUMGARTE);
-            ga2d__scatter(w);
-            ga2d__integrate_positions(w, h, t);
-            break;
-        case GA2D_SOLVER_PGS_NGS:
-            for (it = 0; it < w->def.velocity_iterations; ++it) ga2d__solve_contacts(w, h, GA2D__BIAS_NONE);
-            ga2d__scatter(w);
-            ga2d__integrate_positions(w, h, t);
-            for (it = 0; it < w->def.position_iterations; ++it) ga2d__solve_positions(w);
-            break;
-        default:
-            ga2d__solve_contacts(w, h, GA2D__BIAS_SOFT);
-            ga2d__scatter(w);
-            ga2d__integrate_positions(w, h, t);
-            ga2d__gather(w);
-            ga2d__solve_contacts(w, h, GA2D__BIAS_NONE); /* relax */
-            ga2d__scatter(w);
-            break;
-        }
-    }
-    ga2d__unbatch(w);
-    for (k = 0; k < w->moving_count; ++k) { /* positions too (RK4's own stages, huge coordinates) */
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        /* and velocities: a NaN impulse from a contained neighbour's
-           contact reaches kinematic bodies too (0 x NaN) */
-        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
-        b->force = ga2d_vec_make(0, 0);
-        b->torque = 0;
-    }
-    w->counters.constraint_count = w->constraint_count;
-    w->time = t0 + (double)dt;
-    if (w->def.enable_sleep) ga2d__update_sleep(w, dt);
-    ++w->counters.step_count;
-}
-
-GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
-{
-    ga2d_real h;
-    ga2d_result r;
-    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->lock) return GA2D_ERR_LOCKED;
-    if (!ga2d__finite(dt) || !(dt > 0)) return GA2D_ERR_INVALID_ARGUMENT;
-    h = dt / (ga2d_real)w->def.substeps;
-    if (!(h > 0)) return GA2D_ERR_INVALID_ARGUMENT; /* dt underflows when split */
-    /* the bounds of GA2D_MAX_TIME_STEP: g h^2 is how far gravity moves a
-       body from rest in a substep, before its contact pushes back */
-    if (dt > GA2D__R(GA2D_MAX_TIME_STEP) || ga2d__length_times(w->def.gravity, h * h) > w->slop) return GA2D_ERR_TOO_LARGE;
-    w->lock = GA2D__LOCK_STEP;
-    ga2d__enter(w);
-    ga2d__step(w, dt, h);
-    r = w->step_error;
-    w->lock = 0;
-    ga2d__leave(w); /* destroyed from the force callback or an allocator hook: gone now */
-    return r;
 }
 
 /* ============================================================= snapshots */
@@ -5834,7 +6180,7 @@ static void ga2d__snap_payload(const ga2d_world *w, ga2d__writer *o, ga2d__snap_
     d.force_context = NULL;
     ga2d__put(o, &d, sizeof d);
     ga2d__put(o, &w->time, sizeof w->time);
-    ga2d__put(o, &w->step_dt, sizeof w->step_dt);
+    ga2d__put(o, &w->step.dt, sizeof w->step.dt);
     ga2d__put(o, &w->counters, sizeof w->counters);
     ga2d__put(o, &w->tag, sizeof w->tag);
     ga2d__put(o, &w->body_used, sizeof w->body_used);
@@ -5843,7 +6189,10 @@ static void ga2d__snap_payload(const ga2d_world *w, ga2d__writer *o, ga2d__snap_
     if (w->body_used > 0) ga2d__put(o, w->bodies, (size_t)w->body_used * sizeof *w->bodies);
     for (i = 0; i < w->body_used; ++i) {
         const ga2d__body *b = &w->bodies[i];
-        if (b->type >= 0) ga2d__put(o, &w->trees[b->type != GA2D_BODY_STATIC].nodes[b->proxy].box, sizeof(ga2d_aabb));
+        if (b->type >= 0) {
+            ga2d_aabb box = ga2d__fat_box(w, b);
+            ga2d__put(o, &box, sizeof box);
+        }
     }
     ga2d__put(o, &w->contact_serial, sizeof w->contact_serial);
     ga2d__put(o, &w->contact_count, sizeof w->contact_count);
@@ -5940,7 +6289,7 @@ static int ga2d__snap_body_ok(const ga2d__body *b, int body_used)
         return 0;
     q2 = b->q.c * b->q.c + b->q.s * b->q.s;
     if (!(q2 > GA2D__R(0.99) && q2 < GA2D__R(1.01))) return 0;
-    if ((b->awake | b->fixed_rotation | b->in_move | b->field_valid) & ~1) return 0;
+    if ((b->awake | b->fixed_rotation | b->in_move | b->field_valid) & ~1 || b->refit) return 0;
     if (b->polygon.count < 3 || b->polygon.count > GA2D_MAX_POLYGON_VERTICES) return 0;
     if (ga2d_polygon_make(b->polygon.vertices, b->polygon.count, &p) != GA2D_OK || p.count != b->polygon.count) return 0;
     for (k = 0; k < p.count; ++k)
@@ -5975,7 +6324,7 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
         !ga2d__grow(&t->mem, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving))
         return -1;
     if (t->def.integrator == GA2D_INTEGRATOR_RK4 &&
-        !ga2d__grow(&t->mem, (void **)&t->rk4, &t->rk4_capacity, t->moving_capacity, sizeof *t->rk4))
+        !ga2d__reserve_rk4(t, t->moving_capacity))
         return -1;
     ga2d__get(r, t->bodies, (size_t)used * sizeof *t->bodies);
     t->body_used = used;
@@ -6108,9 +6457,9 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
         return GA2D_ERR_OUT_OF_MEMORY;
     }
     ga2d__enter(t);
-    ok = ga2d__get(&r, &t->time, sizeof t->time) && ga2d__get(&r, &t->step_dt, sizeof t->step_dt) &&
-         ga2d__get(&r, &t->counters, sizeof t->counters) && ga2d__get(&r, &t->tag, sizeof t->tag) && t->time == t->time && ga2d__finite(t->step_dt) &&
-         t->step_dt > 0;
+    ok = ga2d__get(&r, &t->time, sizeof t->time) && ga2d__get(&r, &t->step.dt, sizeof t->step.dt) &&
+         ga2d__get(&r, &t->counters, sizeof t->counters) && ga2d__get(&r, &t->tag, sizeof t->tag) && t->time == t->time && ga2d__finite(t->step.dt) &&
+         t->step.dt > 0;
     if (ok) ok = ga2d__snap_read_bodies(t, &r);
     if (ok == 1) ok = ga2d__snap_read_contacts(t, &r);
     if (ok == 1 && r.at != r.n) ok = 0;
@@ -6123,6 +6472,8 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
         *t = swap;
         w->mem.ctx = w;
         t->mem.ctx = t;
+        w->step.world = w;
+        t->step.world = t;
         w->lock = t->lock;
         w->depth = t->depth;
         w->destroy_pending = 0;
@@ -6182,7 +6533,7 @@ static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
         if (d->draw_bodies && d->polygon && !w->destroy_pending)
             d->polygon(ga2d__id_of(w, s), &b->polygon, ga2d__body_xf(b), ga2d__state_color(b), d->context);
         if (d->draw_aabbs && d->aabb && !w->destroy_pending)
-            d->aabb(w->trees[b->type != GA2D_BODY_STATIC].nodes[b->proxy].box, GA2D_COLOR_AABB, d->context);
+            d->aabb(ga2d__fat_box(w, b), GA2D_COLOR_AABB, d->context);
         if (d->draw_centers && d->point && !w->destroy_pending)
             d->point(b->center, GA2D__R(0.05) * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
     }
@@ -6200,6 +6551,65 @@ static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
 }
 #endif
 #endif /* GA2D_IMPLEMENTATION */
+
+/*
+------------------------------------------------------------------------------
+VERSION HISTORY (newest first)
+------------------------------------------------------------------------------
+   0.8.2  a def zero-initialised by hand is the defaults, switches
+          included (its enable_* fields read 0 as off, and friction, sleep,
+          warm starting and restitution vanished); the default functions
+          stamp internal_cookie, so their defs keep every zero as set;
+          the defaults are named constants (GA2D_DEFAULT_*) resolved in
+          one function per def; snapshot version 5; the |g| h^2 bound is
+          measured scaled (it overflowed at huge length units);
+          inside, the step reads as a list of stages over ranges of
+          bodies, contacts, constraints and lane groups, its per-step state
+          in one step context, and stages that compute leave creation,
+          destruction, events and waking to the book-keeping after them
+          (bit-identical results).
+   0.8.1  hostile input: user code run from the force callback, the debug
+          draw or the allocator hooks finds the world locked, and a world
+          destroyed from it goes when the library call returns; fat boxes
+          hold all a body can reach in the step (fast bodies passed thin
+          walls every other step); a contact deeper than the speculative
+          distance keeps its island awake; the incident edge is chosen to
+          full precision (a thin arc rocked and sank in float); ids carry
+          their world's tag; bounds on coordinates, the step and gravity
+          (TOO_LARGE); counters.speed_caps; ga2d_world_compact; the margin
+          of a small body's fat box scales with it; lane groups grow as
+          they open (a pile of 0.2 m boxes: 5.5 KB a body, from 9.6);
+          snapshot version 4;
+          the re-entry fuzz harness's findings: restitution writes no
+          static body (a blown-up body made the ground NaN), the force
+          field never reads a non-finite state, RK4's displacement keeps
+          the speed caps, the error body is the lowest slot contained.
+   0.8.0  a touching pair that moved by under half a slop keeps its
+          manifold, carried along with the bodies (no separating-axis
+          search); solver bodies load into the lanes as whole rows; the
+          hull is wrapped as monotone chains (a cloud whose features were
+          near the tolerance could leave a point outside); snapshot
+          version 3; counters.manifolds_carried; the lane groups'
+          impulses go straight back to the manifolds.
+   0.7.0  a manifold's two normal points are solved together (a 2x2
+          complementarity block) instead of one after the other: stacks
+          no longer lean the way the points are ordered.
+   0.6.0  the velocity passes run on groups of constraints with no moved
+          body in common, a SIMD lane each (4 floats or 2 doubles; 8 or 4
+          under AVX), in the same Gauss-Seidel order and with the same bits
+          as one constraint at a time; snapshot version 2.
+   0.5.0  determinism (canonical solver order, same bits across compilers,
+          -O levels and C/C++), world snapshots for rollback, containment
+          of bodies driven non-finite (ga2d_world_error_body); bounces at
+          the defaults reach e^(2n) h0.
+   0.4.0  contact solver: soft step, PGS + Baumgarte, PGS + NGS; friction;
+          restitution as a collision phase; warm starting; sleep.
+   0.3.0  SAT narrowphase, dynamic AABB tree broadphase, contacts, events,
+          filtering.
+   0.2.0  world and bodies; symplectic Euler, Verlet and RK4 integrators;
+          exact and first-order rotor updates; force callback; counters.
+   0.1.0  algebra, polygons, hull, exact mass properties.
+*/
 
 /*
 ------------------------------------------------------------------------------
