@@ -5473,8 +5473,8 @@ static void ga2d__kick(ga2d__step_context *c, int begin, int end)
     }
 }
 
-/* Stage, over the moving bodies: Verlet's opening half kick, capped. */
-static void ga2d__open_kick(ga2d__step_context *c, int begin, int end)
+/* Stage, over the moving bodies: a Verlet half kick, capped. */
+static void ga2d__half_kicks(ga2d__step_context *c, int begin, int end, int damp)
 {
     ga2d_world *w = c->world;
     int k;
@@ -5482,9 +5482,17 @@ static void ga2d__open_kick(ga2d__step_context *c, int begin, int end)
         ga2d__body *b = &w->bodies[w->moving[k]];
         if (b->type != GA2D_BODY_DYNAMIC) continue;
         ga2d__verlet_kick(w, b, c->h / 2);
+        if (damp) ga2d__damp(b, c->h);
         ga2d__cap_body(c, b, w->moving[k]);
     }
 }
+
+/* Verlet's opening half kick; and the closing one with the damping.  The
+   closing one is capped too: uncapped, a stiff field (a drag of k h / m
+   >> 2) left the step with any speed or turn, and the next step's
+   contacts turned that into NaN. */
+static void ga2d__open_kick(ga2d__step_context *c, int begin, int end) { ga2d__half_kicks(c, begin, end, 0); }
+static void ga2d__close_kick(ga2d__step_context *c, int begin, int end) { ga2d__half_kicks(c, begin, end, 1); }
 
 /* Whether some moving body lacks its cached field (Verlet). */
 static int ga2d__field_stale(const ga2d_world *w)
@@ -5563,23 +5571,6 @@ static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
     ga2d_world *w = c->world;
     int k;
     for (k = begin; k < end; ++k) ga2d__drift(w, &w->bodies[w->moving[k]], c->h);
-}
-
-/* Stage, over the moving bodies: Verlet's closing half kick and damping.
-   It is capped too: uncapped, a stiff field (a drag of k h / m >> 2) left
-   the step with any speed or turn, and the next step's contacts turned
-   that into NaN. */
-static void ga2d__close_kick(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int k;
-    for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        if (b->type != GA2D_BODY_DYNAMIC) continue;
-        ga2d__verlet_kick(w, b, c->h / 2);
-        ga2d__damp(b, c->h);
-        ga2d__cap_body(c, b, w->moving[k]);
-    }
 }
 
 /* The position phase of the world's integrator, ending the substep. */
