@@ -2479,7 +2479,7 @@ struct ga2d_world {
     uint64_t contact_serial;     /* the next contact's */
     uint64_t *pair_keys;
     int *pair_vals;
-    int pair_capacity, pair_count;
+    int pair_capacity;           /* holds contact_count keys: one per contact */
     ga2d_contact_data *begin_events, *end_events;
     int begin_count, end_count, begin_capacity, end_capacity;
     ga2d_real slop, speculative, aabb_margin; /* scaled by length units */
@@ -2618,8 +2618,8 @@ static int ga2d__pairs_reserve(ga2d_world *w)
     int cap = w->pair_capacity ? w->pair_capacity : 64, i;
     uint64_t *keys;
     int *vals;
-    if (2 * (w->pair_count + 1) <= w->pair_capacity) return 1;
-    while (2 * (w->pair_count + 1) > cap) cap *= 2;
+    if (2 * (w->contact_count + 1) <= w->pair_capacity) return 1;
+    while (2 * (w->contact_count + 1) > cap) cap *= 2;
     keys = (uint64_t *)ga2d__alloc(&w->mem, (size_t)cap * sizeof *keys);
     vals = keys ? (int *)ga2d__alloc(&w->mem, (size_t)cap * sizeof *vals) : NULL;
     if (!vals) {
@@ -2656,12 +2656,11 @@ static void ga2d__pairs_remove(ga2d_world *w, uint64_t key)
         }
     }
     w->pair_keys[i] = 0;
-    --w->pair_count;
 }
 
 /* ------------------------------------------------------ contact lifetime */
 /* A body's list holds its contacts oldest first: a new one goes at the
-   tail (the solver takes them in this order, see ga2d__prepare_contacts). */
+   tail (the solver takes them in this order, see ga2d__order_constraints). */
 static void ga2d__link_contact(ga2d_world *w, int ci, int side)
 {
     ga2d__contact *c = &w->contacts[ci];
@@ -2721,7 +2720,6 @@ static int ga2d__create_contact(ga2d_world *w, int a, int b)
     ga2d__link_contact(w, ci, 0);
     ga2d__link_contact(w, ci, 1);
     ga2d__pairs_put(w->pair_keys, w->pair_vals, w->pair_capacity, ga2d__pair_key(a, b), ci);
-    ++w->pair_count;
     ++w->contact_count;
     return 1;
 }
@@ -6082,18 +6080,22 @@ static void ga2d__update_sleep(ga2d__step_context *c)
 }
 
 /* ============================================================= snapshots */
-/* Layout: a header (magic, version, the build's sizes, payload size, an
-   FNV-1a checksum of the payload), then the payload: the world def (its
-   pointers zeroed), time and counters, every body slot as the library
-   holds it, each live body's fat box, and the live contacts oldest first.
-   Loading validates all of it into a new world and swaps it in only when
-   everything checked out; derived structures (trees, the moving list, the
-   pair set, each body's contact list) are rebuilt, and since the lists are
-   rebuilt in creation order and pairs and the solver follow canonical
-   orders, the loaded world steps bit for bit as the saved one. */
+/* Layout: a header (magic, version, the build's real size and polygon
+   size, the sizes of a body and a contact record, payload size, an FNV-1a
+   checksum of the payload), then the payload: the world def (its pointers
+   left out), time and counters, every body slot, each live body's fat
+   box, and the live contacts oldest first.  Everything is written field
+   by field, so the library's structs may change without changing the
+   format, and no padding byte is saved.  Loading validates all of it into
+   a new world and swaps it in only when everything checked out; derived
+   structures (trees, the moving list, the pair set, each body's contact
+   list) are rebuilt, and since the lists are rebuilt in creation order and
+   pairs and the solver follow canonical orders, the loaded world steps bit
+   for bit as the saved one. */
 /* 2: body fields reordered (0.6.0); 3: held manifolds (0.8.0); 4: the
-   world's id tag, body and def fields (0.8.1); 5: the def's cookie */
-#define GA2D__SNAP_VERSION 5u
+   world's id tag, body and def fields (0.8.1); 5: the def's cookie; 6:
+   field by field (0.8.2) */
+#define GA2D__SNAP_VERSION 6u
 
 typedef struct ga2d__snap_header {
     char magic[8];
@@ -6101,32 +6103,204 @@ typedef struct ga2d__snap_header {
     uint64_t payload_size, checksum;
 } ga2d__snap_header;
 
-/* A contact as saved: what its creation cannot recompute. */
-typedef struct ga2d__snap_contact {
-    int a, b, touching, reserved;
-    ga2d_manifold manifold;
-    ga2d_real friction, restitution;
-    ga2d__held held;
-    uint64_t serial;
-} ga2d__snap_contact;
+/* One list of fields serves saving, measuring (out NULL) and loading: a
+   field is copied out of the world, counted, or read into it. */
+typedef struct ga2d__codec {
+    unsigned char *out;      /* saving: where the next byte goes (NULL: only count) */
+    const unsigned char *in; /* loading: the payload */
+    size_t n, at;            /* saving: bytes so far; loading: payload size, read so far */
+    int loading, ok;         /* ok: 0 once a read ran past the end or met a bad count */
+} ga2d__codec;
 
-/* A writer that only counts when p is NULL. */
-typedef struct ga2d__writer { unsigned char *p; size_t n; } ga2d__writer;
-
-static void ga2d__put(ga2d__writer *o, const void *src, size_t n)
+/* A codec that saves to out (NULL: measures). */
+static ga2d__codec ga2d__codec_writer(unsigned char *out)
 {
-    if (o->p) memcpy(o->p + o->n, src, n);
-    o->n += n;
+    ga2d__codec k;
+    memset(&k, 0, sizeof k);
+    k.out = out;
+    k.ok = 1;
+    return k;
 }
 
-typedef struct ga2d__reader { const unsigned char *p; size_t n, at; } ga2d__reader;
-
-static int ga2d__get(ga2d__reader *r, void *dst, size_t n)
+static void ga2d__io(ga2d__codec *k, void *p, size_t n)
 {
-    if (r->n - r->at < n) return 0;
-    memcpy(dst, r->p + r->at, n);
-    r->at += n;
-    return 1;
+    if (!k->loading) {
+        if (k->out) memcpy(k->out + k->n, p, n);
+        k->n += n;
+    } else if (k->ok && k->n - k->at >= n) {
+        memcpy(p, k->in + k->at, n);
+        k->at += n;
+    } else {
+        memset(p, 0, n);
+        k->ok = 0;
+    }
+}
+static void ga2d__io_int(ga2d__codec *k, int *x) { ga2d__io(k, x, sizeof *x); }
+static void ga2d__io_u32(ga2d__codec *k, uint32_t *x) { ga2d__io(k, x, sizeof *x); }
+static void ga2d__io_u64(ga2d__codec *k, uint64_t *x) { ga2d__io(k, x, sizeof *x); }
+static void ga2d__io_real(ga2d__codec *k, ga2d_real *x) { ga2d__io(k, x, sizeof *x); }
+static void ga2d__io_double(ga2d__codec *k, double *x) { ga2d__io(k, x, sizeof *x); }
+static void ga2d__io_vec(ga2d__codec *k, ga2d_vec *v)
+{
+    ga2d__io_real(k, &v->x);
+    ga2d__io_real(k, &v->y);
+}
+static void ga2d__io_rotor(ga2d__codec *k, ga2d_rotor *q)
+{
+    ga2d__io_real(k, &q->c);
+    ga2d__io_real(k, &q->s);
+}
+/* A count that sizes what follows: loading refuses one beyond max. */
+static int ga2d__io_count(ga2d__codec *k, int *x, int max)
+{
+    ga2d__io_int(k, x);
+    if (*x < 0 || *x > max) k->ok = 0;
+    return k->ok;
+}
+/* An enum or flag kept as an int. */
+#define GA2D__IO_ENUM(k, field, type)                                                                                     \
+    do {                                                                                                                 \
+        int v_ = (int)(field);                                                                                           \
+        ga2d__io_int(k, &v_);                                                                                            \
+        (field) = (type)v_;                                                                                              \
+    } while (0)
+
+static void ga2d__io_def(ga2d__codec *k, ga2d_world_def *d)
+{
+    ga2d__io_vec(k, &d->gravity);
+    ga2d__io_int(k, &d->substeps);
+    GA2D__IO_ENUM(k, d->integrator, ga2d_integrator);
+    GA2D__IO_ENUM(k, d->rotation_update, ga2d_rotation_update);
+    ga2d__io_real(k, &d->length_units_per_meter);
+    GA2D__IO_ENUM(k, d->solver, ga2d_solver);
+    ga2d__io_int(k, &d->velocity_iterations);
+    ga2d__io_int(k, &d->position_iterations);
+    ga2d__io_real(k, &d->contact_hertz);
+    ga2d__io_real(k, &d->contact_damping_ratio);
+    ga2d__io_real(k, &d->contact_push_max_velocity);
+    ga2d__io_real(k, &d->restitution_threshold);
+    ga2d__io_int(k, &d->enable_sleep);
+    ga2d__io_int(k, &d->enable_warm_starting);
+    ga2d__io_int(k, &d->enable_friction);
+    ga2d__io_int(k, &d->enable_restitution);
+    ga2d__io_int(k, &d->internal_cookie);
+}
+
+static void ga2d__io_counters(ga2d__codec *k, ga2d_world_counters *c)
+{
+    int64_t steps = (int64_t)c->step_count;
+    ga2d__io_int(k, &c->body_count);
+    ga2d__io_int(k, &c->moving_body_count);
+    ga2d__io_int(k, &c->integrated_bodies);
+    ga2d__io_int(k, &c->force_evaluations);
+    ga2d__io_int(k, &c->rotation_updates);
+    ga2d__io(k, &steps, sizeof steps);
+    c->step_count = (long long)steps;
+    ga2d__io_int(k, &c->pair_count);
+    ga2d__io_int(k, &c->touching_count);
+    ga2d__io_int(k, &c->constraint_count);
+    ga2d__io_int(k, &c->awake_body_count);
+    ga2d__io_int(k, &c->island_count);
+    ga2d__io_int(k, &c->speed_caps);
+    ga2d__io_int(k, &c->manifolds_carried);
+}
+
+static void ga2d__io_polygon(ga2d__codec *k, ga2d_polygon *p)
+{
+    int i;
+    if (!ga2d__io_count(k, &p->count, GA2D_MAX_POLYGON_VERTICES)) return;
+    for (i = 0; i < p->count; ++i) {
+        ga2d__io_vec(k, &p->vertices[i]);
+        ga2d__io_vec(k, &p->normals[i]);
+    }
+}
+
+/* A body slot: a free one is its type, link and generation; a live one
+   everything but what loading rebuilds (its proxy, lists, island and
+   moving-list place) and what lives only inside a step. */
+static void ga2d__io_body(ga2d__codec *k, ga2d__body *b)
+{
+    uint64_t user = (uint64_t)(uintptr_t)b->user_data;
+    ga2d__io_int(k, &b->type);
+    ga2d__io_int(k, &b->next_free);
+    ga2d__io_u32(k, &b->generation);
+    if (b->type < 0) return;
+    ga2d__io_vec(k, &b->center);
+    ga2d__io_rotor(k, &b->q);
+    ga2d__io_vec(k, &b->v);
+    ga2d__io_real(k, &b->w);
+    ga2d__io_vec(k, &b->center0);
+    ga2d__io_rotor(k, &b->q0);
+    ga2d__io_rotor(k, &b->dq);
+    ga2d__io_real(k, &b->mass);
+    ga2d__io_real(k, &b->inv_mass);
+    ga2d__io_real(k, &b->inertia);
+    ga2d__io_real(k, &b->inv_inertia);
+    ga2d__io_vec(k, &b->local_center);
+    ga2d__io_real(k, &b->extent);
+    ga2d__io_int(k, &b->awake);
+    ga2d__io_int(k, &b->fixed_rotation);
+    ga2d__io_int(k, &b->in_move);
+    ga2d__io_vec(k, &b->force);
+    ga2d__io_real(k, &b->torque);
+    ga2d__io_real(k, &b->gravity_scale);
+    ga2d__io_real(k, &b->linear_damping);
+    ga2d__io_real(k, &b->angular_damping);
+    ga2d__io_vec(k, &b->field_force);
+    ga2d__io_real(k, &b->field_torque);
+    ga2d__io_vec(k, &b->field_accel);
+    ga2d__io_real(k, &b->field_alpha);
+    ga2d__io_int(k, &b->field_valid);
+    ga2d__io_real(k, &b->friction);
+    ga2d__io_real(k, &b->restitution);
+    ga2d__io_u32(k, &b->filter.category_bits);
+    ga2d__io_u32(k, &b->filter.mask_bits);
+    ga2d__io(k, &b->filter.group_index, sizeof b->filter.group_index);
+    ga2d__io_real(k, &b->sleep_time);
+    ga2d__io_real(k, &b->island_rest);
+    ga2d__io_polygon(k, &b->polygon);
+    ga2d__io_u64(k, &user); /* restored as saved: see ga2d_world_snapshot_load */
+    b->user_data = (void *)(uintptr_t)user;
+}
+
+static void ga2d__io_manifold(ga2d__codec *k, ga2d_manifold *m)
+{
+    int i;
+    ga2d__io_vec(k, &m->normal);
+    if (!ga2d__io_count(k, &m->count, 2)) return;
+    for (i = 0; i < m->count; ++i) {
+        ga2d_manifold_point *p = &m->points[i];
+        ga2d__io_vec(k, &p->point);
+        ga2d__io_vec(k, &p->anchor_a);
+        ga2d__io_vec(k, &p->anchor_b);
+        ga2d__io_real(k, &p->separation);
+        ga2d__io_real(k, &p->normal_impulse);
+        ga2d__io_real(k, &p->tangent_impulse);
+        ga2d__io_u32(k, &p->id);
+        ga2d__io_int(k, &p->persisted);
+    }
+}
+
+/* A contact: what its creation cannot recompute.  The held manifold only
+   while touching (nothing reads it otherwise). */
+static void ga2d__io_contact(ga2d__codec *k, ga2d__contact *c)
+{
+    int i;
+    ga2d__io_int(k, &c->a);
+    ga2d__io_int(k, &c->b);
+    ga2d__io_u64(k, &c->serial);
+    ga2d__io_int(k, &c->touching);
+    ga2d__io_real(k, &c->friction);
+    ga2d__io_real(k, &c->restitution);
+    ga2d__io_manifold(k, &c->manifold);
+    if (!c->touching || !k->ok) return;
+    ga2d__io_vec(k, &c->held.rel.p);
+    ga2d__io_rotor(k, &c->held.rel.q);
+    ga2d__io_vec(k, &c->held.normal);
+    for (i = 0; i < c->manifold.count; ++i) {
+        ga2d__io_vec(k, &c->held.point[i]);
+        ga2d__io_real(k, &c->held.separation[i]);
+    }
 }
 
 static uint64_t ga2d__fnv1a(const unsigned char *p, size_t n)
@@ -6140,118 +6314,132 @@ static uint64_t ga2d__fnv1a(const unsigned char *p, size_t n)
     return h;
 }
 
+/* The header; the record sizes are those of a live body with a full
+   polygon and of a touching contact with two points, as written. */
 static ga2d__snap_header ga2d__snap_header_make(uint64_t payload)
 {
     ga2d__snap_header h;
+    ga2d__codec k;
+    ga2d__body b;
+    ga2d__contact c;
     memset(&h, 0, sizeof h);
+    k = ga2d__codec_writer(NULL);
+    memset(&b, 0, sizeof b);
+    memset(&c, 0, sizeof c);
+    b.polygon.count = GA2D_MAX_POLYGON_VERTICES;
+    c.touching = 1;
+    c.manifold.count = 2;
     memcpy(h.magic, "GA2DSNAP", 8);
     h.version = GA2D__SNAP_VERSION;
     h.real_size = (uint32_t)sizeof(ga2d_real);
     h.max_vertices = (uint32_t)GA2D_MAX_POLYGON_VERTICES;
-    h.body_size = (uint32_t)sizeof(ga2d__body);
-    h.contact_size = (uint32_t)sizeof(ga2d__snap_contact);
+    ga2d__io_body(&k, &b);
+    h.body_size = (uint32_t)k.n;
+    k.n = 0;
+    ga2d__io_contact(&k, &c);
+    h.contact_size = (uint32_t)k.n;
     h.payload_size = payload;
     return h;
 }
 
+/* A live contact's age, for saving them oldest first. */
+typedef struct ga2d__snap_order { uint64_t serial; int index; } ga2d__snap_order;
+
 static int ga2d__cmp_serial(const void *x, const void *y)
 {
-    uint64_t a = ((const ga2d__snap_contact *)x)->serial, b = ((const ga2d__snap_contact *)y)->serial;
+    uint64_t a = ((const ga2d__snap_order *)x)->serial, b = ((const ga2d__snap_order *)y)->serial;
     return (a > b) - (a < b);
 }
 
-/* Writes (or, with o->p NULL, measures) the payload; the live contacts go
-   through `scratch` (contact_count entries) to be sorted by age. */
-static void ga2d__snap_payload(const ga2d_world *w, ga2d__writer *o, ga2d__snap_contact *scratch)
+/* Writes (or, with k->out NULL, measures) the payload; the live contacts'
+   order comes from `order` (contact_count entries, unused when measuring). */
+static void ga2d__snap_payload(const ga2d_world *w, ga2d__codec *k, ga2d__snap_order *order)
 {
     ga2d_world_def d = w->def;
-    int i, n = 0;
-    memset(&d.allocator, 0, sizeof d.allocator);
-    d.force_callback = NULL;
-    d.force_context = NULL;
-    ga2d__put(o, &d, sizeof d);
-    ga2d__put(o, &w->time, sizeof w->time);
-    ga2d__put(o, &w->step.dt, sizeof w->step.dt);
-    ga2d__put(o, &w->counters, sizeof w->counters);
-    ga2d__put(o, &w->tag, sizeof w->tag);
-    ga2d__put(o, &w->body_used, sizeof w->body_used);
-    ga2d__put(o, &w->free_head, sizeof w->free_head);
-    ga2d__put(o, &w->body_count, sizeof w->body_count);
-    if (w->body_used > 0) ga2d__put(o, w->bodies, (size_t)w->body_used * sizeof *w->bodies);
+    ga2d_world_counters counters = w->counters;
+    double time = w->time;
+    ga2d_real dt = w->step.dt;
+    uint32_t tag = w->tag;
+    uint64_t serial = w->contact_serial;
+    int used = w->body_used, free_head = w->free_head, count = w->body_count, contacts = w->contact_count, i, n = 0;
+    ga2d__io_def(k, &d);
+    ga2d__io_double(k, &time);
+    ga2d__io_real(k, &dt);
+    ga2d__io_counters(k, &counters);
+    ga2d__io_u32(k, &tag);
+    ga2d__io_int(k, &used);
+    ga2d__io_int(k, &free_head);
+    ga2d__io_int(k, &count);
+    for (i = 0; i < w->body_used; ++i) {
+        ga2d__body b = w->bodies[i];
+        ga2d__io_body(k, &b);
+    }
     for (i = 0; i < w->body_used; ++i) {
         const ga2d__body *b = &w->bodies[i];
         if (b->type >= 0) {
             ga2d_aabb box = ga2d__fat_box(w, b);
-            ga2d__put(o, &box, sizeof box);
+            ga2d__io_vec(k, &box.lower);
+            ga2d__io_vec(k, &box.upper);
         }
     }
-    ga2d__put(o, &w->contact_serial, sizeof w->contact_serial);
-    ga2d__put(o, &w->contact_count, sizeof w->contact_count);
-    if (!o->p) {
-        o->n += (size_t)w->contact_count * sizeof *scratch;
-        return;
-    }
+    ga2d__io_u64(k, &serial);
+    ga2d__io_int(k, &contacts);
     for (i = 0; i < w->contact_used; ++i) {
-        const ga2d__contact *c = &w->contacts[i];
-        ga2d__snap_contact *r;
-        if (c->next_free != -2) continue;
-        r = &scratch[n++];
-        memset(r, 0, sizeof *r);
-        r->a = c->a;
-        r->b = c->b;
-        r->touching = c->touching;
-        r->manifold = c->manifold;
-        r->friction = c->friction;
-        r->restitution = c->restitution;
-        r->held = c->held;
-        r->serial = c->serial;
+        if (w->contacts[i].next_free != -2) continue;
+        if (!order) { /* measuring: a contact's size is its own, in any order */
+            ga2d__contact c = w->contacts[i];
+            ga2d__io_contact(k, &c);
+            continue;
+        }
+        order[n].serial = w->contacts[i].serial;
+        order[n++].index = i;
     }
-    if (n > 1) qsort(scratch, (size_t)n, sizeof *scratch, ga2d__cmp_serial);
-    if (n > 0) ga2d__put(o, scratch, (size_t)n * sizeof *scratch);
+    if (n > 1) qsort(order, (size_t)n, sizeof *order, ga2d__cmp_serial);
+    for (i = 0; i < n; ++i) {
+        ga2d__contact c = w->contacts[order[i].index];
+        ga2d__io_contact(k, &c);
+    }
 }
 
 GA2D_API size_t ga2d_world_snapshot_size(const ga2d_world *w)
 {
-    ga2d__writer o;
+    ga2d__codec k;
     if (!w) return 0;
-    o.p = NULL;
-    o.n = 0;
-    ga2d__snap_payload(w, &o, NULL);
-    return sizeof(ga2d__snap_header) + o.n;
+    k = ga2d__codec_writer(NULL);
+    ga2d__snap_payload(w, &k, NULL);
+    return sizeof(ga2d__snap_header) + k.n;
 }
 
 GA2D_API ga2d_result ga2d_world_snapshot_save(const ga2d_world *w, void *buf, size_t cap)
 {
-    ga2d__snap_contact *scratch = NULL;
+    ga2d__snap_order *order = NULL;
     ga2d__snap_header h;
-    ga2d__writer o;
-    size_t size, scratch_bytes;
+    ga2d__codec k;
+    size_t size, order_bytes;
     if (!w || !buf) return GA2D_ERR_INVALID_ARGUMENT;
     if (w->lock) return GA2D_ERR_LOCKED;
     size = ga2d_world_snapshot_size(w);
     if (cap < size) return GA2D_ERR_BUFFER_TOO_SMALL;
-    scratch_bytes = (size_t)w->contact_count * sizeof *scratch;
-    if (scratch_bytes > 0) {
+    k = ga2d__codec_writer((unsigned char *)buf + sizeof h);
+    order_bytes = (size_t)w->contact_count * sizeof *order;
+    if (order_bytes > 0) {
         /* the world is const to the caller, not in memory: its lock and
            depth count the user code that the allocator hooks run */
         ga2d_world *mw = (ga2d_world *)w;
         ga2d__enter(mw);
-        scratch = (ga2d__snap_contact *)ga2d__alloc(&mw->mem, scratch_bytes);
-        if (scratch) {
-            o.p = (unsigned char *)buf + sizeof h;
-            o.n = 0;
-            ga2d__snap_payload(w, &o, scratch);
-            ga2d__free(&mw->mem, scratch, scratch_bytes);
+        order = (ga2d__snap_order *)ga2d__alloc(&mw->mem, order_bytes);
+        if (order) {
+            ga2d__snap_payload(w, &k, order);
+            ga2d__free(&mw->mem, order, order_bytes);
         }
         ga2d__leave(mw); /* nothing below reads the world */
-        if (!scratch) return GA2D_ERR_OUT_OF_MEMORY;
+        if (!order) return GA2D_ERR_OUT_OF_MEMORY;
     } else {
-        o.p = (unsigned char *)buf + sizeof h;
-        o.n = 0;
-        ga2d__snap_payload(w, &o, NULL);
+        ga2d__snap_order none;
+        ga2d__snap_payload(w, &k, &none);
     }
-    h = ga2d__snap_header_make((uint64_t)o.n);
-    h.checksum = ga2d__fnv1a(o.p, o.n);
+    h = ga2d__snap_header_make((uint64_t)k.n);
+    h.checksum = ga2d__fnv1a(k.out, k.n);
     memcpy(buf, &h, sizeof h);
     return GA2D_OK;
 }
@@ -6299,14 +6487,15 @@ static int ga2d__snap_box_ok(ga2d_aabb box)
 /* Reads the bodies into t (a new world): slots, the free list, the trees,
    the moving list and the pair-finding queue.  0: bad snapshot, -1: out
    of memory. */
-static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
+static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
 {
     int used, free_head, count, i, live = 0, frees = 0, moves = 0;
-    if (!ga2d__get(r, &used, sizeof used) || !ga2d__get(r, &free_head, sizeof free_head) ||
-        !ga2d__get(r, &count, sizeof count))
-        return 0;
-    if (used < 0 || used > GA2D__MAX_BODIES || count < 0 || count > used || free_head < -1 || free_head >= used ||
-        (size_t)used > (r->n - r->at) / sizeof *t->bodies)
+    ga2d__io_int(k, &used);
+    ga2d__io_int(k, &free_head);
+    ga2d__io_int(k, &count);
+    /* every slot takes at least its type, link and generation */
+    if (!k->ok || used < 0 || used > GA2D__MAX_BODIES || count < 0 || count > used || free_head < -1 ||
+        free_head >= used || (size_t)used > (k->n - k->at) / (2 * sizeof(int) + sizeof(uint32_t)))
         return 0;
     if (used == 0) return free_head == -1 && count == 0;
     if (!ga2d__grow(&t->mem, (void **)&t->bodies, &t->body_capacity, used, sizeof *t->bodies) ||
@@ -6314,16 +6503,15 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
         !ga2d__grow(&t->mem, (void **)&t->wake_queue, &t->wake_capacity, used, sizeof *t->wake_queue) ||
         !ga2d__grow(&t->mem, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving))
         return -1;
-    if (t->def.integrator == GA2D_INTEGRATOR_RK4 &&
-        !ga2d__reserve_rk4(t, t->moving_capacity))
-        return -1;
-    ga2d__get(r, t->bodies, (size_t)used * sizeof *t->bodies);
+    if (t->def.integrator == GA2D_INTEGRATOR_RK4 && !ga2d__reserve_rk4(t, t->moving_capacity)) return -1;
+    memset(t->bodies, 0, (size_t)used * sizeof *t->bodies);
     t->body_used = used;
     t->body_count = count;
     t->free_head = free_head;
     for (i = 0; i < used; ++i) {
         ga2d__body *b = &t->bodies[i];
-        if (!ga2d__snap_body_ok(b, used)) return 0;
+        ga2d__io_body(k, b);
+        if (!k->ok || !ga2d__snap_body_ok(b, used)) return 0;
         if (b->type >= 0) {
             ++live;
             moves += b->type != GA2D_BODY_STATIC;
@@ -6348,7 +6536,9 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__reader *r)
         b->contact_head = b->contact_tail = -1;
         b->in_move = 0;
         if (b->type < 0) continue;
-        if (!ga2d__get(r, &box, sizeof box) || !ga2d__snap_box_ok(box)) return 0;
+        ga2d__io_vec(k, &box.lower);
+        ga2d__io_vec(k, &box.upper);
+        if (!k->ok || !ga2d__snap_box_ok(box)) return 0;
         b->proxy = ga2d__tree_create(&t->trees[b->type != GA2D_BODY_STATIC], box, i);
         if (b->type != GA2D_BODY_STATIC && b->awake) ga2d__moving_add(t, i);
         if (queued) ga2d__buffer_move(t, i);
@@ -6369,33 +6559,43 @@ static int ga2d__snap_held_ok(const ga2d__held *hd, int count)
     return 1;
 }
 
+/* A saved contact's manifold: finite, at most two points. */
+static int ga2d__snap_manifold_ok(const ga2d_manifold *m)
+{
+    int k;
+    if (!ga2d__finite_vec(m->normal)) return 0;
+    for (k = 0; k < m->count; ++k) {
+        const ga2d_manifold_point *p = &m->points[k];
+        if (!ga2d__finite_vec(p->point) || !ga2d__finite_vec(p->anchor_a) || !ga2d__finite_vec(p->anchor_b) ||
+            !ga2d__finite(p->separation) || !ga2d__finite(p->normal_impulse) || !ga2d__finite(p->tangent_impulse))
+            return 0;
+    }
+    return 1;
+}
+
 /* Reads the contacts into t, oldest first, so that every body's list comes
    out as it was.  0: bad snapshot, -1: out of memory. */
-static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__reader *r)
+static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__codec *k)
 {
     uint64_t serial, last = 0;
-    int count, i, k;
-    if (!ga2d__get(r, &serial, sizeof serial) || !ga2d__get(r, &count, sizeof count)) return 0;
-    if (count < 0 || (size_t)count > (r->n - r->at) / sizeof(ga2d__snap_contact)) return 0;
+    int count, i;
+    ga2d__io_u64(k, &serial);
+    ga2d__io_int(k, &count);
+    /* a contact takes at least its two slots, serial and flag */
+    if (!k->ok || count < 0 || (size_t)count > (k->n - k->at) / (3 * sizeof(int) + sizeof(uint64_t))) return 0;
     for (i = 0; i < count; ++i) {
-        ga2d__snap_contact c;
+        ga2d__contact c;
         ga2d__contact *ct;
-        ga2d_manifold *m = &c.manifold;
-        ga2d__get(r, &c, sizeof c);
+        memset(&c, 0, sizeof c);
+        ga2d__io_contact(k, &c);
+        if (!k->ok) return 0;
         if (c.a < 0 || c.b >= t->body_used || c.a >= c.b || t->bodies[c.a].type < 0 || t->bodies[c.b].type < 0) return 0;
         if ((i > 0 && c.serial <= last) || c.serial >= serial) return 0;
-        if (m->count < 0 || m->count > 2 || c.touching != (m->count > 0)) return 0;
-        if (c.touching && !ga2d__snap_held_ok(&c.held, m->count)) return 0;
-        if (!ga2d__finite(m->normal.x) || !ga2d__finite(m->normal.y) || !ga2d__finite(c.friction) ||
-            !ga2d__finite(c.restitution) || c.friction < 0 || c.restitution < 0)
+        if (c.touching != (c.manifold.count > 0)) return 0;
+        if (c.touching && !ga2d__snap_held_ok(&c.held, c.manifold.count)) return 0;
+        if (!ga2d__snap_manifold_ok(&c.manifold) || !ga2d__finite(c.friction) || !ga2d__finite(c.restitution) ||
+            c.friction < 0 || c.restitution < 0)
             return 0;
-        for (k = 0; k < m->count; ++k) {
-            const ga2d_manifold_point *p = &m->points[k];
-            if (!ga2d__finite(p->point.x) || !ga2d__finite(p->point.y) || !ga2d__finite(p->anchor_a.x) ||
-                !ga2d__finite(p->anchor_a.y) || !ga2d__finite(p->anchor_b.x) || !ga2d__finite(p->anchor_b.y) ||
-                !ga2d__finite(p->separation) || !ga2d__finite(p->normal_impulse) || !ga2d__finite(p->tangent_impulse))
-                return 0;
-        }
         if (!ga2d__pairs_reserve(t)) return -1;
         if (ga2d__pairs_find(t, ga2d__pair_key(c.a, c.b)) >= 0) return 0; /* a pair twice */
         if (!ga2d__create_contact(t, c.a, c.b)) return -1;
@@ -6415,7 +6615,7 @@ static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__reader *r)
 GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, size_t size)
 {
     ga2d__snap_header h, want;
-    ga2d__reader r;
+    ga2d__codec r;
     ga2d_world_def d;
     ga2d_world *t, swap;
     int ok;
@@ -6426,12 +6626,15 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
     want = ga2d__snap_header_make(h.payload_size);
     want.checksum = h.checksum;
     if (memcmp(&h, &want, sizeof h) != 0 || h.payload_size != (uint64_t)(size - sizeof h)) return GA2D_ERR_BAD_SNAPSHOT;
-    r.p = (const unsigned char *)buf + sizeof h;
+    memset(&r, 0, sizeof r);
+    r.in = (const unsigned char *)buf + sizeof h;
     r.n = size - sizeof h;
-    r.at = 0;
-    if (ga2d__fnv1a(r.p, r.n) != h.checksum) return GA2D_ERR_BAD_SNAPSHOT;
+    r.loading = r.ok = 1;
+    if (ga2d__fnv1a(r.in, r.n) != h.checksum) return GA2D_ERR_BAD_SNAPSHOT;
     /* the def, with this world's allocator and callback */
-    if (!ga2d__get(&r, &d, sizeof d)) return GA2D_ERR_BAD_SNAPSHOT;
+    memset(&d, 0, sizeof d);
+    ga2d__io_def(&r, &d);
+    if (!r.ok) return GA2D_ERR_BAD_SNAPSHOT;
     d.allocator = w->def.allocator;
     d.force_callback = w->def.force_callback;
     d.force_context = w->def.force_context;
@@ -6448,9 +6651,11 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
         return GA2D_ERR_OUT_OF_MEMORY;
     }
     ga2d__enter(t);
-    ok = ga2d__get(&r, &t->time, sizeof t->time) && ga2d__get(&r, &t->step.dt, sizeof t->step.dt) &&
-         ga2d__get(&r, &t->counters, sizeof t->counters) && ga2d__get(&r, &t->tag, sizeof t->tag) && t->time == t->time && ga2d__finite(t->step.dt) &&
-         t->step.dt > 0;
+    ga2d__io_double(&r, &t->time);
+    ga2d__io_real(&r, &t->step.dt);
+    ga2d__io_counters(&r, &t->counters);
+    ga2d__io_u32(&r, &t->tag);
+    ok = r.ok && t->time == t->time && ga2d__finite(t->step.dt) && t->step.dt > 0;
     if (ok) ok = ga2d__snap_read_bodies(t, &r);
     if (ok == 1) ok = ga2d__snap_read_contacts(t, &r);
     if (ok == 1 && r.at != r.n) ok = 0;
