@@ -2404,7 +2404,7 @@ typedef struct ga2d__body {
 
 /* The solver's types, defined with the solver; the step context holds
    them by pointer. */
-typedef struct ga2d__constraint ga2d__constraint;
+typedef struct ga2d__contact_constraint ga2d__contact_constraint;
 typedef struct ga2d__group ga2d__group;
 typedef struct ga2d__sbody ga2d__sbody;
 typedef struct ga2d__rk4 ga2d__rk4;
@@ -2426,7 +2426,7 @@ typedef struct ga2d__step_context {
     ga2d__soft soft, stiff;      /* contacts between moving bodies, and against a fixed one */
     ga2d_result error;           /* what the step will report */
     int error_slot;              /* the lowest slot it contained, or -1 */
-    ga2d__constraint *constraints; /* the touching contacts, in canonical order */
+    ga2d__contact_constraint *constraints; /* the touching contacts, in canonical order */
     int constraint_count, constraint_capacity;
     ga2d__group *groups;         /* the lane solver's, live during the substeps */
     int group_count, group_capacity;
@@ -4054,7 +4054,11 @@ typedef struct ga2d__cpoint {
     ga2d_real normal_impulse, tangent_impulse;
 } ga2d__cpoint;
 
-struct ga2d__constraint {
+/* A touching contact as the solver sees it for one step: its bodies, the
+   normal, the materials, the inverse masses the solver may move (0 for a
+   static, kinematic or sleeping side) and up to two points.  Joints will
+   be constraints of their own kind beside it. */
+struct ga2d__contact_constraint {
     int contact, a, b;           /* pool index, body slots */
     ga2d_vec normal;
     ga2d_real friction, restitution;
@@ -4234,7 +4238,7 @@ static ga2d__soft ga2d__make_soft(ga2d_real hertz, ga2d_real zeta, ga2d_real h)
    bivector squares are negative ((w e12)^2 = -w^2), so with w = wedge:
    1/m_a + 1/m_b + w_a^2 / I_a + w_b^2 / I_b.  Its inverse is the mass the
    constraint sees along d. */
-static ga2d_real ga2d__effective_mass(const ga2d__constraint *c, ga2d_vec ra, ga2d_vec rb, ga2d_vec d)
+static ga2d_real ga2d__effective_mass(const ga2d__contact_constraint *c, ga2d_vec ra, ga2d_vec rb, ga2d_vec d)
 {
     ga2d_real wa = ga2d_wedge(ra, d), wb = ga2d_wedge(rb, d);
     ga2d_real k = c->inv_ma + c->inv_mb + c->inv_ia * wa * wa + c->inv_ib * wb * wb;
@@ -4246,7 +4250,7 @@ static ga2d_real ga2d__effective_mass(const ga2d__constraint *c, ga2d_vec ra, ga
    point 1 (and the reverse; K is symmetric).  The points share the pair's
    masses, so this is near the diagonal's size: why they are solved as a
    block (ga2d__wblock). */
-static ga2d_real ga2d__coupling(const ga2d__constraint *c, ga2d_vec ra1, ga2d_vec rb1, ga2d_vec ra2, ga2d_vec rb2)
+static ga2d_real ga2d__coupling(const ga2d__contact_constraint *c, ga2d_vec ra1, ga2d_vec rb1, ga2d_vec ra2, ga2d_vec rb2)
 {
     return c->inv_ma + c->inv_mb + c->inv_ia * ga2d_wedge(ra1, c->normal) * ga2d_wedge(ra2, c->normal) +
            c->inv_ib * ga2d_wedge(rb1, c->normal) * ga2d_wedge(rb2, c->normal);
@@ -4266,7 +4270,7 @@ static GA2D__HOT ga2d_vec ga2d__relative_velocity(const ga2d__body *a, const ga2
    kinematic: zero inverse mass and inertia) is not written, so a NaN from
    a blown-up body stops there instead of reaching the ground (0 NaN = NaN)
    and from it every body resting on it. */
-static GA2D__HOT void ga2d__apply_impulse(const ga2d__constraint *c, ga2d__body *a, ga2d__body *b, ga2d_vec ra, ga2d_vec rb, ga2d_vec P)
+static GA2D__HOT void ga2d__apply_impulse(const ga2d__contact_constraint *c, ga2d__body *a, ga2d__body *b, ga2d_vec ra, ga2d_vec rb, ga2d_vec P)
 {
     if (c->inv_ma != 0 || c->inv_ia != 0) {
         a->v = ga2d_vec_sub(a->v, ga2d_vec_scale(P, c->inv_ma));
@@ -4329,7 +4333,7 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
     ga2d_world *w = c->world;
     int n, i;
     for (n = begin; n < end; ++n) {
-        ga2d__constraint *cc = &c->constraints[n];
+        ga2d__contact_constraint *cc = &c->constraints[n];
         const ga2d__contact *ct = &w->contacts[cc->contact];
         const ga2d__body *a = &w->bodies[ct->a], *b = &w->bodies[ct->b];
         ga2d_vec ca, cb;
@@ -4397,7 +4401,7 @@ static void ga2d__refresh_turns(ga2d__step_context *c, int begin, int end)
    angular momentum about any point is kept.  Anchors are returned relative
    to each centre, built from the centre-to-centre vector so that nothing
    large is subtracted. */
-static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__constraint *c, const ga2d__body *a, const ga2d__body *b,
+static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__contact_constraint *c, const ga2d__body *a, const ga2d__body *b,
                                  const ga2d__cpoint *p, ga2d_vec *ra, ga2d_vec *rb)
 {
     ga2d_vec ra1 = ga2d_rotate(a->dq, p->ra);
@@ -4816,8 +4820,8 @@ static void ga2d__solve_baumgarte(ga2d__step_context *c, int begin, int end)
 /* Lane l of group g holds constraint c (d: B's centre less A's), every
    field written: a point c lacks takes `none`'s (all zero), and so does an
    empty lane (c = none), so their masses are zero. */
-static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__constraint *c, ga2d_vec d, const ga2d__soft *sf,
-                             const ga2d__constraint *none)
+static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constraint *c, ga2d_vec d, const ga2d__soft *sf,
+                             const ga2d__contact_constraint *none)
 {
     int k;
     GA2D__LANE(g->nx, l) = c->normal.x;
@@ -4854,7 +4858,7 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__constraint *c, g
 static void ga2d__lane_put(ga2d__step_context *c, ga2d__group *g, int ci)
 {
     ga2d_world *w = c->world;
-    ga2d__constraint *cc = &c->constraints[ci];
+    ga2d__contact_constraint *cc = &c->constraints[ci];
     int l = g->count++, e;
     g->a[l] = cc->a;
     g->b[l] = cc->b;
@@ -4927,7 +4931,7 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
     memset(dummy, 0, sizeof *dummy);
     dummy->dqc = 1;
     for (i = 0; i < c->constraint_count; ++i) {
-        const ga2d__constraint *cc = &c->constraints[i];
+        const ga2d__contact_constraint *cc = &c->constraints[i];
         int ma = cc->inv_ma != 0 || cc->inv_ia != 0, mb = cc->inv_mb != 0 || cc->inv_ib != 0, gi = 0;
         ga2d__group *g;
         if (ma && last[cc->a] >= gi) gi = last[cc->a] + 1;
@@ -4955,7 +4959,7 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
 static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
-    ga2d__constraint none;
+    ga2d__contact_constraint none;
     ga2d__soft zero;
     int gi, l;
     memset(&none, 0, sizeof none);
@@ -4963,7 +4967,7 @@ static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
     for (gi = begin; gi < end; ++gi) {
         ga2d__group *g = &c->groups[gi];
         for (l = 0; l < g->count; ++l) {
-            const ga2d__constraint *cc = &c->constraints[g->con[l]];
+            const ga2d__contact_constraint *cc = &c->constraints[g->con[l]];
             ga2d_vec d = ga2d_vec_sub(w->bodies[cc->b].center, w->bodies[cc->a].center);
             ga2d__lane_write(g, l, cc, d, cc->to_static ? &c->stiff : &c->soft, &none);
         }
@@ -5054,7 +5058,7 @@ static void ga2d__push_apart(ga2d__step_context *c, int begin, int end)
     ga2d_real max_fix = GA2D__R(0.2) * w->def.length_units_per_meter;
     int i, k;
     for (i = begin; i < end; ++i) {
-        ga2d__constraint *cc = &c->constraints[i];
+        ga2d__contact_constraint *cc = &c->constraints[i];
         ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
         for (k = 0; k < cc->count; ++k) {
             ga2d__cpoint *p = &cc->p[k];
@@ -5099,7 +5103,7 @@ static void ga2d__restitute(ga2d__step_context *c)
     for (pass = 0; pass < 32 && busy; ++pass) {
         busy = 0;
         for (i = 0; i < c->constraint_count; ++i) {
-            ga2d__constraint *cc = &c->constraints[i];
+            ga2d__contact_constraint *cc = &c->constraints[i];
             ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
             ga2d_real closing, vn[2], want[2], lambda[2];
             int hit = 0;
@@ -5290,7 +5294,7 @@ static void ga2d__contain(ga2d_world *w, int slot)
            would hand the NaN back to it and on to its neighbours */
         int i, k;
         for (i = 0; i < w->step.constraint_count; ++i) {
-            ga2d__constraint *c = &w->step.constraints[i];
+            ga2d__contact_constraint *c = &w->step.constraints[i];
             if (c->a != slot && c->b != slot) continue;
             for (k = 0; k < c->count; ++k) {
                 ga2d_manifold_point *mp = &w->contacts[c->contact].manifold.points[k];
@@ -6039,7 +6043,7 @@ static void ga2d__update_sleep(ga2d__step_context *c)
         else b->sleep_time += dt;
     }
     for (i = 0; i < c->constraint_count; ++i) {
-        const ga2d__constraint *cc = &c->constraints[i];
+        const ga2d__contact_constraint *cc = &c->constraints[i];
         for (k = 0; k < cc->count; ++k)
             if (cc->p[k].separation < -GA2D__SLEEP_MAX_OVERLAP * w->slop) {
                 w->bodies[cc->a].sleep_time = 0; /* static ones never sleep: harmless */
@@ -6047,7 +6051,7 @@ static void ga2d__update_sleep(ga2d__step_context *c)
             }
     }
     for (i = 0; i < c->constraint_count; ++i) {
-        const ga2d__constraint *cc = &c->constraints[i];
+        const ga2d__contact_constraint *cc = &c->constraints[i];
         const ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
         int ra, rb;
         if (a->type != GA2D_BODY_DYNAMIC || b->type != GA2D_BODY_DYNAMIC || !a->awake || !b->awake) continue;
@@ -6489,7 +6493,7 @@ static int ga2d__snap_box_ok(ga2d_aabb box)
    of memory. */
 static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
 {
-    int used, free_head, count, i, live = 0, frees = 0, moves = 0;
+    int used = 0, free_head = 0, count = 0, i, live = 0, frees = 0, moves = 0;
     ga2d__io_int(k, &used);
     ga2d__io_int(k, &free_head);
     ga2d__io_int(k, &count);
@@ -6577,8 +6581,8 @@ static int ga2d__snap_manifold_ok(const ga2d_manifold *m)
    out as it was.  0: bad snapshot, -1: out of memory. */
 static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__codec *k)
 {
-    uint64_t serial, last = 0;
-    int count, i;
+    uint64_t serial = 0, last = 0;
+    int count = 0, i;
     ga2d__io_u64(k, &serial);
     ga2d__io_int(k, &count);
     /* a contact takes at least its two slots, serial and flag */
@@ -6757,8 +6761,10 @@ VERSION HISTORY (newest first)
           warm starting and restitution vanished); the default functions
           stamp internal_cookie, so their defs keep every zero as set;
           the defaults are named constants (GA2D_DEFAULT_*) resolved in
-          one function per def; snapshot version 5; the |g| h^2 bound is
-          measured scaled (it overflowed at huge length units);
+          one function per def; snapshots written field by field
+          (version 6: no padding bytes, the structs free to change); the
+          |g| h^2 bound is measured scaled (it overflowed at huge length
+          units);
           inside, the step reads as a list of stages over ranges of
           bodies, contacts, constraints and lane groups, its per-step state
           in one step context, and stages that compute leave creation,
