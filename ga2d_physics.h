@@ -5883,6 +5883,7 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     c->t0 = c->t = w->time;
     c->error = GA2D_OK;
     c->error_slot = -1;
+    w->begin_count = w->end_count = 0; /* this step's events */
     hz = w->def.contact_hertz < GA2D__R(0.25) * c->inv_h ? w->def.contact_hertz : GA2D__R(0.25) * c->inv_h;
     c->soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
     c->stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
@@ -5905,7 +5906,6 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__refit_proxies(c);
     ga2d__run(c, ga2d__find_pairs, w->move_count);
     ga2d__create_pairs(c);
-    w->begin_count = w->end_count = 0;
     if (ga2d__reserve_changes(c)) {
         ga2d__run(c, ga2d__collide_contacts, w->contact_used);
         ga2d__contact_changes(c);
