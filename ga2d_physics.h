@@ -2584,6 +2584,7 @@ static ga2d_result ga2d__writable(const ga2d_world *w, ga2d_body_id id, ga2d__bo
 
 static void ga2d__wake(ga2d_world *w, int slot);
 static void ga2d__put_to_sleep(ga2d_world *w, int slot);
+static int ga2d__flip_island(ga2d_world *w, int slot, int from);
 static void ga2d__lane_clear(ga2d__step_context *c, int lane);
 static void ga2d__contain(ga2d_world *w, int slot);
 static int ga2d__reserve_rk4(ga2d_world *w, int n);
@@ -3728,30 +3729,17 @@ GA2D_API ga2d_result ga2d_body_set_awake(ga2d_world *w, ga2d_body_id id, int awa
 {
     ga2d__body *b;
     ga2d_result r = ga2d__writable(w, id, &b);
-    int head = 0, tail = 0;
+    int n, i;
     if (r != GA2D_OK) return r;
     if (awake) {
         ga2d__wake(w, ga2d__slot(id));
         return GA2D_OK;
     }
     if (b->type != GA2D_BODY_DYNAMIC || !b->awake) return GA2D_OK;
-    /* gather the awake island through touching contacts, then sleep it */
-    w->wake_queue[tail++] = ga2d__slot(id);
-    b->sleep_time = -1; /* marks "queued" while gathering */
-    while (head < tail) {
-        int s = w->wake_queue[head++], link;
-        for (link = ga2d__first_edge(w, s); link >= 0; link = ga2d__next_edge(w, link)) {
-            const ga2d__contact *ct = &w->contacts[link >> 1];
-            int other = ga2d__edge_other(w, link);
-            ga2d__body *o = &w->bodies[other];
-            if (!ct->touching || !o->awake || o->type != GA2D_BODY_DYNAMIC || o->sleep_time < 0) continue;
-            o->sleep_time = -1;
-            w->wake_queue[tail++] = other;
-        }
-    }
-    for (head = 0; head < tail; ++head) {
-        w->bodies[w->wake_queue[head]].sleep_time = 0;
-        ga2d__put_to_sleep(w, w->wake_queue[head]);
+    n = ga2d__flip_island(w, ga2d__slot(id), 1);
+    for (i = 0; i < n; ++i) {
+        w->bodies[w->wake_queue[i]].sleep_time = 0;
+        ga2d__put_to_sleep(w, w->wake_queue[i]);
     }
     return GA2D_OK;
 }
@@ -5956,34 +5944,45 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
 }
 
 /* ================================================================ sleep */
-/* Wakes a sleeping body and, through the touching contacts that sleeping
-   bodies keep, its whole island. */
-static void ga2d__wake(ga2d_world *w, int slot)
+/* The island of a dynamic body: it and the dynamic bodies joined to it by
+   touching contacts whose awake flag is `from`, each flipped as it is
+   reached (the flag marks it as met), in w->wake_queue in the order met;
+   returns their number.  The queue has room for every body slot. */
+static int ga2d__flip_island(ga2d_world *w, int slot, int from)
 {
     int head = 0, tail = 0;
-    ga2d__body *b = &w->bodies[slot];
-    if (b->awake || b->type != GA2D_BODY_DYNAMIC) {
-        b->sleep_time = 0;
-        return;
-    }
-    /* the island's bodies are queued in the move buffer's spare room:
-       its capacity covers every body slot */
-    b->awake = 1;
+    w->bodies[slot].awake = !from;
     w->wake_queue[tail++] = slot;
     while (head < tail) {
         int s = w->wake_queue[head++], link;
-        ga2d__body *x = &w->bodies[s];
-        x->sleep_time = 0;
-        ga2d__moving_add(w, s);
-        x->field_valid = 0;
         for (link = ga2d__first_edge(w, s); link >= 0; link = ga2d__next_edge(w, link)) {
             const ga2d__contact *ct = &w->contacts[link >> 1];
             int other = ga2d__edge_other(w, link);
             ga2d__body *o = &w->bodies[other];
-            if (!ct->touching || o->awake || o->type != GA2D_BODY_DYNAMIC) continue;
-            o->awake = 1;
+            if (!ct->touching || o->awake != from || o->type != GA2D_BODY_DYNAMIC) continue;
+            o->awake = !from;
             w->wake_queue[tail++] = other;
         }
+    }
+    return tail;
+}
+
+/* Wakes a sleeping body and, through the touching contacts that sleeping
+   bodies keep, its whole island. */
+static void ga2d__wake(ga2d_world *w, int slot)
+{
+    ga2d__body *b = &w->bodies[slot];
+    int n, i;
+    if (b->awake || b->type != GA2D_BODY_DYNAMIC) {
+        b->sleep_time = 0;
+        return;
+    }
+    n = ga2d__flip_island(w, slot, 0);
+    for (i = 0; i < n; ++i) {
+        ga2d__body *x = &w->bodies[w->wake_queue[i]];
+        x->sleep_time = 0;
+        ga2d__moving_add(w, w->wake_queue[i]);
+        x->field_valid = 0;
     }
 }
 
