@@ -2876,10 +2876,11 @@ static ga2d_aabb ga2d__fatten(ga2d_aabb b, ga2d_real m)
     return b;
 }
 
-static ga2d_transform ga2d__body_xf(const ga2d__body *b)
-{
-    return ga2d_transform_make(ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)), b->q);
-}
+/* A body's origin, the point users place it by: its centre less the
+   centre's offset turned by q (c - l q). */
+static ga2d_vec ga2d__body_origin(const ga2d__body *b) { return ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)); }
+
+static ga2d_transform ga2d__body_xf(const ga2d__body *b) { return ga2d_transform_make(ga2d__body_origin(b), b->q); }
 
 static ga2d__tree *ga2d__tree_of(ga2d_world *w, const ga2d__body *b) { return &w->trees[b->type != GA2D_BODY_STATIC]; }
 
@@ -3754,7 +3755,7 @@ GA2D_API ga2d_body_type ga2d_body_get_type(const ga2d_world *w, ga2d_body_id id)
 GA2D_API ga2d_vec ga2d_body_position(const ga2d_world *w, ga2d_body_id id)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
-    return b ? ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)) : ga2d_vec_make(0, 0);
+    return b ? ga2d__body_origin(b) : ga2d_vec_make(0, 0);
 }
 
 GA2D_API ga2d_rotor ga2d_body_rotor(const ga2d_world *w, ga2d_body_id id)
@@ -3891,7 +3892,7 @@ GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2
     if (b->type != GA2D_BODY_DYNAMIC || !(m.mass > 0) || m.inertia < 0) return GA2D_ERR_INVALID_ARGUMENT;
     if (!ga2d__coordinate_ok(m.center)) return GA2D_ERR_TOO_LARGE;
     if (!ga2d__finite(1 / m.mass) || (m.inertia > 0 && !ga2d__finite(1 / m.inertia))) return GA2D_ERR_INVALID_ARGUMENT;
-    center = ga2d_vec_add(ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)), ga2d_rotate(b->q, m.center));
+    center = ga2d_vec_add(ga2d__body_origin(b), ga2d_rotate(b->q, m.center));
     /* the new centre moves with the rigid motion: v + (c' - c) Omega */
     v = ga2d_vec_add(b->v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(center, b->center)), b->w));
     /* a centre so far out that the world position overflows: refused,
@@ -6519,12 +6520,14 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
             ++live;
             moves += b->type != GA2D_BODY_STATIC;
         }
-        b->island = 0; /* marks free slots met on the free list below */
     }
     if (live != count) return 0;
+    /* the free list: free slots only, each once (the wake queue, a slot
+       each, holds which were met) */
+    memset(t->wake_queue, 0, (size_t)used * sizeof *t->wake_queue);
     for (i = free_head; i >= 0; i = t->bodies[i].next_free) {
-        if (t->bodies[i].type != -1 || t->bodies[i].island || ++frees > used - count) return 0;
-        t->bodies[i].island = 1;
+        if (t->bodies[i].type != -1 || t->wake_queue[i] || ++frees > used - count) return 0;
+        t->wake_queue[i] = 1;
     }
     if (frees != used - count) return 0;
     if (!ga2d__tree_reserve(&t->mem, &t->trees[0], count - moves) ||
