@@ -1036,6 +1036,17 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
 #define GA2D__MAX_SPEED GA2D__R(GA2D_MAX_LINEAR_SPEED)
 #define GA2D__MAX_TURN GA2D__R(GA2D_MAX_ROTATION)
 
+/* Helpers that run once per body or contact point and pass, hundreds of
+   thousands of times a step: inlined into their callers (the solver's
+   keep the lanes in registers across them). */
+#if defined(__GNUC__) || defined(__clang__)
+#define GA2D__HOT inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define GA2D__HOT __forceinline
+#else
+#define GA2D__HOT inline
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -2389,8 +2400,7 @@ typedef struct ga2d__body {
     ga2d_filter filter;
     int proxy;                   /* leaf in trees[type != static] */
     int in_move;                 /* queued for pair finding */
-    int refit;                   /* its fat box must move to refit_box (between two stages of a step) */
-    ga2d_aabb refit_box;
+    int refit;                   /* its tree leaf holds a new fat box, to be moved in (within a step) */
     int contact_head;            /* first (oldest) link of its contact list, or -1 */
     int contact_tail;            /* last (newest) link, or -1 */
     ga2d_real extent;            /* farthest vertex from the centre */
@@ -2878,9 +2888,9 @@ static ga2d_aabb ga2d__fatten(ga2d_aabb b, ga2d_real m)
 
 /* A body's origin, the point users place it by: its centre less the
    centre's offset turned by q (c - l q). */
-static ga2d_vec ga2d__body_origin(const ga2d__body *b) { return ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)); }
+static GA2D__HOT ga2d_vec ga2d__body_origin(const ga2d__body *b) { return ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)); }
 
-static ga2d_transform ga2d__body_xf(const ga2d__body *b) { return ga2d_transform_make(ga2d__body_origin(b), b->q); }
+static GA2D__HOT ga2d_transform ga2d__body_xf(const ga2d__body *b) { return ga2d_transform_make(ga2d__body_origin(b), b->q); }
 
 static ga2d__tree *ga2d__tree_of(ga2d_world *w, const ga2d__body *b) { return &w->trees[b->type != GA2D_BODY_STATIC]; }
 
@@ -4058,16 +4068,6 @@ struct ga2d__contact_constraint {
     ga2d__cpoint p[2];
 };
 
-/* The solver's innermost helpers run hundreds of thousands of times a
-   step: they are inlined into its passes, where the compiler keeps the
-   lanes in registers across them. */
-#if defined(__GNUC__) || defined(__clang__)
-#define GA2D__HOT inline __attribute__((always_inline))
-#elif defined(_MSC_VER)
-#define GA2D__HOT __forceinline
-#else
-#define GA2D__HOT inline
-#endif
 
 /* ------------------------------------------------------ the lane solver */
 /* The velocity passes (warm start, solve, relax) run on groups of
@@ -4239,7 +4239,7 @@ static ga2d_real ga2d__effective_mass(const ga2d__contact_constraint *c, ga2d_ve
    point 1 (and the reverse; K is symmetric).  The points share the pair's
    masses, so this is near the diagonal's size: why they are solved as a
    block (ga2d__wblock). */
-static ga2d_real ga2d__coupling(const ga2d__contact_constraint *c, ga2d_vec ra1, ga2d_vec rb1, ga2d_vec ra2, ga2d_vec rb2)
+static GA2D__HOT ga2d_real ga2d__coupling(const ga2d__contact_constraint *c, ga2d_vec ra1, ga2d_vec rb1, ga2d_vec ra2, ga2d_vec rb2)
 {
     return c->inv_ma + c->inv_mb + c->inv_ia * ga2d_wedge(ra1, c->normal) * ga2d_wedge(ra2, c->normal) +
            c->inv_ib * ga2d_wedge(rb1, c->normal) * ga2d_wedge(rb2, c->normal);
@@ -5583,15 +5583,19 @@ static void ga2d__integrate_positions(ga2d__step_context *c)
 }
 
 /* ------------------------------------------------------- collision stages */
-/* Stage, over the moving bodies: marks each whose fat box no longer holds
-   what it can reach in this step. */
+/* Stage, over the moving bodies: each whose fat box no longer holds what
+   it can reach in this step gets its new box, written into its own tree
+   leaf (a leaf's box is read by nothing else until ga2d__refit_proxies
+   moves it in the tree) and marked. */
 static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        b->refit = ga2d__needs_refit(w, b, &b->refit_box);
+        ga2d_aabb fat;
+        b->refit = ga2d__needs_refit(w, b, &fat);
+        if (b->refit) ga2d__tree_of(w, b)->nodes[b->proxy].box = fat;
     }
 }
 
@@ -5606,9 +5610,11 @@ static void ga2d__refit_proxies(ga2d__step_context *c)
     for (k = 0; k < w->moving_count; ++k) {
         int slot = w->moving[k];
         ga2d__body *b = &w->bodies[slot];
+        ga2d__tree *t;
         if (!b->refit) continue;
         b->refit = 0;
-        ga2d__tree_move(ga2d__tree_of(w, b), b->proxy, b->refit_box);
+        t = ga2d__tree_of(w, b);
+        ga2d__tree_move(t, b->proxy, t->nodes[b->proxy].box);
         ga2d__buffer_move(w, slot);
     }
     if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
