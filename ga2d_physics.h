@@ -1096,6 +1096,9 @@ static void ga2d__free(const ga2d_allocator *a, void *p, size_t size)
     else free(p);
 }
 
+/* Frees an array of cap elements. */
+#define GA2D__FREE_ARRAY(a, arr, cap) ga2d__free(a, arr, (size_t)(cap) * sizeof *(arr))
+
 /* Grows *arr to hold `need` elements.  The new block is allocated before
    the old one is released, so a failure (returns 0) changes nothing. */
 static int ga2d__grow(const ga2d_allocator *a, void **arr, int *cap, int need, size_t elem)
@@ -1945,7 +1948,7 @@ static void ga2d__tree_query(const ga2d__tree *t, ga2d_aabb q, ga2d__query_fn *f
 
 static void ga2d__tree_release(const ga2d_allocator *a, ga2d__tree *t)
 {
-    ga2d__free(a, t->nodes, (size_t)t->capacity * sizeof *t->nodes);
+    GA2D__FREE_ARRAY(a, t->nodes, t->capacity);
 }
 
 /* ============================================================ narrowphase */
@@ -3289,19 +3292,19 @@ static void ga2d__destroy_now(ga2d_world *w)
     w->depth = 1; /* a destroy from a free hook changes nothing */
     w->destroy_pending = 1;
     w = &dead;
-    ga2d__free(a, w->bodies, (size_t)w->body_capacity * sizeof *w->bodies);
-    ga2d__free(a, w->moving, (size_t)w->moving_capacity * sizeof *w->moving);
+    GA2D__FREE_ARRAY(a, w->bodies, w->body_capacity);
+    GA2D__FREE_ARRAY(a, w->moving, w->moving_capacity);
     ga2d__tree_release(a, &w->trees[0]);
     ga2d__tree_release(a, &w->trees[1]);
-    ga2d__free(a, w->move_buf, (size_t)w->move_capacity * sizeof *w->move_buf);
-    ga2d__free(a, w->new_pairs, (size_t)w->new_pair_capacity * sizeof *w->new_pairs);
-    ga2d__free(a, w->contacts, (size_t)w->contact_capacity * sizeof *w->contacts);
-    ga2d__free(a, w->pair_keys, (size_t)w->pair_capacity * sizeof *w->pair_keys);
-    ga2d__free(a, w->pair_vals, (size_t)w->pair_capacity * sizeof *w->pair_vals);
-    ga2d__free(a, w->begin_events, (size_t)w->begin_capacity * sizeof *w->begin_events);
-    ga2d__free(a, w->end_events, (size_t)w->end_capacity * sizeof *w->end_events);
+    GA2D__FREE_ARRAY(a, w->move_buf, w->move_capacity);
+    GA2D__FREE_ARRAY(a, w->new_pairs, w->new_pair_capacity);
+    GA2D__FREE_ARRAY(a, w->contacts, w->contact_capacity);
+    GA2D__FREE_ARRAY(a, w->pair_keys, w->pair_capacity);
+    GA2D__FREE_ARRAY(a, w->pair_vals, w->pair_capacity);
+    GA2D__FREE_ARRAY(a, w->begin_events, w->begin_capacity);
+    GA2D__FREE_ARRAY(a, w->end_events, w->end_capacity);
     ga2d__step_free(a, &w->step);
-    ga2d__free(a, w->wake_queue, (size_t)w->wake_capacity * sizeof *w->wake_queue);
+    GA2D__FREE_ARRAY(a, w->wake_queue, w->wake_capacity);
     ga2d__free(&user, a->ctx, sizeof *w);
 }
 
@@ -5196,12 +5199,12 @@ static void ga2d__step_release(ga2d_world *w)
 /* Everything the context holds, freed with its world. */
 static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
 {
-    ga2d__free(a, c->rk4, (size_t)c->rk4_capacity * sizeof *c->rk4);
-    ga2d__free(a, c->constraints, (size_t)c->constraint_capacity * sizeof *c->constraints);
-    ga2d__free(a, c->groups, (size_t)c->group_capacity * sizeof *c->groups);
-    ga2d__free(a, c->sbodies, (size_t)c->sbody_capacity * sizeof *c->sbodies);
-    ga2d__free(a, c->last_group, (size_t)c->last_group_capacity * sizeof *c->last_group);
-    ga2d__free(a, c->changed, (size_t)c->changed_capacity * sizeof *c->changed);
+    GA2D__FREE_ARRAY(a, c->rk4, c->rk4_capacity);
+    GA2D__FREE_ARRAY(a, c->constraints, c->constraint_capacity);
+    GA2D__FREE_ARRAY(a, c->groups, c->group_capacity);
+    GA2D__FREE_ARRAY(a, c->sbodies, c->sbody_capacity);
+    GA2D__FREE_ARRAY(a, c->last_group, c->last_group_capacity);
+    GA2D__FREE_ARRAY(a, c->changed, c->changed_capacity);
 }
 
 /* Runs the force callback at time t on the bodies' current state.  The
