@@ -2340,15 +2340,17 @@ typedef struct ga2d__held {
    pool (stable index, free list) and on both bodies' lists: link value
    2 * contact + side, side 0 on body a's list and 1 on body b's. */
 typedef struct ga2d__contact {
+    /* first: what walking a body's list reads (the solver's order walks
+       every list each step), in one cache line */
     int a, b;                /* body slots, a < b */
     int prev[2], next[2];    /* the bodies' list links, -1 at the ends */
+    int touching;
+    int next_free;           /* -2 while in use */
+    int flags;               /* GA2D__CONTACT_*: what the narrowphase found, until book-kept */
     ga2d_manifold manifold;
     ga2d_real friction, restitution;
-    int touching;
-    int flags;               /* GA2D__CONTACT_*: what the narrowphase found, until book-kept */
     ga2d_vec end_normal;     /* an ended touch's new normal, while its end is reported */
     ga2d__held held;         /* the manifold in A's frame, while touching */
-    int next_free;           /* -2 while in use */
     uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
 } ga2d__contact;
 
@@ -2403,7 +2405,6 @@ typedef struct ga2d__body {
     ga2d_filter filter;
     int proxy;                   /* leaf in trees[type != static] */
     int in_move;                 /* queued for pair finding */
-    int refit;                   /* its tree leaf holds a new fat box, to be moved in (within a step) */
     int contact_head;            /* first (oldest) link of its contact list, or -1 */
     int contact_tail;            /* last (newest) link, or -1 */
     ga2d_real extent;            /* farthest vertex from the centre */
@@ -2451,6 +2452,8 @@ typedef struct ga2d__step_context {
     int rk4_capacity;
     uint64_t *changed;           /* a bit per pool contact the narrowphase flagged */
     int changed_capacity;        /* in 64-bit words */
+    uint64_t *refits;            /* a bit per moving body whose tree leaf holds a new box */
+    int refit_capacity;          /* in 64-bit words */
     ga2d_real rk4_at, rk4_weight; /* the RK4 stage under way: its time in substeps, its weight */
 } ga2d__step_context;
 
@@ -2601,6 +2604,7 @@ static int ga2d__flip_island(ga2d_world *w, int slot, int from);
 static void ga2d__lane_clear(ga2d__step_context *c, int lane);
 static void ga2d__contain(ga2d_world *w, int slot);
 static int ga2d__reserve_rk4(ga2d_world *w, int n);
+static int ga2d__reserve_refits(ga2d_world *w, int n);
 static void ga2d__step_release(ga2d_world *w);
 static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c);
 static void ga2d__update_sleep(ga2d__step_context *c);
@@ -3616,6 +3620,7 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
         if (w->def.integrator == GA2D_INTEGRATOR_RK4 &&
             !ga2d__reserve_rk4(w, w->moving_capacity))
             return id;
+        if (!ga2d__reserve_refits(w, w->moving_capacity)) return id;
     }
     ga2d_polygon_make(def->polygon.vertices, def->polygon.count, &poly); /* validated above */
     /* the centroid for every type; mass and inertia only move dynamic bodies */
@@ -4849,28 +4854,14 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
    by ga2d__fill_lanes). */
 static void ga2d__lane_put(ga2d__step_context *c, ga2d__group *g, int ci)
 {
-    ga2d_world *w = c->world;
     ga2d__contact_constraint *cc = &c->constraints[ci];
-    int l = g->count++, e;
+    int l = g->count++;
     g->a[l] = cc->a;
     g->b[l] = cc->b;
     g->con[l] = ci;
     GA2D__LANE(g->move_a, l) = -(cc->inv_ma != 0 || cc->inv_ia != 0);
     GA2D__LANE(g->move_b, l) = -(cc->inv_mb != 0 || cc->inv_ib != 0);
     cc->lane = (int)(g - c->groups) * GA2D__LANES + l;
-    /* a body the lane does not move: not gathered per pass (static or
-       asleep), it is seen as it is, at rest where the step began */
-    for (e = 0; e < 2; ++e) {
-        int slot = e ? cc->b : cc->a;
-        const ga2d__body *b = &w->bodies[slot];
-        ga2d__sbody *s = &c->sbodies[slot];
-        if (b->move_index >= 0) continue;
-        s->vx = b->v.x;
-        s->vy = b->v.y;
-        s->w = b->w;
-        s->pad = s->dpx = s->dpy = s->dqs = 0;
-        s->dqc = 1;
-    }
 }
 
 /* A new group, no lane in use yet (ga2d__group_pad fills what stays empty). */
@@ -4945,6 +4936,21 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
     }
 }
 
+/* A body the solver does not move (static or asleep) is not gathered per
+   pass: it is seen as it is, at rest where the step began.  (Lanes that
+   share such a body write it the same values.) */
+static void ga2d__still_body(ga2d__step_context *c, int slot)
+{
+    const ga2d__body *b = &c->world->bodies[slot];
+    ga2d__sbody *s = &c->sbodies[slot];
+    if (b->move_index >= 0) return;
+    s->vx = b->v.x;
+    s->vy = b->v.y;
+    s->w = b->w;
+    s->pad = s->dpx = s->dpy = s->dqs = 0;
+    s->dqc = 1;
+}
+
 /* Stage, over the groups: each lane takes its constraint's data (d: B's
    centre less A's); the lanes a group was closed without take the dummy
    slot and all zeros. */
@@ -4960,8 +4966,10 @@ static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
         ga2d__group *g = &c->groups[gi];
         for (l = 0; l < g->count; ++l) {
             const ga2d__contact_constraint *cc = &c->constraints[g->con[l]];
-            ga2d_vec d = ga2d_vec_sub(w->bodies[cc->b].center, w->bodies[cc->a].center);
-            ga2d__lane_write(g, l, cc, d, cc->to_static ? &c->stiff : &c->soft, &none);
+            const ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
+            ga2d__lane_write(g, l, cc, ga2d_vec_sub(b->center, a->center), cc->to_static ? &c->stiff : &c->soft, &none);
+            ga2d__still_body(c, cc->a);
+            ga2d__still_body(c, cc->b);
         }
         for (; l < GA2D__LANES; ++l) {
             g->a[l] = g->b[l] = w->body_used;
@@ -5182,6 +5190,13 @@ static int ga2d__reserve_rk4(ga2d_world *w, int n)
     return ga2d__grow(&w->mem, (void **)&w->step.rk4, &w->step.rk4_capacity, n, sizeof *w->step.rk4);
 }
 
+/* A refit bit for each of n moving bodies: kept at the moving list's
+   capacity, so that a step never allocates it. */
+static int ga2d__reserve_refits(ga2d_world *w, int n)
+{
+    return ga2d__grow(&w->mem, (void **)&w->step.refits, &w->step.refit_capacity, (n + 63) / 64, sizeof *w->step.refits);
+}
+
 /* The solver's arrays given back (ga2d_world_compact); the next step
    allocates what it needs. */
 static void ga2d__step_release(ga2d_world *w)
@@ -5205,6 +5220,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->sbodies, c->sbody_capacity);
     GA2D__FREE_ARRAY(a, c->last_group, c->last_group_capacity);
     GA2D__FREE_ARRAY(a, c->changed, c->changed_capacity);
+    GA2D__FREE_ARRAY(a, c->refits, c->refit_capacity);
 }
 
 /* Runs the force callback at time t on the bodies' current state.  The
@@ -5586,10 +5602,37 @@ static void ga2d__integrate_positions(ga2d__step_context *c)
 }
 
 /* ------------------------------------------------------- collision stages */
+/* The stages flag what book-keeping must visit in bit sets (a bit per
+   item, set by the item's own stage), visited in item order. */
+/* The first set bit from i on, below n, or -1. */
+static int ga2d__next_bit(const uint64_t *bits, int i, int n)
+{
+    for (; i < n; i = (i | 63) + 1) {
+        uint64_t w = bits[i >> 6] >> (i & 63);
+        if (w) {
+            while (!(w & 1)) {
+                w >>= 1;
+                ++i;
+            }
+            return i < n ? i : -1;
+        }
+    }
+    return -1;
+}
+
+/* n clear bits; 0 when out of memory. */
+static int ga2d__bits_clear(ga2d_world *w, uint64_t **bits, int *capacity, int n)
+{
+    int words = (n + 63) / 64;
+    if (!ga2d__grow(&w->mem, (void **)bits, capacity, words, sizeof **bits)) return 0;
+    if (words > 0) memset(*bits, 0, (size_t)words * sizeof **bits);
+    return 1;
+}
+
 /* Stage, over the moving bodies: each whose fat box no longer holds what
    it can reach in this step gets its new box, written into its own tree
    leaf (a leaf's box is read by nothing else until ga2d__refit_proxies
-   moves it in the tree) and marked. */
+   moves it in the tree), and its bit. */
 static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
@@ -5597,8 +5640,9 @@ static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
         ga2d_aabb fat;
-        b->refit = ga2d__needs_refit(w, b, &fat);
-        if (b->refit) ga2d__tree_of(w, b)->nodes[b->proxy].box = fat;
+        if (!ga2d__needs_refit(w, b, &fat)) continue;
+        ga2d__tree_of(w, b)->nodes[b->proxy].box = fat;
+        c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
     }
 }
 
@@ -5610,13 +5654,10 @@ static void ga2d__refit_proxies(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     int k, n;
-    for (k = 0; k < w->moving_count; ++k) {
+    for (k = ga2d__next_bit(c->refits, 0, w->moving_count); k >= 0; k = ga2d__next_bit(c->refits, k + 1, w->moving_count)) {
         int slot = w->moving[k];
         ga2d__body *b = &w->bodies[slot];
-        ga2d__tree *t;
-        if (!b->refit) continue;
-        b->refit = 0;
-        t = ga2d__tree_of(w, b);
+        ga2d__tree *t = ga2d__tree_of(w, b);
         ga2d__tree_move(t, b->proxy, t->nodes[b->proxy].box);
         ga2d__buffer_move(w, slot);
     }
@@ -5725,33 +5766,15 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
     }
 }
 
-/* The next contact from ci on that the narrowphase flagged, or -1. */
-static int ga2d__next_changed(const ga2d__step_context *c, int ci, int used)
-{
-    for (; ci < used; ci = (ci | 63) + 1) {
-        uint64_t bits = c->changed[ci >> 6] >> (ci & 63);
-        if (bits) {
-            while (!(bits & 1)) {
-                bits >>= 1;
-                ++ci;
-            }
-            return ci;
-        }
-    }
-    return -1;
-}
-
 /* Book-keeping before the narrowphase: a clear bit for every pool contact.
    Out of memory, the step reports it and keeps the last manifolds. */
 static int ga2d__reserve_changes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    int words = (w->contact_used + 63) / 64;
-    if (!ga2d__grow(&w->mem, (void **)&c->changed, &c->changed_capacity, words, sizeof *c->changed)) {
+    if (!ga2d__bits_clear(w, &c->changed, &c->changed_capacity, w->contact_used)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return 0;
     }
-    if (words > 0) memset(c->changed, 0, (size_t)words * sizeof *c->changed);
     w->counters.manifolds_carried = 0;
     return 1;
 }
@@ -5765,7 +5788,7 @@ static void ga2d__contact_changes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     int ci, used = w->contact_used, wakes = 0;
-    for (ci = ga2d__next_changed(c, 0, used); ci >= 0; ci = ga2d__next_changed(c, ci + 1, used)) {
+    for (ci = ga2d__next_bit(c->changed, 0, used); ci >= 0; ci = ga2d__next_bit(c->changed, ci + 1, used)) {
         ga2d__contact *ct = &w->contacts[ci];
         int f = ct->flags;
         if (f & GA2D__CONTACT_DISJOINT) {
@@ -5784,7 +5807,7 @@ static void ga2d__contact_changes(ga2d__step_context *c)
         ct->flags = f & GA2D__CONTACT_WAKES;
         wakes += ct->flags != 0;
     }
-    for (ci = ga2d__next_changed(c, 0, used); ci >= 0 && wakes > 0; ci = ga2d__next_changed(c, ci + 1, used)) {
+    for (ci = ga2d__next_bit(c->changed, 0, used); ci >= 0 && wakes > 0; ci = ga2d__next_bit(c->changed, ci + 1, used)) {
         ga2d__contact *ct = &w->contacts[ci];
         if (ct->next_free != -2 || !ct->flags) continue;
         ct->flags = 0;
@@ -5900,6 +5923,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     int s, i, r, stages;
     ga2d__step_begin(w, dt, h);
     /* collision: fat boxes, new pairs, manifolds */
+    if (w->moving_count > 0) memset(c->refits, 0, (size_t)((w->moving_count + 63) / 64) * sizeof *c->refits);
     ga2d__run(c, ga2d__mark_refits, w->moving_count);
     ga2d__refit_proxies(c);
     ga2d__run(c, ga2d__find_pairs, w->move_count);
@@ -6481,7 +6505,7 @@ static int ga2d__snap_body_ok(const ga2d__body *b, int body_used)
         return 0;
     q2 = b->q.c * b->q.c + b->q.s * b->q.s;
     if (!(q2 > GA2D__R(0.99) && q2 < GA2D__R(1.01))) return 0;
-    if ((b->awake | b->fixed_rotation | b->in_move | b->field_valid) & ~1 || b->refit) return 0;
+    if ((b->awake | b->fixed_rotation | b->in_move | b->field_valid) & ~1) return 0;
     if (b->polygon.count < 3 || b->polygon.count > GA2D_MAX_POLYGON_VERTICES) return 0;
     if (ga2d_polygon_make(b->polygon.vertices, b->polygon.count, &p) != GA2D_OK || p.count != b->polygon.count) return 0;
     for (k = 0; k < p.count; ++k)
@@ -6517,6 +6541,7 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
         !ga2d__grow(&t->mem, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving))
         return -1;
     if (t->def.integrator == GA2D_INTEGRATOR_RK4 && !ga2d__reserve_rk4(t, t->moving_capacity)) return -1;
+    if (!ga2d__reserve_refits(t, t->moving_capacity)) return -1;
     memset(t->bodies, 0, (size_t)used * sizeof *t->bodies);
     t->body_used = used;
     t->body_count = count;
