@@ -2458,10 +2458,13 @@ typedef struct ga2d__step_context {
 } ga2d__step_context;
 
 /* A stage of the step over items [begin, end) of its kind (moving bodies,
-   contacts, constraints or lane groups).  Items of one stage never share
-   what the stage writes, so a range is a unit of work (threads will hand
-   ranges to workers); a stage only computes: what creates, destroys or
-   wakes is book-kept after it, in order. */
+   contacts, constraints or lane groups).  A stage only computes: what
+   creates, destroys or wakes is book-kept after it, in order.  Its items
+   write their own data, so a range is a unit of work (threads will hand
+   ranges to workers), except for three shared writes threads must still
+   split: the world's counters, containment of a body gone non-finite,
+   and a body the solver does not move, written into the solver bodies by
+   each lane that has it (the same values). */
 typedef void ga2d__range_fn(ga2d__step_context *c, int begin, int end);
 
 /* Runs a stage over all n items. */
@@ -3221,15 +3224,6 @@ static int ga2d__gravity_ok(ga2d_vec g, ga2d_real units)
     return ga2d__length_times(g, 1) <= GA2D__R(GA2D_MAX_GRAVITY) * units;
 }
 
-static ga2d_result ga2d__world_def_check(const ga2d_world_def *d);
-
-GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *def)
-{
-    ga2d_world_def d;
-    if (!def) return GA2D_ERR_INVALID_ARGUMENT;
-    ga2d__resolve_world_def(def, &d);
-    return ga2d__world_def_check(&d);
-}
 
 /* A resolved def's values against their bounds. */
 static ga2d_result ga2d__world_def_check(const ga2d_world_def *d)
@@ -3251,6 +3245,14 @@ static ga2d_result ga2d__world_def_check(const ga2d_world_def *d)
         return GA2D_ERR_INVALID_ARGUMENT;
     if ((d->allocator.alloc == NULL) != (d->allocator.free == NULL)) return GA2D_ERR_INVALID_ARGUMENT;
     return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *def)
+{
+    ga2d_world_def d;
+    if (!def) return GA2D_ERR_INVALID_ARGUMENT;
+    ga2d__resolve_world_def(def, &d);
+    return ga2d__world_def_check(&d);
 }
 
 GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
@@ -3534,15 +3536,6 @@ static void ga2d__resolve_body_def(const ga2d_body_def *in, ga2d_body_def *out)
     GA2D__TAKE(filter);
 }
 
-static ga2d_result ga2d__body_def_check(const ga2d_body_def *d);
-
-GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *def)
-{
-    ga2d_body_def d;
-    if (!def) return GA2D_ERR_INVALID_ARGUMENT;
-    ga2d__resolve_body_def(def, &d);
-    return ga2d__body_def_check(&d);
-}
 
 /* A resolved def's values against their bounds. */
 static ga2d_result ga2d__body_def_check(const ga2d_body_def *d)
@@ -3578,6 +3571,14 @@ static ga2d_result ga2d__body_def_check(const ga2d_body_def *d)
             return GA2D_ERR_DEGENERATE;
     }
     return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *def)
+{
+    ga2d_body_def d;
+    if (!def) return GA2D_ERR_INVALID_ARGUMENT;
+    ga2d__resolve_body_def(def, &d);
+    return ga2d__body_def_check(&d);
 }
 
 /* Adds slot i to the moving list (capacity ensured by the caller). */
@@ -5620,13 +5621,10 @@ static int ga2d__next_bit(const uint64_t *bits, int i, int n)
     return -1;
 }
 
-/* n clear bits; 0 when out of memory. */
-static int ga2d__bits_clear(ga2d_world *w, uint64_t **bits, int *capacity, int n)
+/* Bits [0, n) cleared. */
+static void ga2d__bits_zero(uint64_t *bits, int n)
 {
-    int words = (n + 63) / 64;
-    if (!ga2d__grow(&w->mem, (void **)bits, capacity, words, sizeof **bits)) return 0;
-    if (words > 0) memset(*bits, 0, (size_t)words * sizeof **bits);
-    return 1;
+    if (n > 0) memset(bits, 0, (size_t)((n + 63) / 64) * sizeof *bits);
 }
 
 /* Stage, over the moving bodies: each whose fat box no longer holds what
@@ -5771,10 +5769,12 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
 static int ga2d__reserve_changes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    if (!ga2d__bits_clear(w, &c->changed, &c->changed_capacity, w->contact_used)) {
+    if (!ga2d__grow(&w->mem, (void **)&c->changed, &c->changed_capacity, (w->contact_used + 63) / 64,
+                    sizeof *c->changed)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return 0;
     }
+    ga2d__bits_zero(c->changed, w->contact_used);
     w->counters.manifolds_carried = 0;
     return 1;
 }
@@ -5801,7 +5801,6 @@ static void ga2d__contact_changes(ga2d__step_context *c)
             ga2d__push_event(w, 1, ct);
             memset(&ct->manifold, 0, sizeof ct->manifold); /* as ga2d__collide left it: no point */
             ct->manifold.normal = ct->end_normal;
-            ct->end_normal = ga2d_vec_make(0, 0);
         }
         if (f & GA2D__CONTACT_BEGAN) ga2d__push_event(w, 0, ct);
         ct->flags = f & GA2D__CONTACT_WAKES;
@@ -5923,7 +5922,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     int s, i, r, stages;
     ga2d__step_begin(w, dt, h);
     /* collision: fat boxes, new pairs, manifolds */
-    if (w->moving_count > 0) memset(c->refits, 0, (size_t)((w->moving_count + 63) / 64) * sizeof *c->refits);
+    ga2d__bits_zero(c->refits, w->moving_count);
     ga2d__run(c, ga2d__mark_refits, w->moving_count);
     ga2d__refit_proxies(c);
     ga2d__run(c, ga2d__find_pairs, w->move_count);
