@@ -2373,47 +2373,58 @@ static uint32_t ga2d__hash(uint64_t k)
     return (uint32_t)k;
 }
 
-/* A body slot.  State is kept at the centre of mass (position `center`,
-   orientation `q`, velocity `v`, angular velocity `w` of Omega = w e12);
-   the origin that users see is center - local_center q. */
-typedef struct ga2d__body {
+/* A body's integration state: what the integrators and the solver's
+   set-up read and write each step, apart from the shapes.  State is kept at
+   the centre of mass (position `center`, orientation `q`, velocity `v`,
+   angular velocity `w` of Omega = w e12); the origin that users see is
+   center - local_center q. */
+typedef struct ga2d__body_sim {
     ga2d_vec center;
     ga2d_rotor q;
     ga2d_vec v;
     ga2d_real w;
     ga2d_vec center0;            /* where the step began (solver) */
     ga2d_rotor q0;
+    ga2d_rotor dq;               /* q q0~: its turn since then, per solver pass */
     ga2d_real inv_mass, inv_inertia;
-    int type;                    /* ga2d_body_type; -1 for a free slot */
-    int awake;
-    int move_index;              /* index in world->moving, or -1 */
     ga2d_vec force;              /* the user's, cleared after each step */
     ga2d_real torque;
     ga2d_real gravity_scale, linear_damping, angular_damping;
     ga2d_vec local_center;
-    ga2d_rotor dq;               /* q q0~: its turn since then, per solver pass */
     ga2d_vec field_force;        /* the force callback's, per evaluation */
     ga2d_real field_torque;
     ga2d_vec field_accel;        /* Verlet: the field's acceleration at the */
     ga2d_real field_alpha;       /* current state, reused by the next step */
     int field_valid;
-    ga2d_real mass, inertia;
-    ga2d_real friction, restitution;
+} ga2d__body_sim;
+
+/* A body slot, in three parts as they are used: its integration state
+   (`sim`, first, so the integrators' reads share the fewest cache lines);
+   its book-keeping (identity, lists, island, sleep); and what it is made
+   of (mass, material, filter, polygon: read once per contact, not per
+   pass).  The solver's view of it is ga2d__sbody, with the solver. */
+typedef struct ga2d__body {
+    ga2d__body_sim sim;
+    /* book-keeping */
+    int type;                    /* ga2d_body_type; -1 for a free slot */
+    int awake;
     uint32_t generation;
     int next_free;
-    int fixed_rotation;
-    ga2d_filter filter;
+    int move_index;              /* index in world->moving, or -1 */
     int proxy;                   /* leaf in trees[type != static] */
     int in_move;                 /* queued for pair finding */
     int contact_head;            /* first (oldest) link of its contact list, or -1 */
     int contact_tail;            /* last (newest) link, or -1 */
-    ga2d_real extent;            /* farthest vertex from the centre */
-    ga2d_real sleep_time, island_rest;
     int island;                  /* union-find parent while islands form */
-    /* last: what a step reads once per contact, not per pass, so that the
-       state above shares fewer cache lines */
-    ga2d_polygon polygon;
+    ga2d_real sleep_time, island_rest;
     void *user_data;
+    /* what it is made of */
+    ga2d_real mass, inertia;
+    ga2d_real friction, restitution;
+    int fixed_rotation;
+    ga2d_filter filter;
+    ga2d_real extent;            /* farthest vertex from the centre */
+    ga2d_polygon polygon;
 } ga2d__body;
 
 /* The solver's types, defined with the solver; the step context holds
@@ -2586,7 +2597,7 @@ static ga2d__body *ga2d__lookup(const ga2d_world *w, ga2d_body_id id)
 }
 
 /* Position, rotor and velocities all finite. */
-static int ga2d__state_finite(const ga2d__body *b)
+static int ga2d__state_finite(const ga2d__body_sim *b)
 {
     return ga2d__finite_vec(b->center) && ga2d__finite(b->q.c) && ga2d__finite(b->q.s) && ga2d__finite_vec(b->v) &&
            ga2d__finite(b->w);
@@ -2898,9 +2909,9 @@ static ga2d_aabb ga2d__fatten(ga2d_aabb b, ga2d_real m)
 
 /* A body's origin, the point users place it by: its centre less the
    centre's offset turned by q (c - l q). */
-static GA2D__HOT ga2d_vec ga2d__body_origin(const ga2d__body *b) { return ga2d_vec_sub(b->center, ga2d_rotate(b->q, b->local_center)); }
+static GA2D__HOT ga2d_vec ga2d__body_origin(const ga2d__body *b) { return ga2d_vec_sub(b->sim.center, ga2d_rotate(b->sim.q, b->sim.local_center)); }
 
-static GA2D__HOT ga2d_transform ga2d__body_xf(const ga2d__body *b) { return ga2d_transform_make(ga2d__body_origin(b), b->q); }
+static GA2D__HOT ga2d_transform ga2d__body_xf(const ga2d__body *b) { return ga2d_transform_make(ga2d__body_origin(b), b->sim.q); }
 
 static ga2d__tree *ga2d__tree_of(ga2d_world *w, const ga2d__body *b) { return &w->trees[b->type != GA2D_BODY_STATIC]; }
 
@@ -2937,8 +2948,8 @@ static ga2d_real ga2d__margin(const ga2d_world *w, const ga2d__body *b)
    under 10 m/s^2), which the margin covers. */
 static ga2d_aabb ga2d__reach_box(const ga2d__body *b, ga2d_aabb box, ga2d_real dt)
 {
-    ga2d_vec d = ga2d_vec_scale(b->v, dt);
-    ga2d_real turn = GA2D__FABS(b->w) * dt, swing = b->extent * (turn < 1 ? turn : 1);
+    ga2d_vec d = ga2d_vec_scale(b->sim.v, dt);
+    ga2d_real turn = GA2D__FABS(b->sim.w) * dt, swing = b->extent * (turn < 1 ? turn : 1);
     if (d.x < 0) box.lower.x += d.x; else box.upper.x += d.x;
     if (d.y < 0) box.lower.y += d.y; else box.upper.y += d.y;
     return ga2d__fatten(box, swing);
@@ -3392,9 +3403,9 @@ static void ga2d__reset_field(ga2d_world *w)
     int k;
     for (k = 0; k < w->moving_count; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        b->field_force = b->field_accel = ga2d_vec_make(0, 0);
-        b->field_torque = b->field_alpha = 0;
-        b->field_valid = 0;
+        b->sim.field_force = b->sim.field_accel = ga2d_vec_make(0, 0);
+        b->sim.field_torque = b->sim.field_alpha = 0;
+        b->sim.field_valid = 0;
     }
 }
 
@@ -3641,17 +3652,17 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
     }
     b->type = (int)def->type;
     b->polygon = poly;
-    b->local_center = m.center;
-    b->q = (def->rotor.c == 0 && def->rotor.s == 0) ? ga2d_rotor_identity() : ga2d_rotor_normalize(def->rotor);
-    b->center = ga2d_vec_add(def->position, ga2d_rotate(b->q, m.center));
-    b->center0 = b->center; /* bodies that never step keep their start pose */
-    b->q0 = b->q;
-    b->dq = ga2d_rotor_identity();
+    b->sim.local_center = m.center;
+    b->sim.q = (def->rotor.c == 0 && def->rotor.s == 0) ? ga2d_rotor_identity() : ga2d_rotor_normalize(def->rotor);
+    b->sim.center = ga2d_vec_add(def->position, ga2d_rotate(b->sim.q, m.center));
+    b->sim.center0 = b->sim.center; /* bodies that never step keep their start pose */
+    b->sim.q0 = b->sim.q;
+    b->sim.dq = ga2d_rotor_identity();
     b->friction = def->friction;
     b->restitution = def->restitution;
-    b->linear_damping = def->linear_damping;
-    b->angular_damping = def->angular_damping;
-    b->gravity_scale = def->gravity_scale;
+    b->sim.linear_damping = def->linear_damping;
+    b->sim.angular_damping = def->angular_damping;
+    b->sim.gravity_scale = def->gravity_scale;
     b->fixed_rotation = def->fixed_rotation != 0;
     b->awake = def->is_awake != 0;
     b->user_data = def->user_data;
@@ -3659,9 +3670,9 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
     b->next_free = -1;
     if (def->type == GA2D_BODY_DYNAMIC) {
         b->mass = m.mass;
-        b->inv_mass = 1 / m.mass;
+        b->sim.inv_mass = 1 / m.mass;
         b->inertia = m.inertia;
-        b->inv_inertia = b->fixed_rotation ? 0 : 1 / m.inertia;
+        b->sim.inv_inertia = b->fixed_rotation ? 0 : 1 / m.inertia;
     }
     {
         int j;
@@ -3672,8 +3683,8 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
     }
     if (def->type != GA2D_BODY_DYNAMIC) b->awake = 1; /* only dynamic bodies sleep */
     if (moves) {
-        b->v = def->velocity;
-        b->w = (b->fixed_rotation && def->type == GA2D_BODY_DYNAMIC) ? 0 : def->angular_velocity;
+        b->sim.v = def->velocity;
+        b->sim.w = (b->fixed_rotation && def->type == GA2D_BODY_DYNAMIC) ? 0 : def->angular_velocity;
         if (b->awake) ga2d__moving_add(w, slot);
     }
     b->filter = def->filter;
@@ -3780,7 +3791,7 @@ GA2D_API ga2d_vec ga2d_body_position(const ga2d_world *w, ga2d_body_id id)
 GA2D_API ga2d_rotor ga2d_body_rotor(const ga2d_world *w, ga2d_body_id id)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
-    return b ? b->q : ga2d_rotor_identity();
+    return b ? b->sim.q : ga2d_rotor_identity();
 }
 
 GA2D_API ga2d_real ga2d_body_angle(const ga2d_world *w, ga2d_body_id id) { return ga2d_rotor_angle(ga2d_body_rotor(w, id)); }
@@ -3793,19 +3804,19 @@ GA2D_API ga2d_transform ga2d_body_transform(const ga2d_world *w, ga2d_body_id id
 GA2D_API ga2d_vec ga2d_body_center(const ga2d_world *w, ga2d_body_id id)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
-    return b ? b->center : ga2d_vec_make(0, 0);
+    return b ? b->sim.center : ga2d_vec_make(0, 0);
 }
 
 GA2D_API ga2d_vec ga2d_body_velocity(const ga2d_world *w, ga2d_body_id id)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
-    return b ? b->v : ga2d_vec_make(0, 0);
+    return b ? b->sim.v : ga2d_vec_make(0, 0);
 }
 
 GA2D_API ga2d_real ga2d_body_angular_velocity(const ga2d_world *w, ga2d_body_id id)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
-    return b ? b->w : 0;
+    return b ? b->sim.w : 0;
 }
 
 /* v + r Omega with r = p - c: r (w e12) = w perp(r) */
@@ -3813,7 +3824,7 @@ GA2D_API ga2d_vec ga2d_body_velocity_at(const ga2d_world *w, ga2d_body_id id, ga
 {
     const ga2d__body *b = ga2d__lookup(w, id);
     if (!b) return ga2d_vec_make(0, 0);
-    return ga2d_vec_add(b->v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(p, b->center)), b->w));
+    return ga2d_vec_add(b->sim.v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(p, b->sim.center)), b->sim.w));
 }
 
 GA2D_API ga2d_mass ga2d_body_mass_data(const ga2d_world *w, ga2d_body_id id)
@@ -3823,7 +3834,7 @@ GA2D_API ga2d_mass ga2d_body_mass_data(const ga2d_world *w, ga2d_body_id id)
     memset(&m, 0, sizeof m);
     if (!b) return m;
     m.mass = b->mass;
-    m.center = b->local_center;
+    m.center = b->sim.local_center;
     m.inertia = b->inertia;
     return m;
 }
@@ -3832,7 +3843,7 @@ GA2D_API ga2d_real ga2d_body_kinetic_energy(const ga2d_world *w, ga2d_body_id id
 {
     const ga2d__body *b = ga2d__lookup(w, id);
     if (!b || b->type != GA2D_BODY_DYNAMIC) return 0;
-    return (b->mass * ga2d_dot(b->v, b->v) + (b->inv_inertia > 0 ? b->inertia * b->w * b->w : 0)) / 2;
+    return (b->mass * ga2d_dot(b->sim.v, b->sim.v) + (b->sim.inv_inertia > 0 ? b->inertia * b->sim.w * b->sim.w : 0)) / 2;
 }
 
 GA2D_API const ga2d_polygon *ga2d_body_polygon(const ga2d_world *w, ga2d_body_id id)
@@ -3861,16 +3872,16 @@ GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2
         if (ga2d_vec_normalize(ga2d_vec_make(q.c, q.s), &u) == 0) return GA2D_ERR_INVALID_ARGUMENT;
         /* the centre must be finite too (a huge position plus a huge
            centre of mass from ga2d_body_set_mass_data can overflow) */
-        c = ga2d_vec_add(position, ga2d_rotate(ga2d__rotor(u.x, u.y), b->local_center));
+        c = ga2d_vec_add(position, ga2d_rotate(ga2d__rotor(u.x, u.y), b->sim.local_center));
         if (!ga2d__finite_vec(c)) return GA2D_ERR_NOT_FINITE;
-        b->q = ga2d__rotor(u.x, u.y);
-        b->center = c;
+        b->sim.q = ga2d__rotor(u.x, u.y);
+        b->sim.center = c;
     }
     ga2d__wake(w, ga2d__slot(id));
-    b->center0 = b->center;
-    b->q0 = b->q;
-    b->dq = ga2d_rotor_identity();
-    b->field_valid = 0;
+    b->sim.center0 = b->sim.center;
+    b->sim.q0 = b->sim.q;
+    b->sim.dq = ga2d_rotor_identity();
+    b->sim.field_valid = 0;
     ga2d__update_proxy(w, ga2d__slot(id));
     return GA2D_OK;
 }
@@ -3883,7 +3894,7 @@ GA2D_API ga2d_result ga2d_body_set_velocity(ga2d_world *w, ga2d_body_id id, ga2d
     if (!ga2d__finite_vec(v)) return GA2D_ERR_NOT_FINITE;
     if (b->type == GA2D_BODY_STATIC) return GA2D_ERR_INVALID_ARGUMENT; /* a static body cannot move */
     ga2d__wake(w, ga2d__slot(id));
-    b->v = v;
+    b->sim.v = v;
     return GA2D_OK;
 }
 
@@ -3895,9 +3906,9 @@ GA2D_API ga2d_result ga2d_body_set_angular_velocity(ga2d_world *w, ga2d_body_id 
     if (!ga2d__finite(omega)) return GA2D_ERR_NOT_FINITE;
     if (b->type == GA2D_BODY_STATIC) return GA2D_ERR_INVALID_ARGUMENT;
     /* fixed rotation, or inertia 0 from set_mass_data: it cannot turn */
-    if (b->type == GA2D_BODY_DYNAMIC && b->inv_inertia == 0 && omega != 0) return GA2D_ERR_INVALID_ARGUMENT;
+    if (b->type == GA2D_BODY_DYNAMIC && b->sim.inv_inertia == 0 && omega != 0) return GA2D_ERR_INVALID_ARGUMENT;
     ga2d__wake(w, ga2d__slot(id));
-    b->w = omega;
+    b->sim.w = omega;
     return GA2D_OK;
 }
 
@@ -3911,22 +3922,22 @@ GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2
     if (b->type != GA2D_BODY_DYNAMIC || !(m.mass > 0) || m.inertia < 0) return GA2D_ERR_INVALID_ARGUMENT;
     if (!ga2d__coordinate_ok(m.center)) return GA2D_ERR_TOO_LARGE;
     if (!ga2d__finite(1 / m.mass) || (m.inertia > 0 && !ga2d__finite(1 / m.inertia))) return GA2D_ERR_INVALID_ARGUMENT;
-    center = ga2d_vec_add(ga2d__body_origin(b), ga2d_rotate(b->q, m.center));
+    center = ga2d_vec_add(ga2d__body_origin(b), ga2d_rotate(b->sim.q, m.center));
     /* the new centre moves with the rigid motion: v + (c' - c) Omega */
-    v = ga2d_vec_add(b->v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(center, b->center)), b->w));
+    v = ga2d_vec_add(b->sim.v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(center, b->sim.center)), b->sim.w));
     /* a centre so far out that the world position overflows: refused,
        like any input that would make the state not finite */
     if (!ga2d__finite_vec(center) || !ga2d__finite_vec(v)) return GA2D_ERR_NOT_FINITE;
     ga2d__wake(w, ga2d__slot(id));
-    b->center = center;
-    b->v = v;
-    b->local_center = m.center;
+    b->sim.center = center;
+    b->sim.v = v;
+    b->sim.local_center = m.center;
     b->mass = m.mass;
-    b->inv_mass = 1 / m.mass;
+    b->sim.inv_mass = 1 / m.mass;
     b->inertia = m.inertia;
-    b->inv_inertia = (b->fixed_rotation || m.inertia == 0) ? 0 : 1 / m.inertia;
-    if (b->inv_inertia == 0) b->w = 0;
-    b->field_valid = 0;
+    b->sim.inv_inertia = (b->fixed_rotation || m.inertia == 0) ? 0 : 1 / m.inertia;
+    if (b->sim.inv_inertia == 0) b->sim.w = 0;
+    b->sim.field_valid = 0;
     return GA2D_OK;
 }
 
@@ -3937,7 +3948,7 @@ GA2D_API ga2d_result ga2d_body_set_gravity_scale(ga2d_world *w, ga2d_body_id id,
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(scale)) return GA2D_ERR_NOT_FINITE;
     ga2d__wake(w, ga2d__slot(id));
-    b->gravity_scale = scale;
+    b->sim.gravity_scale = scale;
     return GA2D_OK;
 }
 
@@ -3948,8 +3959,8 @@ GA2D_API ga2d_result ga2d_body_set_damping(ga2d_world *w, ga2d_body_id id, ga2d_
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(linear) || !ga2d__finite(angular)) return GA2D_ERR_NOT_FINITE;
     if (linear < 0 || angular < 0) return GA2D_ERR_INVALID_ARGUMENT;
-    b->linear_damping = linear;
-    b->angular_damping = angular;
+    b->sim.linear_damping = linear;
+    b->sim.angular_damping = angular;
     return GA2D_OK;
 }
 
@@ -3981,10 +3992,10 @@ GA2D_API ga2d_result ga2d_body_apply_force(ga2d_world *w, ga2d_body_id id, ga2d_
     if (r != GA2D_OK) return r;
     if (!ga2d__finite_vec(force) || !ga2d__finite_vec(point)) return GA2D_ERR_NOT_FINITE;
     if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
-    tau = ga2d_wedge(ga2d_vec_sub(point, b->center), force); /* r ^ F */
+    tau = ga2d_wedge(ga2d_vec_sub(point, b->sim.center), force); /* r ^ F */
     {
-        ga2d_vec *f = (w->lock & GA2D__LOCK_FIELD) ? &b->field_force : &b->force;
-        ga2d_real *t = (w->lock & GA2D__LOCK_FIELD) ? &b->field_torque : &b->torque;
+        ga2d_vec *f = (w->lock & GA2D__LOCK_FIELD) ? &b->sim.field_force : &b->sim.force;
+        ga2d_real *t = (w->lock & GA2D__LOCK_FIELD) ? &b->sim.field_torque : &b->sim.torque;
         ga2d_vec nf = ga2d_vec_add(*f, force);
         ga2d_real nt = *t + tau;
         /* finite inputs can still overflow the sums: refuse, keep the old */
@@ -4001,7 +4012,7 @@ GA2D_API ga2d_result ga2d_body_apply_force_to_center(ga2d_world *w, ga2d_body_id
     ga2d__body *b;
     ga2d_result r = ga2d__force_target(w, id, &b);
     if (r != GA2D_OK) return r;
-    return ga2d_body_apply_force(w, id, force, b->center);
+    return ga2d_body_apply_force(w, id, force, b->sim.center);
 }
 
 GA2D_API ga2d_result ga2d_body_apply_torque(ga2d_world *w, ga2d_body_id id, ga2d_real torque)
@@ -4012,7 +4023,7 @@ GA2D_API ga2d_result ga2d_body_apply_torque(ga2d_world *w, ga2d_body_id id, ga2d
     if (!ga2d__finite(torque)) return GA2D_ERR_NOT_FINITE;
     if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
     {
-        ga2d_real *t = (w->lock & GA2D__LOCK_FIELD) ? &b->field_torque : &b->torque;
+        ga2d_real *t = (w->lock & GA2D__LOCK_FIELD) ? &b->sim.field_torque : &b->sim.torque;
         if (!ga2d__finite(*t + torque)) return GA2D_ERR_NOT_FINITE;
         if (!(w->lock & GA2D__LOCK_FIELD)) ga2d__wake(w, ga2d__slot(id));
         *t += torque;
@@ -4028,12 +4039,12 @@ GA2D_API ga2d_result ga2d_body_apply_impulse(ga2d_world *w, ga2d_body_id id, ga2
     if (!ga2d__finite_vec(impulse) || !ga2d__finite_vec(point)) return GA2D_ERR_NOT_FINITE;
     if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
     {
-        ga2d_vec v = ga2d_vec_add(b->v, ga2d_vec_scale(impulse, b->inv_mass));
-        ga2d_real om = b->w + b->inv_inertia * ga2d_wedge(ga2d_vec_sub(point, b->center), impulse); /* I^-1 (r ^ P) */
+        ga2d_vec v = ga2d_vec_add(b->sim.v, ga2d_vec_scale(impulse, b->sim.inv_mass));
+        ga2d_real om = b->sim.w + b->sim.inv_inertia * ga2d_wedge(ga2d_vec_sub(point, b->sim.center), impulse); /* I^-1 (r ^ P) */
         if (!ga2d__finite_vec(v) || !ga2d__finite(om)) return GA2D_ERR_NOT_FINITE;
         ga2d__wake(w, ga2d__slot(id));
-        b->v = v;
-        b->w = om;
+        b->sim.v = v;
+        b->sim.w = om;
     }
     return GA2D_OK;
 }
@@ -4045,9 +4056,9 @@ GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(impulse)) return GA2D_ERR_NOT_FINITE;
     if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
-    if (!ga2d__finite(b->w + b->inv_inertia * impulse)) return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__finite(b->sim.w + b->sim.inv_inertia * impulse)) return GA2D_ERR_NOT_FINITE;
     ga2d__wake(w, ga2d__slot(id));
-    b->w += b->inv_inertia * impulse;
+    b->sim.w += b->sim.inv_inertia * impulse;
     return GA2D_OK;
 }
 
@@ -4256,7 +4267,7 @@ static GA2D__HOT ga2d_real ga2d__coupling(const ga2d__contact_constraint *c, ga2
 
 /* Relative velocity of B's anchor point against A's: (vB + rB Omega_B) -
    (vA + rA Omega_A), with r Omega = w perp(r). */
-static GA2D__HOT ga2d_vec ga2d__relative_velocity(const ga2d__body *a, const ga2d__body *b, ga2d_vec ra, ga2d_vec rb)
+static GA2D__HOT ga2d_vec ga2d__relative_velocity(const ga2d__body_sim *a, const ga2d__body_sim *b, ga2d_vec ra, ga2d_vec rb)
 {
     ga2d_vec va = ga2d_vec_add(a->v, ga2d_vec_scale(ga2d_vec_perp(ra), a->w));
     ga2d_vec vb = ga2d_vec_add(b->v, ga2d_vec_scale(ga2d_vec_perp(rb), b->w));
@@ -4268,7 +4279,7 @@ static GA2D__HOT ga2d_vec ga2d__relative_velocity(const ga2d__body *a, const ga2
    kinematic: zero inverse mass and inertia) is not written, so a NaN from
    a blown-up body stops there instead of reaching the ground (0 NaN = NaN)
    and from it every body resting on it. */
-static GA2D__HOT void ga2d__apply_impulse(const ga2d__contact_constraint *c, ga2d__body *a, ga2d__body *b, ga2d_vec ra, ga2d_vec rb, ga2d_vec P)
+static GA2D__HOT void ga2d__apply_impulse(const ga2d__contact_constraint *c, ga2d__body_sim *a, ga2d__body_sim *b, ga2d_vec ra, ga2d_vec rb, ga2d_vec P)
 {
     if (c->inv_ma != 0 || c->inv_ia != 0) {
         a->v = ga2d_vec_sub(a->v, ga2d_vec_scale(P, c->inv_ma));
@@ -4288,7 +4299,7 @@ static ga2d_vec ga2d__tangent(ga2d_vec n) { return ga2d_vec_make(n.y, -n.x); }
 static ga2d_vec ga2d__free_accel(const ga2d_world *w, const ga2d__body *b)
 {
     if (b->type != GA2D_BODY_DYNAMIC || !b->awake) return ga2d_vec_make(0, 0);
-    return ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(b->force, b->inv_mass));
+    return ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->sim.gravity_scale), ga2d_vec_scale(b->sim.force, b->sim.inv_mass));
 }
 
 /* Whether a contact's bodies can move in the solver: an awake dynamic one. */
@@ -4333,17 +4344,18 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
     for (n = begin; n < end; ++n) {
         ga2d__contact_constraint *cc = &c->constraints[n];
         const ga2d__contact *ct = &w->contacts[cc->contact];
-        const ga2d__body *a = &w->bodies[ct->a], *b = &w->bodies[ct->b];
+        const ga2d__body *ba = &w->bodies[ct->a], *bb = &w->bodies[ct->b];
+        const ga2d__body_sim *a = &ba->sim, *b = &bb->sim;
         ga2d_vec ca, cb;
         cc->a = ct->a;
         cc->b = ct->b;
         cc->normal = ct->manifold.normal;
         cc->friction = ct->friction;
         cc->restitution = ct->restitution;
-        cc->inv_ma = ga2d__solver_moves(a) ? a->inv_mass : 0;
-        cc->inv_ia = ga2d__solver_moves(a) ? a->inv_inertia : 0;
-        cc->inv_mb = ga2d__solver_moves(b) ? b->inv_mass : 0;
-        cc->inv_ib = ga2d__solver_moves(b) ? b->inv_inertia : 0;
+        cc->inv_ma = ga2d__solver_moves(ba) ? a->inv_mass : 0;
+        cc->inv_ia = ga2d__solver_moves(ba) ? a->inv_inertia : 0;
+        cc->inv_mb = ga2d__solver_moves(bb) ? b->inv_mass : 0;
+        cc->inv_ib = ga2d__solver_moves(bb) ? b->inv_inertia : 0;
         cc->to_static = cc->inv_ma == 0 || cc->inv_mb == 0;
         cc->count = ct->manifold.count;
         /* anchors from the centres, taken from the origin-relative ones so
@@ -4373,9 +4385,9 @@ static void ga2d__remember_start(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        b->center0 = b->center;
-        b->q0 = b->q;
-        b->dq = ga2d_rotor_identity();
+        b->sim.center0 = b->sim.center;
+        b->sim.q0 = b->sim.q;
+        b->sim.dq = ga2d_rotor_identity();
     }
 }
 
@@ -4387,7 +4399,7 @@ static void ga2d__refresh_turns(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        b->dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0));
+        b->sim.dq = ga2d_rotor_mul(b->sim.q, ga2d_rotor_inverse(b->sim.q0));
     }
 }
 
@@ -4399,7 +4411,7 @@ static void ga2d__refresh_turns(ga2d__step_context *c, int begin, int end)
    angular momentum about any point is kept.  Anchors are returned relative
    to each centre, built from the centre-to-centre vector so that nothing
    large is subtracted. */
-static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__contact_constraint *c, const ga2d__body *a, const ga2d__body *b,
+static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__contact_constraint *c, const ga2d__body_sim *a, const ga2d__body_sim *b,
                                  const ga2d__cpoint *p, ga2d_vec *ra, ga2d_vec *rb)
 {
     ga2d_vec ra1 = ga2d_rotate(a->dq, p->ra);
@@ -4945,9 +4957,9 @@ static void ga2d__still_body(ga2d__step_context *c, int slot)
     const ga2d__body *b = &c->world->bodies[slot];
     ga2d__sbody *s = &c->sbodies[slot];
     if (b->move_index >= 0) return;
-    s->vx = b->v.x;
-    s->vy = b->v.y;
-    s->w = b->w;
+    s->vx = b->sim.v.x;
+    s->vy = b->sim.v.y;
+    s->w = b->sim.w;
     s->pad = s->dpx = s->dpy = s->dqs = 0;
     s->dqc = 1;
 }
@@ -4967,7 +4979,7 @@ static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
         ga2d__group *g = &c->groups[gi];
         for (l = 0; l < g->count; ++l) {
             const ga2d__contact_constraint *cc = &c->constraints[g->con[l]];
-            const ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
+            const ga2d__body_sim *a = &w->bodies[cc->a].sim, *b = &w->bodies[cc->b].sim;
             ga2d__lane_write(g, l, cc, ga2d_vec_sub(b->center, a->center), cc->to_static ? &c->stiff : &c->soft, &none);
             ga2d__still_body(c, cc->a);
             ga2d__still_body(c, cc->b);
@@ -4990,7 +5002,7 @@ static void ga2d__gather(ga2d__step_context *c, int begin, int end)
     if (c->group_count == 0) return;
     for (k = begin; k < end; ++k) {
         int slot = w->moving[k];
-        const ga2d__body *b = &w->bodies[slot];
+        const ga2d__body_sim *b = &w->bodies[slot].sim;
         ga2d__sbody *s = &c->sbodies[slot];
         ga2d_rotor dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0));
         s->vx = b->v.x;
@@ -5015,8 +5027,8 @@ static void ga2d__scatter(ga2d__step_context *c, int begin, int end)
         ga2d__body *b = &w->bodies[slot];
         const ga2d__sbody *s = &c->sbodies[slot];
         if (b->type != GA2D_BODY_DYNAMIC) continue;
-        b->v = ga2d_vec_make(s->vx, s->vy);
-        b->w = s->w;
+        b->sim.v = ga2d_vec_make(s->vx, s->vy);
+        b->sim.w = s->w;
     }
 }
 
@@ -5060,7 +5072,7 @@ static void ga2d__push_apart(ga2d__step_context *c, int begin, int end)
     int i, k;
     for (i = begin; i < end; ++i) {
         ga2d__contact_constraint *cc = &c->constraints[i];
-        ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
+        ga2d__body_sim *a = &w->bodies[cc->a].sim, *b = &w->bodies[cc->b].sim;
         for (k = 0; k < cc->count; ++k) {
             ga2d__cpoint *p = &cc->p[k];
             ga2d_vec ra, rb, P;
@@ -5119,7 +5131,7 @@ static void ga2d__restitute(ga2d__step_context *c)
                    a constant.  The bounce acts on the true speed, so the
                    flight that follows is e times as fast, not e times
                    less g h, and bounce heights go as e^2n */
-                vn[k] = ga2d_dot(ga2d__relative_velocity(a, b, cc->p[k].ra, cc->p[k].rb), cc->normal) - (euler ? closing * h / 2 : 0);
+                vn[k] = ga2d_dot(ga2d__relative_velocity(&a->sim, &b->sim, cc->p[k].ra, cc->p[k].rb), cc->normal) - (euler ? closing * h / 2 : 0);
                 /* closing within the step, or the first substep of the next
                    (the last relax pass brakes a point that is still apart
                    as if a substep followed; the next step would then see a
@@ -5162,7 +5174,7 @@ static void ga2d__restitute(ga2d__step_context *c)
                 lambda[0] = want[0] > vn[0] ? (want[0] - vn[0]) * cc->p[0].normal_mass : 0;
             }
             for (k = 0; k < cc->count; ++k) {
-                ga2d__apply_impulse(cc, a, b, cc->p[k].ra, cc->p[k].rb, ga2d_vec_scale(cc->normal, lambda[k]));
+                ga2d__apply_impulse(cc, &a->sim, &b->sim, cc->p[k].ra, cc->p[k].rb, ga2d_vec_scale(cc->normal, lambda[k]));
             }
         }
     }
@@ -5171,7 +5183,7 @@ static void ga2d__restitute(ga2d__step_context *c)
        solver's groups grow, the force field) could read it; a second pass
        ran only if the first collided */
     for (k = 0; k < w->moving_count && pass > 1; ++k)
-        if (!ga2d__state_finite(&w->bodies[w->moving[k]])) ga2d__contain(w, w->moving[k]);
+        if (!ga2d__state_finite(&w->bodies[w->moving[k]].sim)) ga2d__contain(w, w->moving[k]);
 }
 
 /* ============================================================ world step */
@@ -5234,9 +5246,9 @@ static void ga2d__eval_field(ga2d_world *w, double t)
     if (!w->def.force_callback || w->destroy_pending) return; /* destroyed from it: no more calls */
     for (k = 0; k < w->moving_count; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        b->field_force = ga2d_vec_make(0, 0);
-        b->field_torque = 0;
-        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
+        b->sim.field_force = ga2d_vec_make(0, 0);
+        b->sim.field_torque = 0;
+        if (!ga2d__state_finite(&b->sim)) ga2d__contain(w, w->moving[k]);
     }
     w->lock |= GA2D__LOCK_FIELD;
     w->eval_time = t;
@@ -5246,7 +5258,7 @@ static void ga2d__eval_field(ga2d_world *w, double t)
 }
 
 /* a = g s + (F_user + F_field)/m and alpha = (tau_user + tau_field)/I */
-static void ga2d__acceleration(const ga2d_world *w, const ga2d__body *b, ga2d_vec *a, ga2d_real *alpha)
+static void ga2d__acceleration(const ga2d_world *w, const ga2d__body_sim *b, ga2d_vec *a, ga2d_real *alpha)
 {
     ga2d_vec f = ga2d_vec_add(b->force, b->field_force);
     *a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(f, b->inv_mass));
@@ -5254,7 +5266,7 @@ static void ga2d__acceleration(const ga2d_world *w, const ga2d__body *b, ga2d_ve
 }
 
 /* Damping as the implicit factor 1/(1 + c h): stable for any c h. */
-static void ga2d__damp(ga2d__body *b, ga2d_real h)
+static void ga2d__damp(ga2d__body_sim *b, ga2d_real h)
 {
     if (b->linear_damping > 0) b->v = ga2d_vec_scale(b->v, 1 / (1 + h * b->linear_damping));
     if (b->angular_damping > 0) b->w *= 1 / (1 + h * b->angular_damping);
@@ -5262,7 +5274,7 @@ static void ga2d__damp(ga2d__body *b, ga2d_real h)
 
 /* Position update x += h v, q <- q exp(w h e12).  A body that does not
    turn (fixed rotation, or w = 0) skips the rotor altogether. */
-static void ga2d__drift(ga2d_world *w, ga2d__body *b, ga2d_real h)
+static void ga2d__drift(ga2d_world *w, ga2d__body_sim *b, ga2d_real h)
 {
     b->center = ga2d_vec_add(b->center, ga2d_vec_scale(b->v, h));
     if (b->w != 0) {
@@ -5289,13 +5301,13 @@ static void ga2d__drift(ga2d_world *w, ga2d__body *b, ga2d_real h)
 static void ga2d__contain(ga2d_world *w, int slot)
 {
     ga2d__body *b = &w->bodies[slot];
-    b->center = b->center0;
-    b->q = b->q0;
-    b->v = ga2d_vec_make(0, 0);
-    b->w = 0;
-    b->force = ga2d_vec_make(0, 0);
-    b->torque = 0;
-    b->field_valid = 0;
+    b->sim.center = b->sim.center0;
+    b->sim.q = b->sim.q0;
+    b->sim.v = ga2d_vec_make(0, 0);
+    b->sim.w = 0;
+    b->sim.force = ga2d_vec_make(0, 0);
+    b->sim.torque = 0;
+    b->sim.field_valid = 0;
     b->sleep_time = 0;
     {
         /* its contacts' accumulated impulses may hold what drove it: they
@@ -5344,7 +5356,7 @@ static int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
 /* The velocity cap and the largest turn per substep, as Box2D: beyond
    them a body is tunnelling anyway; each capped body counts in
    speed_caps.  Returns 0 for a velocity that is not finite. */
-static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
+static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body_sim *b, ga2d_real h)
 {
     if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) return 0;
     w->counters.speed_caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
@@ -5356,7 +5368,7 @@ static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body *b, ga2d_real h)
    not finite. */
 static void ga2d__cap_body(ga2d__step_context *c, ga2d__body *b, int slot)
 {
-    if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(c->world, b, c->h)) ga2d__contain(c->world, slot);
+    if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(c->world, &b->sim, c->h)) ga2d__contain(c->world, slot);
 }
 
 /* Stage, over the moving bodies: caches the field's acceleration (Verlet). */
@@ -5366,14 +5378,14 @@ static void ga2d__cache_field(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        b->field_accel = ga2d_vec_scale(b->field_force, b->inv_mass);
-        b->field_alpha = b->field_torque * b->inv_inertia;
-        b->field_valid = 1;
+        b->sim.field_accel = ga2d_vec_scale(b->sim.field_force, b->sim.inv_mass);
+        b->sim.field_alpha = b->sim.field_torque * b->sim.inv_inertia;
+        b->sim.field_valid = 1;
     }
 }
 
 /* Half a kick with the cached field plus gravity and the user's forces. */
-static void ga2d__verlet_kick(ga2d_world *w, ga2d__body *b, ga2d_real half)
+static void ga2d__verlet_kick(ga2d_world *w, ga2d__body_sim *b, ga2d_real half)
 {
     ga2d_vec a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale),
                               ga2d_vec_add(b->field_accel, ga2d_vec_scale(b->force, b->inv_mass)));
@@ -5395,10 +5407,10 @@ static void ga2d__rk4_begin(ga2d__step_context *c, int begin, int end)
     for (k = begin; k < end; ++k) {
         const ga2d__body *b = &w->bodies[w->moving[k]];
         memset(&s[k], 0, sizeof s[k]);
-        s[k].x0 = b->center;
-        s[k].q0 = b->q;
-        s[k].v0 = b->v;
-        s[k].w0 = b->w;
+        s[k].x0 = b->sim.center;
+        s[k].q0 = b->sim.q;
+        s[k].v0 = b->sim.v;
+        s[k].w0 = b->sim.w;
     }
 }
 
@@ -5411,10 +5423,10 @@ static void ga2d__rk4_trial(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        b->center = ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].kx, at));
-        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, at));
-        b->w = s[k].w0 + s[k].kw * at;
-        b->q = s[k].kth * at != 0 ? ga2d__turn(s[k].q0, s[k].kth * at, w->def.rotation_update) : s[k].q0;
+        b->sim.center = ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].kx, at));
+        b->sim.v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].kv, at));
+        b->sim.w = s[k].w0 + s[k].kw * at;
+        b->sim.q = s[k].kth * at != 0 ? ga2d__turn(s[k].q0, s[k].kth * at, w->def.rotation_update) : s[k].q0;
     }
 }
 
@@ -5434,9 +5446,9 @@ static void ga2d__rk4_derive(ga2d__step_context *c, int begin, int end)
         if (b->type == GA2D_BODY_DYNAMIC) {
             ga2d_vec a;
             ga2d_real alpha;
-            ga2d__acceleration(w, b, &a, &alpha);
-            s[k].kv = ga2d_vec_sub(a, ga2d_vec_scale(v, b->linear_damping));
-            s[k].kw = alpha - b->angular_damping * om;
+            ga2d__acceleration(w, &b->sim, &a, &alpha);
+            s[k].kv = ga2d_vec_sub(a, ga2d_vec_scale(v, b->sim.linear_damping));
+            s[k].kw = alpha - b->sim.angular_damping * om;
         }
         s[k].sx = ga2d_vec_add(s[k].sx, ga2d_vec_scale(s[k].kx, weight));
         s[k].sv = ga2d_vec_add(s[k].sv, ga2d_vec_scale(s[k].kv, weight));
@@ -5454,12 +5466,12 @@ static void ga2d__rk4_end(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        b->center = s[k].x0;
-        b->q = s[k].q0;
-        b->v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].sv, h / 6));
-        b->w = s[k].w0 + s[k].sw * (h / 6);
-        s[k].kv = b->v; /* the free end velocities, for the position phase */
-        s[k].kw = b->w;
+        b->sim.center = s[k].x0;
+        b->sim.q = s[k].q0;
+        b->sim.v = ga2d_vec_add(s[k].v0, ga2d_vec_scale(s[k].sv, h / 6));
+        b->sim.w = s[k].w0 + s[k].sw * (h / 6);
+        s[k].kv = b->sim.v; /* the free end velocities, for the position phase */
+        s[k].kw = b->sim.w;
         ga2d__cap_body(c, b, w->moving[k]);
     }
 }
@@ -5476,10 +5488,10 @@ static void ga2d__kick(ga2d__step_context *c, int begin, int end)
         ga2d_vec a;
         ga2d_real alpha;
         if (b->type != GA2D_BODY_DYNAMIC) continue;
-        ga2d__acceleration(w, b, &a, &alpha);
-        b->v = ga2d_vec_add(b->v, ga2d_vec_scale(a, h));
-        b->w += alpha * h;
-        ga2d__damp(b, h);
+        ga2d__acceleration(w, &b->sim, &a, &alpha);
+        b->sim.v = ga2d_vec_add(b->sim.v, ga2d_vec_scale(a, h));
+        b->sim.w += alpha * h;
+        ga2d__damp(&b->sim, h);
         ga2d__cap_body(c, b, w->moving[k]);
     }
 }
@@ -5492,8 +5504,8 @@ static void ga2d__half_kicks(ga2d__step_context *c, int begin, int end, int damp
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
         if (b->type != GA2D_BODY_DYNAMIC) continue;
-        ga2d__verlet_kick(w, b, c->h / 2);
-        if (damp) ga2d__damp(b, c->h);
+        ga2d__verlet_kick(w, &b->sim, c->h / 2);
+        if (damp) ga2d__damp(&b->sim, c->h);
         ga2d__cap_body(c, b, w->moving[k]);
     }
 }
@@ -5510,7 +5522,7 @@ static int ga2d__field_stale(const ga2d_world *w)
 {
     int k;
     for (k = 0; k < w->moving_count; ++k)
-        if (!w->bodies[w->moving[k]].field_valid) return 1;
+        if (!w->bodies[w->moving[k]].sim.field_valid) return 1;
     return 0;
 }
 
@@ -5557,22 +5569,22 @@ static void ga2d__rk4_positions(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        ga2d_real th = s[k].sth * (h / 6) + (b->w - s[k].kw) * h;
+        ga2d_real th = s[k].sth * (h / 6) + (b->sim.w - s[k].kw) * h;
         ga2d_vec d;
-        b->center = ga2d_vec_add(ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].sx, h / 6)),
-                                 ga2d_vec_scale(ga2d_vec_sub(b->v, s[k].kv), h));
-        d = ga2d_vec_sub(b->center, s[k].x0);
-        if (ga2d__cap_length(&d, GA2D__MAX_SPEED * w->def.length_units_per_meter * h)) b->center = ga2d_vec_add(s[k].x0, d);
+        b->sim.center = ga2d_vec_add(ga2d_vec_add(s[k].x0, ga2d_vec_scale(s[k].sx, h / 6)),
+                                 ga2d_vec_scale(ga2d_vec_sub(b->sim.v, s[k].kv), h));
+        d = ga2d_vec_sub(b->sim.center, s[k].x0);
+        if (ga2d__cap_length(&d, GA2D__MAX_SPEED * w->def.length_units_per_meter * h)) b->sim.center = ga2d_vec_add(s[k].x0, d);
         ga2d__cap_turn(&th, GA2D__MAX_TURN);
         if (th != 0) {
-            b->q = ga2d__turn(s[k].q0, th, w->def.rotation_update);
+            b->sim.q = ga2d__turn(s[k].q0, th, w->def.rotation_update);
             ++w->counters.rotation_updates;
         }
         ++w->counters.integrated_bodies;
         /* a body contained in the velocity phase still has its stages'
            sums here: contain it again before the solver passes that
            follow can spread its NaN through the contacts */
-        if (!ga2d__finite_vec(b->center) || !ga2d__finite(b->q.c) || !ga2d__finite(b->q.s)) ga2d__contain(w, w->moving[k]);
+        if (!ga2d__finite_vec(b->sim.center) || !ga2d__finite(b->sim.q.c) || !ga2d__finite(b->sim.q.s)) ga2d__contain(w, w->moving[k]);
     }
 }
 
@@ -5581,7 +5593,7 @@ static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     int k;
-    for (k = begin; k < end; ++k) ga2d__drift(w, &w->bodies[w->moving[k]], c->h);
+    for (k = begin; k < end; ++k) ga2d__drift(w, &w->bodies[w->moving[k]].sim, c->h);
 }
 
 /* The position phase of the world's integrator, ending the substep. */
@@ -5738,8 +5750,8 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
         } else {
             /* keep points as far apart as the pair can close in one step:
                speculative points only let bodies approach up to the gap */
-            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->v, a->v)) + GA2D__FABS(a->w) * a->extent +
-                              GA2D__FABS(b->w) * b->extent;
+            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
+                              GA2D__FABS(b->sim.w) * b->extent;
             ga2d__collide(&a->polygon, xa, &b->polygon, xb, w->slop, w->speculative + reach * c->dt, &m);
             ga2d__hold_manifold(&ct->held, xa, xb, &m);
             for (i = 0; i < m.count; ++i)
@@ -5882,9 +5894,9 @@ static void ga2d__finish_bodies(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        if (!ga2d__state_finite(b)) ga2d__contain(w, w->moving[k]);
-        b->force = ga2d_vec_make(0, 0);
-        b->torque = 0;
+        if (!ga2d__state_finite(&b->sim)) ga2d__contain(w, w->moving[k]);
+        b->sim.force = ga2d_vec_make(0, 0);
+        b->sim.torque = 0;
     }
 }
 
@@ -6015,7 +6027,7 @@ static void ga2d__wake(ga2d_world *w, int slot)
         ga2d__body *x = &w->bodies[w->wake_queue[i]];
         x->sleep_time = 0;
         ga2d__moving_add(w, w->wake_queue[i]);
-        x->field_valid = 0;
+        x->sim.field_valid = 0;
     }
 }
 
@@ -6023,15 +6035,15 @@ static void ga2d__put_to_sleep(ga2d_world *w, int slot)
 {
     ga2d__body *b = &w->bodies[slot];
     b->awake = 0;
-    b->v = ga2d_vec_make(0, 0);
-    b->w = 0;
+    b->sim.v = ga2d_vec_make(0, 0);
+    b->sim.w = 0;
     /* its pose now is its start pose for as long as it sleeps: a body
        that touches it must see no motion of it */
-    b->center0 = b->center;
-    b->q0 = b->q;
-    b->dq = ga2d_rotor_identity();
-    b->force = ga2d_vec_make(0, 0);
-    b->torque = 0;
+    b->sim.center0 = b->sim.center;
+    b->sim.q0 = b->sim.q;
+    b->sim.dq = ga2d_rotor_identity();
+    b->sim.force = ga2d_vec_make(0, 0);
+    b->sim.torque = 0;
     ga2d__moving_remove(w, slot);
 }
 
@@ -6068,7 +6080,7 @@ static void ga2d__update_sleep(ga2d__step_context *c)
     for (k = 0; k < w->moving_count; ++k) {
         int s = w->moving[k];
         ga2d__body *b = &w->bodies[s];
-        ga2d_real speed2 = ga2d_dot(b->v, b->v), spin = b->extent * b->w;
+        ga2d_real speed2 = ga2d_dot(b->sim.v, b->sim.v), spin = b->extent * b->sim.w;
         b->island = s;
         if (b->type != GA2D_BODY_DYNAMIC) continue;
         if (speed2 > tol * tol || spin * spin > tol * tol) b->sleep_time = 0;
@@ -6261,32 +6273,32 @@ static void ga2d__io_body(ga2d__codec *k, ga2d__body *b)
     ga2d__io_int(k, &b->next_free);
     ga2d__io_u32(k, &b->generation);
     if (b->type < 0) return;
-    ga2d__io_vec(k, &b->center);
-    ga2d__io_rotor(k, &b->q);
-    ga2d__io_vec(k, &b->v);
-    ga2d__io_real(k, &b->w);
-    ga2d__io_vec(k, &b->center0);
-    ga2d__io_rotor(k, &b->q0);
-    ga2d__io_rotor(k, &b->dq);
+    ga2d__io_vec(k, &b->sim.center);
+    ga2d__io_rotor(k, &b->sim.q);
+    ga2d__io_vec(k, &b->sim.v);
+    ga2d__io_real(k, &b->sim.w);
+    ga2d__io_vec(k, &b->sim.center0);
+    ga2d__io_rotor(k, &b->sim.q0);
+    ga2d__io_rotor(k, &b->sim.dq);
     ga2d__io_real(k, &b->mass);
-    ga2d__io_real(k, &b->inv_mass);
+    ga2d__io_real(k, &b->sim.inv_mass);
     ga2d__io_real(k, &b->inertia);
-    ga2d__io_real(k, &b->inv_inertia);
-    ga2d__io_vec(k, &b->local_center);
+    ga2d__io_real(k, &b->sim.inv_inertia);
+    ga2d__io_vec(k, &b->sim.local_center);
     ga2d__io_real(k, &b->extent);
     ga2d__io_int(k, &b->awake);
     ga2d__io_int(k, &b->fixed_rotation);
     ga2d__io_int(k, &b->in_move);
-    ga2d__io_vec(k, &b->force);
-    ga2d__io_real(k, &b->torque);
-    ga2d__io_real(k, &b->gravity_scale);
-    ga2d__io_real(k, &b->linear_damping);
-    ga2d__io_real(k, &b->angular_damping);
-    ga2d__io_vec(k, &b->field_force);
-    ga2d__io_real(k, &b->field_torque);
-    ga2d__io_vec(k, &b->field_accel);
-    ga2d__io_real(k, &b->field_alpha);
-    ga2d__io_int(k, &b->field_valid);
+    ga2d__io_vec(k, &b->sim.force);
+    ga2d__io_real(k, &b->sim.torque);
+    ga2d__io_real(k, &b->sim.gravity_scale);
+    ga2d__io_real(k, &b->sim.linear_damping);
+    ga2d__io_real(k, &b->sim.angular_damping);
+    ga2d__io_vec(k, &b->sim.field_force);
+    ga2d__io_real(k, &b->sim.field_torque);
+    ga2d__io_vec(k, &b->sim.field_accel);
+    ga2d__io_real(k, &b->sim.field_alpha);
+    ga2d__io_int(k, &b->sim.field_valid);
     ga2d__io_real(k, &b->friction);
     ga2d__io_real(k, &b->restitution);
     ga2d__io_u32(k, &b->filter.category_bits);
@@ -6485,12 +6497,12 @@ GA2D_API ga2d_result ga2d_world_snapshot_save(const ga2d_world *w, void *buf, si
    are flags.  (Free slots: only their link is used.) */
 static int ga2d__snap_body_ok(const ga2d__body *b, int body_used)
 {
-    const ga2d_real *r[] = {&b->center.x, &b->center.y, &b->q.c, &b->q.s, &b->v.x, &b->v.y, &b->w, &b->force.x,
-                            &b->force.y, &b->torque, &b->field_force.x, &b->field_force.y, &b->field_torque,
-                            &b->field_accel.x, &b->field_accel.y, &b->field_alpha, &b->mass, &b->inv_mass, &b->inertia,
-                            &b->inv_inertia, &b->local_center.x, &b->local_center.y, &b->friction, &b->restitution,
-                            &b->linear_damping, &b->angular_damping, &b->gravity_scale, &b->center0.x, &b->center0.y,
-                            &b->q0.c, &b->q0.s, &b->dq.c, &b->dq.s, &b->extent, &b->sleep_time, &b->island_rest};
+    const ga2d_real *r[] = {&b->sim.center.x, &b->sim.center.y, &b->sim.q.c, &b->sim.q.s, &b->sim.v.x, &b->sim.v.y, &b->sim.w, &b->sim.force.x,
+                            &b->sim.force.y, &b->sim.torque, &b->sim.field_force.x, &b->sim.field_force.y, &b->sim.field_torque,
+                            &b->sim.field_accel.x, &b->sim.field_accel.y, &b->sim.field_alpha, &b->mass, &b->sim.inv_mass, &b->inertia,
+                            &b->sim.inv_inertia, &b->sim.local_center.x, &b->sim.local_center.y, &b->friction, &b->restitution,
+                            &b->sim.linear_damping, &b->sim.angular_damping, &b->sim.gravity_scale, &b->sim.center0.x, &b->sim.center0.y,
+                            &b->sim.q0.c, &b->sim.q0.s, &b->sim.dq.c, &b->sim.dq.s, &b->extent, &b->sleep_time, &b->island_rest};
     ga2d_polygon p;
     ga2d_real q2;
     size_t i;
@@ -6499,12 +6511,12 @@ static int ga2d__snap_body_ok(const ga2d__body *b, int body_used)
     if (b->type > GA2D_BODY_DYNAMIC || b->generation == 0) return 0;
     for (i = 0; i < sizeof r / sizeof r[0]; ++i)
         if (!ga2d__finite(*r[i])) return 0;
-    if (b->mass < 0 || b->inv_mass < 0 || b->inertia < 0 || b->inv_inertia < 0 || b->friction < 0 ||
-        b->restitution < 0 || b->linear_damping < 0 || b->angular_damping < 0 || b->extent < 0)
+    if (b->mass < 0 || b->sim.inv_mass < 0 || b->inertia < 0 || b->sim.inv_inertia < 0 || b->friction < 0 ||
+        b->restitution < 0 || b->sim.linear_damping < 0 || b->sim.angular_damping < 0 || b->extent < 0)
         return 0;
-    q2 = b->q.c * b->q.c + b->q.s * b->q.s;
+    q2 = b->sim.q.c * b->sim.q.c + b->sim.q.s * b->sim.q.s;
     if (!(q2 > GA2D__R(0.99) && q2 < GA2D__R(1.01))) return 0;
-    if ((b->awake | b->fixed_rotation | b->in_move | b->field_valid) & ~1) return 0;
+    if ((b->awake | b->fixed_rotation | b->in_move | b->sim.field_valid) & ~1) return 0;
     if (b->polygon.count < 3 || b->polygon.count > GA2D_MAX_POLYGON_VERTICES) return 0;
     if (ga2d_polygon_make(b->polygon.vertices, b->polygon.count, &p) != GA2D_OK || p.count != b->polygon.count) return 0;
     for (k = 0; k < p.count; ++k)
@@ -6770,7 +6782,7 @@ static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
         if (d->draw_aabbs && d->aabb && !w->destroy_pending)
             d->aabb(ga2d__fat_box(w, b), GA2D_COLOR_AABB, d->context);
         if (d->draw_centers && d->point && !w->destroy_pending)
-            d->point(b->center, GA2D__R(0.05) * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
+            d->point(b->sim.center, GA2D__R(0.05) * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
     }
     if (d->draw_contacts && d->contact)
         for (ci = 0; ci < w->contact_used && !w->destroy_pending; ++ci) {
@@ -6803,8 +6815,10 @@ VERSION HISTORY (newest first)
           inside, the step reads as a list of stages over ranges of
           bodies, contacts, constraints and lane groups, its per-step state
           in one step context, and stages that compute leave creation,
-          destruction, events and waking to the book-keeping after them
-          (bit-identical results).
+          destruction, events and waking to the book-keeping after them;
+          a body is in parts: its integration state (what the integrators
+          take), its book-keeping and what it is made of (bit-identical
+          results).
    0.8.1  hostile input: user code run from the force callback, the debug
           draw or the allocator hooks finds the world locked, and a world
           destroyed from it goes when the library call returns; fat boxes
