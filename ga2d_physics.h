@@ -409,12 +409,31 @@ typedef struct ga2d_transform { ga2d_vec p; ga2d_rotor q; } ga2d_transform;
 typedef struct ga2d_aabb { ga2d_vec lower, upper; } ga2d_aabb;
 
 /* A convex polygon: CCW vertices in its own frame and the outward unit
-   normal of edge i (from vertex i to vertex i+1). */
+   normal of edge i (from vertex i to vertex i+1).  radius > 0 rounds it:
+   the shape is every point within radius of the polygon (its corners are
+   arcs, its edges pushed out by radius); 0 is sharp. */
 typedef struct ga2d_polygon {
     int count;
     ga2d_vec vertices[GA2D_MAX_POLYGON_VERTICES];
     ga2d_vec normals[GA2D_MAX_POLYGON_VERTICES];
+    ga2d_real radius;
 } ga2d_polygon;
+
+/* The round shapes, in their body's frame: a disc; a capsule, every point
+   within radius of the segment center1-center2; a segment (no area: a
+   wall or a piece of terrain, on static and kinematic bodies). */
+typedef struct ga2d_circle { ga2d_vec center; ga2d_real radius; } ga2d_circle;
+typedef struct ga2d_capsule { ga2d_vec center1, center2; ga2d_real radius; } ga2d_capsule;
+typedef struct ga2d_segment { ga2d_vec point1, point2; } ga2d_segment;
+
+typedef enum ga2d_shape_type {
+    GA2D_SHAPE_CIRCLE,
+    GA2D_SHAPE_CAPSULE,
+    GA2D_SHAPE_POLYGON,
+    GA2D_SHAPE_SEGMENT,
+    GA2D_SHAPE_CHAIN_SEGMENT, /* a segment of a chain, with its neighbours' ghost vertices */
+    GA2D_SHAPE_TYPE_COUNT
+} ga2d_shape_type;
 
 /* Mass properties: mass, centre of mass (in the polygon's frame) and the
    moment of inertia about that centre. */
@@ -453,19 +472,40 @@ GA2D_API ga2d_result ga2d_polygon_make(const ga2d_vec *pts, int n, ga2d_polygon 
    without sorting, O(n h). */
 GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon *out);
 /* Axis-aligned box centred on the origin; count 0 if a half-extent is not
-   finite and positive. */
+   finite and positive (ga2d_polygon_rounded_box_checked says why). */
 GA2D_API ga2d_polygon ga2d_polygon_box(ga2d_real half_width, ga2d_real half_height);
+/* The box of half-extents hw x hh rounded by r: its core is the box
+   shrunk by r, so the shape's outline still spans 2 hw x 2 hh; r = 0 is
+   ga2d_polygon_box.  Count 0 on failure; the checked form returns
+   INVALID_ARGUMENT (r < 0, a half-extent <= 0 or <= r: make a capsule or
+   a circle), NOT_FINITE or TOO_LARGE. */
+GA2D_API ga2d_polygon ga2d_polygon_rounded_box(ga2d_real hw, ga2d_real hh, ga2d_real r);
+GA2D_API ga2d_result ga2d_polygon_rounded_box_checked(ga2d_real hw, ga2d_real hh, ga2d_real r, ga2d_polygon *out);
 /* Regular n-gon of circumradius r centred on the origin, vertex 0 on +x;
-   count 0 if n is outside [3, GA2D_MAX_POLYGON_VERTICES] or r is bad. */
+   count 0 on failure.  The checked form says why: TOO_FEW_POINTS (n < 3),
+   TOO_MANY_POINTS (n > GA2D_MAX_POLYGON_VERTICES: raise it for the build,
+   or use a circle), NOT_FINITE, INVALID_ARGUMENT (r <= 0), and
+   ga2d_polygon_make's answers for an r too small or too large. */
 GA2D_API ga2d_polygon ga2d_polygon_regular(int n, ga2d_real radius);
-/* AABB of the polygon placed by x. */
+GA2D_API ga2d_result ga2d_polygon_regular_checked(int n, ga2d_real radius, ga2d_polygon *out);
+/* AABB of the polygon placed by x, its radius included. */
 GA2D_API ga2d_aabb ga2d_polygon_aabb(const ga2d_polygon *p, ga2d_transform x);
-/* Exact mass properties at the given density (mass per unit area).  All
-   zero when p is NULL or has a bad count, or density is negative or not
-   finite; use ga2d_polygon_mass_checked to be told why. */
+/* Exact mass properties at the given density (mass per unit area), the
+   radius included: polygon, edge strips and corner sectors.  All zero
+   when p is NULL or has a bad count, or density or the radius is negative
+   or not finite; use ga2d_polygon_mass_checked to be told why. */
 GA2D_API ga2d_mass ga2d_polygon_mass(const ga2d_polygon *p, ga2d_real density);
 GA2D_API ga2d_result ga2d_polygon_mass_checked(const ga2d_polygon *p, ga2d_real density,
                                                ga2d_mass *out);
+/* Exact mass properties of a disc (I = m r^2 / 2) and of a capsule (a
+   rectangle and two half discs; a capsule of zero length is the disc,
+   radius 0 has no area).  All zero on bad input; the checked forms say
+   why: INVALID_ARGUMENT (NULL, a negative radius or density), NOT_FINITE,
+   TOO_LARGE. */
+GA2D_API ga2d_mass ga2d_circle_mass(const ga2d_circle *c, ga2d_real density);
+GA2D_API ga2d_result ga2d_circle_mass_checked(const ga2d_circle *c, ga2d_real density, ga2d_mass *out);
+GA2D_API ga2d_mass ga2d_capsule_mass(const ga2d_capsule *c, ga2d_real density);
+GA2D_API ga2d_result ga2d_capsule_mass_checked(const ga2d_capsule *c, ga2d_real density, ga2d_mass *out);
 
 /* The largest |coordinate| a polygon vertex may have.  Float: inertia
    grows as the 4th power of size, and every wedge-sum term must stay
@@ -1616,37 +1656,68 @@ GA2D_API ga2d_result ga2d_polygon_hull(const ga2d_vec *pts, int n, ga2d_polygon 
     return ga2d_polygon_make(hull, h, out);
 }
 
-GA2D_API ga2d_polygon ga2d_polygon_box(ga2d_real hw, ga2d_real hh)
+/* The box's makers share one: half-extents hw x hh, core shrunk by r. */
+GA2D_API ga2d_result ga2d_polygon_rounded_box_checked(ga2d_real hw, ga2d_real hh, ga2d_real r, ga2d_polygon *out)
 {
     ga2d_polygon poly;
+    ga2d_real cx, cy;
+    if (!out) return GA2D_ERR_INVALID_ARGUMENT;
+    memset(out, 0, sizeof *out);
+    if (!ga2d__finite(hw) || !ga2d__finite(hh) || !ga2d__finite(r)) return GA2D_ERR_NOT_FINITE;
+    if (!(hw > 0 && hh > 0 && r >= 0 && hw > r && hh > r)) return GA2D_ERR_INVALID_ARGUMENT;
+    if (hw > GA2D_MAX_COORDINATE || hh > GA2D_MAX_COORDINATE) return GA2D_ERR_TOO_LARGE;
+    cx = hw - r;
+    cy = hh - r;
     memset(&poly, 0, sizeof poly);
-    if (!(hw > 0 && hh > 0 && hw <= GA2D_MAX_COORDINATE && hh <= GA2D_MAX_COORDINATE)) return poly;
     poly.count = 4;
-    poly.vertices[0] = ga2d_vec_make(-hw, -hh);
-    poly.vertices[1] = ga2d_vec_make(hw, -hh);
-    poly.vertices[2] = ga2d_vec_make(hw, hh);
-    poly.vertices[3] = ga2d_vec_make(-hw, hh);
+    poly.vertices[0] = ga2d_vec_make(-cx, -cy);
+    poly.vertices[1] = ga2d_vec_make(cx, -cy);
+    poly.vertices[2] = ga2d_vec_make(cx, cy);
+    poly.vertices[3] = ga2d_vec_make(-cx, cy);
     poly.normals[0] = ga2d_vec_make(0, -1);
     poly.normals[1] = ga2d_vec_make(1, 0);
     poly.normals[2] = ga2d_vec_make(0, 1);
     poly.normals[3] = ga2d_vec_make(-1, 0);
+    poly.radius = r;
+    *out = poly;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_polygon ga2d_polygon_rounded_box(ga2d_real hw, ga2d_real hh, ga2d_real r)
+{
+    ga2d_polygon poly;
+    ga2d_polygon_rounded_box_checked(hw, hh, r, &poly);
     return poly;
 }
 
-GA2D_API ga2d_polygon ga2d_polygon_regular(int n, ga2d_real radius)
+GA2D_API ga2d_polygon ga2d_polygon_box(ga2d_real hw, ga2d_real hh) { return ga2d_polygon_rounded_box(hw, hh, 0); }
+
+GA2D_API ga2d_result ga2d_polygon_regular_checked(int n, ga2d_real radius, ga2d_polygon *out)
 {
     ga2d_vec pts[GA2D_MAX_POLYGON_VERTICES];
-    ga2d_polygon poly;
+    ga2d_result r;
     int i;
-    memset(&poly, 0, sizeof poly);
-    if (n < 3 || n > GA2D_MAX_POLYGON_VERTICES || !(radius > 0)) return poly;
+    if (!out) return GA2D_ERR_INVALID_ARGUMENT;
+    memset(out, 0, sizeof *out);
+    if (n < 3) return GA2D_ERR_TOO_FEW_POINTS;
+    if (n > GA2D_MAX_POLYGON_VERTICES) return GA2D_ERR_TOO_MANY_POINTS;
+    if (!ga2d__finite(radius)) return GA2D_ERR_NOT_FINITE;
+    if (!(radius > 0)) return GA2D_ERR_INVALID_ARGUMENT;
     for (i = 0; i < n; ++i) {
         /* angles from double, so float builds place vertices as well as
            float can hold them */
         double t = 2.0 * 3.14159265358979323846 * (double)i / (double)n;
         pts[i] = ga2d_vec_make(radius * (ga2d_real)cos(t), radius * (ga2d_real)sin(t));
     }
-    if (ga2d_polygon_make(pts, n, &poly) != GA2D_OK) poly.count = 0;
+    r = ga2d_polygon_make(pts, n, out);
+    if (r != GA2D_OK) memset(out, 0, sizeof *out);
+    return r;
+}
+
+GA2D_API ga2d_polygon ga2d_polygon_regular(int n, ga2d_real radius)
+{
+    ga2d_polygon poly;
+    ga2d_polygon_regular_checked(n, radius, &poly);
     return poly;
 }
 
@@ -1664,10 +1735,50 @@ GA2D_API ga2d_aabb ga2d_polygon_aabb(const ga2d_polygon *p, ga2d_transform x)
         box.upper.x = v.x > box.upper.x ? v.x : box.upper.x;
         box.upper.y = v.y > box.upper.y ? v.y : box.upper.y;
     }
+    if (p->radius > 0) {
+        box.lower = ga2d_vec_sub(box.lower, ga2d_vec_make(p->radius, p->radius));
+        box.upper = ga2d_vec_add(box.upper, ga2d_vec_make(p->radius, p->radius));
+    }
     return box;
 }
 
 /* ----------------------------------------------------------- mass (exact) */
+/* What a radius r adds to a polygon (Minkowski sum with a disc), as area
+   a, first moment mo and second moment j about the point ref:
+   - edge i's strip, a rectangle L_i x r standing on the edge: its centre
+     the edge's midpoint plus n_i r/2, and I = m (L_i^2 + r^2)/12 about it;
+   - vertex i's sector of the disc, between the normals of its two edges,
+     of angle alpha (the turn of the rotor n_(i-1) n_i, so the angles make
+     a full turn): area alpha r^2/2, its centroid on the bisector at
+     d = 4 r sin(alpha/2) / (3 alpha) from the vertex, I = m r^2/2 about
+     the vertex, so j = m (r^2/2 + |v - ref|^2 + 2 d b.(v - ref)) about ref
+     (parallel axes through the centroid, expanded so nothing cancels).
+   Sum: A + r P + pi r^2, the rounded area. */
+static void ga2d__add_rounding(const ga2d_polygon *p, ga2d_vec ref, ga2d_real *a, ga2d_vec *mo, ga2d_real *j)
+{
+    ga2d_real r = p->radius;
+    int i, n = p->count;
+    for (i = 0; i < n; ++i) {
+        ga2d_vec v0 = p->vertices[i], v1 = p->vertices[i + 1 < n ? i + 1 : 0], ni = p->normals[i];
+        ga2d_vec np = p->normals[i > 0 ? i - 1 : n - 1], e = ga2d_vec_sub(v1, v0), dv = ga2d_vec_sub(v0, ref), b;
+        ga2d_real len = ga2d_vec_length(e), m = len * r, alpha, ms, d;
+        /* the strip */
+        ga2d_vec c = ga2d_vec_add(ga2d_vec_scale(ga2d_vec_add(ga2d_vec_sub(v0, ref), ga2d_vec_sub(v1, ref)), GA2D__R(0.5)),
+                                  ga2d_vec_scale(ni, r / 2));
+        *a += m;
+        *mo = ga2d_vec_add(*mo, ga2d_vec_scale(c, m));
+        *j += m * ((len * len + r * r) / 12 + ga2d_dot(c, c));
+        /* the sector at v0, from np to ni */
+        alpha = GA2D__ATAN2(ga2d_wedge(np, ni), ga2d_dot(np, ni));
+        ms = alpha * r * r / 2;
+        d = alpha > 0 ? 4 * r * GA2D__SIN(alpha / 2) / (3 * alpha) : 0;
+        if (ga2d_vec_normalize(ga2d_vec_add(np, ni), &b) == 0) b = ni;
+        *a += ms;
+        *mo = ga2d_vec_add(*mo, ga2d_vec_scale(ga2d_vec_add(dv, ga2d_vec_scale(b, d)), ms));
+        *j += ms * (r * r / 2 + ga2d_dot(dv, dv) + 2 * d * ga2d_dot(b, dv));
+    }
+}
+
 /* Fan the polygon into triangles (r, x_i, x_i+1) about the interior point r
    (the vertex mean).  With d_i = x_i - r and c_i = d_i ^ d_i+1 (twice the
    triangle's signed area):
@@ -1677,7 +1788,8 @@ GA2D_API ga2d_aabb ga2d_polygon_aabb(const ga2d_polygon *p, ga2d_transform x)
      J_r = sum c_i (d_i.d_i + d_i.d_i+1 + d_i+1.d_i+1) / 12   (eq. 26 exact)
      I_C = J_r - A |C - r|^2                             (parallel axes)
    Every d_i is small even when the polygon is far from the origin, so no
-   term is a large number minus a large number. */
+   term is a large number minus a large number.  A radius adds its strips
+   and corner sectors (ga2d__add_rounding) to A, the moment and J_r. */
 GA2D_API ga2d_result ga2d_polygon_mass_checked(const ga2d_polygon *p, ga2d_real density, ga2d_mass *out)
 {
     ga2d_vec ref = ga2d_vec_make(0, 0), moment = ga2d_vec_make(0, 0), rel;
@@ -1688,8 +1800,8 @@ GA2D_API ga2d_result ga2d_polygon_mass_checked(const ga2d_polygon *p, ga2d_real 
     n = p->count;
     if (n < 3) return GA2D_ERR_TOO_FEW_POINTS;
     if (n > GA2D_MAX_POLYGON_VERTICES) return GA2D_ERR_TOO_MANY_POINTS;
-    if (!ga2d__finite(density)) return GA2D_ERR_NOT_FINITE;
-    if (density < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__finite(density) || !ga2d__finite(p->radius)) return GA2D_ERR_NOT_FINITE;
+    if (density < 0 || p->radius < 0) return GA2D_ERR_INVALID_ARGUMENT;
     for (i = 0; i < n; ++i) ref = ga2d_vec_add(ref, ga2d_vec_scale(p->vertices[i], 1 / (ga2d_real)n));
     for (i = 0; i < n; ++i) {
         ga2d_vec d0 = ga2d_vec_sub(p->vertices[i], ref);
@@ -1700,6 +1812,15 @@ GA2D_API ga2d_result ga2d_polygon_mass_checked(const ga2d_polygon *p, ga2d_real 
         j12 += c * (ga2d_dot(d0, d0) + ga2d_dot(d0, d1) + ga2d_dot(d1, d1));
     }
     if (!(area2 > 0)) return GA2D_ERR_DEGENERATE;
+    if (p->radius > 0) {
+        /* in the sums' units: area2 is 2 A, moment 3 (2 A)(C - r), j12 12 J_r */
+        ga2d_real a = 0, j = 0;
+        ga2d_vec mo = ga2d_vec_make(0, 0);
+        ga2d__add_rounding(p, ref, &a, &mo, &j);
+        area2 += 2 * a;
+        moment = ga2d_vec_add(moment, ga2d_vec_scale(mo, 6));
+        j12 += 12 * j;
+    }
     area = area2 / 2;
     rel = ga2d_vec_scale(moment, 1 / (3 * area2));
     inertia = j12 / 12 - area * ga2d_vec_length_sq(rel);
@@ -1717,6 +1838,66 @@ GA2D_API ga2d_mass ga2d_polygon_mass(const ga2d_polygon *p, ga2d_real density)
     ga2d_mass m;
     memset(&m, 0, sizeof m);
     if (ga2d_polygon_mass_checked(p, density, &m) != GA2D_OK) memset(&m, 0, sizeof m);
+    return m;
+}
+
+/* A disc: m = rho pi r^2, I = m r^2 / 2 about its centre. */
+GA2D_API ga2d_result ga2d_circle_mass_checked(const ga2d_circle *c, ga2d_real density, ga2d_mass *out)
+{
+    ga2d_mass m;
+    if (!c || !out) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__finite(density) || !ga2d__finite(c->radius) || !ga2d__finite_vec(c->center)) return GA2D_ERR_NOT_FINITE;
+    if (density < 0 || c->radius < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    m.mass = density * GA2D__PI * c->radius * c->radius;
+    m.center = c->center;
+    m.inertia = m.mass * c->radius * c->radius / 2;
+    if (!ga2d__finite(m.mass) || !ga2d__finite(m.inertia)) return GA2D_ERR_TOO_LARGE;
+    *out = m;
+    return GA2D_OK;
+}
+
+/* A capsule of length L = |c2 - c1| and radius r about its midpoint: the
+   rectangle L x 2r, I = m_rect (L^2 + 4 r^2)/12, and two half discs of
+   mass m_h = rho pi r^2/2 each, whose centroids stand d0 = 4r/(3 pi)
+   beyond the ends: I = m_h r^2/2 about the flat edge's middle, so
+   m_h (r^2/2 - d0^2) about the centroid and m_h (r^2/2 - d0^2 + (L/2 +
+   d0)^2) = m_h (r^2/2 + L^2/4 + L d0) about the midpoint.  L = 0 gives
+   the disc's m r^2/2. */
+GA2D_API ga2d_result ga2d_capsule_mass_checked(const ga2d_capsule *c, ga2d_real density, ga2d_mass *out)
+{
+    ga2d_mass m;
+    ga2d_real r, L, m_rect, m_half, d0;
+    if (!c || !out) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__finite(density) || !ga2d__finite(c->radius) || !ga2d__finite_vec(c->center1) || !ga2d__finite_vec(c->center2))
+        return GA2D_ERR_NOT_FINITE;
+    if (density < 0 || c->radius < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    r = c->radius;
+    L = ga2d_vec_length(ga2d_vec_sub(c->center2, c->center1));
+    m_rect = density * L * 2 * r;
+    m_half = density * GA2D__PI * r * r / 2;
+    d0 = 4 * r / (3 * GA2D__PI);
+    m.mass = m_rect + 2 * m_half;
+    m.center = ga2d_vec_add(c->center1, ga2d_vec_scale(ga2d_vec_sub(c->center2, c->center1), GA2D__R(0.5)));
+    m.inertia = m_rect * (L * L + 4 * r * r) / 12 + 2 * m_half * (r * r / 2 + L * L / 4 + L * d0);
+    if (!ga2d__finite(m.mass) || !ga2d__finite(m.inertia) || !ga2d__finite_vec(m.center)) return GA2D_ERR_TOO_LARGE;
+    *out = m;
+    return GA2D_OK;
+}
+
+/* The unchecked forms: all zero on bad input. */
+GA2D_API ga2d_mass ga2d_circle_mass(const ga2d_circle *c, ga2d_real density)
+{
+    ga2d_mass m;
+    memset(&m, 0, sizeof m);
+    if (ga2d_circle_mass_checked(c, density, &m) != GA2D_OK) memset(&m, 0, sizeof m);
+    return m;
+}
+
+GA2D_API ga2d_mass ga2d_capsule_mass(const ga2d_capsule *c, ga2d_real density)
+{
+    ga2d_mass m;
+    memset(&m, 0, sizeof m);
+    if (ga2d_capsule_mass_checked(c, density, &m) != GA2D_OK) memset(&m, 0, sizeof m);
     return m;
 }
 
@@ -3548,12 +3729,28 @@ static void ga2d__resolve_body_def(const ga2d_body_def *in, ga2d_body_def *out)
 }
 
 
+/* A polygon rebuilt from its vertices, as ga2d_polygon_make checks them
+   (a hand-filled struct could be anything), with its radius: finite, not
+   negative, within GA2D_MAX_COORDINATE. */
+static ga2d_result ga2d__polygon_remake(const ga2d_polygon *in, ga2d_polygon *out)
+{
+    ga2d_result r;
+    if (in->count < 0 || in->count > GA2D_MAX_POLYGON_VERTICES)
+        return in->count < 0 ? GA2D_ERR_INVALID_ARGUMENT : GA2D_ERR_TOO_MANY_POINTS;
+    r = ga2d_polygon_make(in->vertices, in->count, out);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(in->radius)) return GA2D_ERR_NOT_FINITE;
+    if (in->radius < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    if (in->radius > GA2D_MAX_COORDINATE) return GA2D_ERR_TOO_LARGE;
+    out->radius = in->radius;
+    return GA2D_OK;
+}
+
 /* A resolved def's values against their bounds. */
 static ga2d_result ga2d__body_def_check(const ga2d_body_def *d)
 {
     ga2d_polygon check;
     ga2d_result r;
-    int count;
     if ((int)d->type < 0 || (int)d->type >= GA2D_BODY_TYPE_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
     if (!(d->rotor.c == 0 && d->rotor.s == 0) && ga2d__finite(d->rotor.c) && ga2d__finite(d->rotor.s) &&
         ga2d_vec_normalize(ga2d_vec_make(d->rotor.c, d->rotor.s), NULL) == 0)
@@ -3567,11 +3764,7 @@ static ga2d_result ga2d__body_def_check(const ga2d_body_def *d)
     if (d->type == GA2D_BODY_DYNAMIC && !(d->density > 0)) return GA2D_ERR_INVALID_ARGUMENT;
     if (d->density < 0 || d->friction < 0 || d->restitution < 0 || d->linear_damping < 0 || d->angular_damping < 0)
         return GA2D_ERR_INVALID_ARGUMENT;
-    /* the polygon is validated again from its vertices: a hand-filled
-       struct gets the same checks as ga2d_polygon_make */
-    count = d->polygon.count;
-    if (count < 0 || count > GA2D_MAX_POLYGON_VERTICES) return count < 0 ? GA2D_ERR_INVALID_ARGUMENT : GA2D_ERR_TOO_MANY_POINTS;
-    r = ga2d_polygon_make(d->polygon.vertices, count, &check);
+    r = ga2d__polygon_remake(&d->polygon, &check);
     if (r != GA2D_OK) return r;
     if (d->type == GA2D_BODY_DYNAMIC) {
         ga2d_mass m;
@@ -3634,7 +3827,7 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
             return id;
         if (!ga2d__reserve_refits(w, w->moving_capacity)) return id;
     }
-    ga2d_polygon_make(def->polygon.vertices, def->polygon.count, &poly); /* validated above */
+    ga2d__polygon_remake(&def->polygon, &poly); /* validated above */
     /* the centroid for every type; mass and inertia only move dynamic bodies */
     ga2d_polygon_mass_checked(&poly, def->type == GA2D_BODY_DYNAMIC ? def->density : 1, &m);
 
@@ -3680,6 +3873,7 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
             ga2d_real d = ga2d_vec_length(ga2d_vec_sub(poly.vertices[j], m.center));
             b->extent = d > b->extent ? d : b->extent;
         }
+        b->extent += poly.radius;
     }
     if (def->type != GA2D_BODY_DYNAMIC) b->awake = 1; /* only dynamic bodies sleep */
     if (moves) {
@@ -6142,8 +6336,8 @@ static void ga2d__update_sleep(ga2d__step_context *c)
    for bit as the saved one. */
 /* 2: body fields reordered (0.6.0); 3: held manifolds (0.8.0); 4: the
    world's id tag, body and def fields (0.8.1); 5: the def's cookie; 6:
-   field by field (0.8.2) */
-#define GA2D__SNAP_VERSION 6u
+   field by field (0.8.2); 7: a polygon's radius (0.9.0) */
+#define GA2D__SNAP_VERSION 7u
 
 typedef struct ga2d__snap_header {
     char magic[8];
@@ -6261,6 +6455,7 @@ static void ga2d__io_polygon(ga2d__codec *k, ga2d_polygon *p)
         ga2d__io_vec(k, &p->vertices[i]);
         ga2d__io_vec(k, &p->normals[i]);
     }
+    ga2d__io_real(k, &p->radius);
 }
 
 /* A body slot: a free one is its type, link and generation; a live one
@@ -6518,7 +6713,7 @@ static int ga2d__snap_body_ok(const ga2d__body *b, int body_used)
     if (!(q2 > GA2D__R(0.99) && q2 < GA2D__R(1.01))) return 0;
     if ((b->awake | b->fixed_rotation | b->in_move | b->sim.field_valid) & ~1) return 0;
     if (b->polygon.count < 3 || b->polygon.count > GA2D_MAX_POLYGON_VERTICES) return 0;
-    if (ga2d_polygon_make(b->polygon.vertices, b->polygon.count, &p) != GA2D_OK || p.count != b->polygon.count) return 0;
+    if (ga2d__polygon_remake(&b->polygon, &p) != GA2D_OK || p.count != b->polygon.count) return 0;
     for (k = 0; k < p.count; ++k)
         if (memcmp(&p.vertices[k], &b->polygon.vertices[k], sizeof p.vertices[k]) != 0 ||
             memcmp(&p.normals[k], &b->polygon.normals[k], sizeof p.normals[k]) != 0)

@@ -59,6 +59,8 @@ void suite_fuzz_regress(void);
 void suite_failinject(void);
 void suite_extremes(void);
 void suite_hostile(void);
+void suite_shape_mass(void);
+void suite_shape_collide(void);
 
 #ifdef __cplusplus
 }

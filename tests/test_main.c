@@ -82,9 +82,11 @@ int main(int argc, char **argv)
     suite_algebra();
     suite_polygon();
     suite_mass();
+    suite_shape_mass();
     suite_world();
     suite_motion();
     suite_collide();
+    suite_shape_collide();
     suite_contacts();
     suite_solver();
     suite_determinism();
