@@ -435,6 +435,18 @@ typedef enum ga2d_shape_type {
     GA2D_SHAPE_TYPE_COUNT
 } ga2d_shape_type;
 
+/* One shape's geometry, for the world-free collider: `type` names the
+   member of `as` in use (circle, capsule, polygon or segment). */
+typedef struct ga2d_geometry {
+    ga2d_shape_type type;
+    union {
+        ga2d_circle circle;
+        ga2d_capsule capsule;
+        ga2d_polygon polygon;
+        ga2d_segment segment;
+    } as;
+} ga2d_geometry;
+
 /* Mass properties: mass, centre of mass (in the polygon's frame) and the
    moment of inertia about that centre. */
 typedef struct ga2d_mass { ga2d_real mass; ga2d_vec center; ga2d_real inertia; } ga2d_mass;
@@ -932,16 +944,26 @@ typedef struct ga2d_manifold {
 } ga2d_manifold;
 
 /* The contact manifold of polygon a placed by xa and polygon b placed by
-   xb, keeping points up to GA2D_SPECULATIVE_DISTANCE apart.  Returns the
-   number of points (0: farther apart than that; *out then has count 0), or
-   a negative -GA2D_ERR_* for bad input, with *out untouched: NULL, a
-   polygon whose count is out of range or which ga2d_polygon_make could
-   not have made (zero edges, normals not unit or not out of their edges:
-   INVALID_ARGUMENT), a rotor whose |q|^2 is off 1 by more than 1e-4
-   (INVALID_ARGUMENT), a non-finite transform or vertex (NOT_FINITE).
-   The normal is then unit within that rotor tolerance.  Needs no world. */
+   xb, keeping points up to GA2D_SPECULATIVE_DISTANCE apart (their radii
+   included).  Returns the number of points (0: farther apart than that;
+   *out then has count 0), or a negative -GA2D_ERR_* for bad input, with
+   *out untouched: NULL, a polygon whose count is out of range or which
+   ga2d_polygon_make could not have made (zero edges, normals not unit or
+   not out of their edges: INVALID_ARGUMENT), a negative radius
+   (INVALID_ARGUMENT), a rotor whose |q|^2 is off 1 by more than 1e-4
+   (INVALID_ARGUMENT), a non-finite transform, vertex or radius
+   (NOT_FINITE).  The normal is then unit within that rotor tolerance.
+   Needs no world. */
 GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
                                    ga2d_transform xb, ga2d_manifold *out);
+/* Any two shapes, as ga2d_collide_polygons: one point for a circle
+   against anything; up to two for the others.  A capsule or segment whose
+   ends coincide collides as a circle.  Bad input as there, plus a type out
+   of range or a chain segment (INVALID_ARGUMENT; chains live in worlds). */
+GA2D_API int ga2d_collide_shapes(const ga2d_geometry *a, ga2d_transform xa, const ga2d_geometry *b, ga2d_transform xb,
+                                 ga2d_manifold *out);
+GA2D_API int ga2d_collide_shapes_scaled(const ga2d_geometry *a, ga2d_transform xa, const ga2d_geometry *b,
+                                        ga2d_transform xb, ga2d_real units, ga2d_manifold *out);
 /* The same with the tolerances of a world whose length unit is
    1/length_units_per_meter of a metre (slop, margin scaled by it). */
 GA2D_API int ga2d_collide_polygons_scaled(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
@@ -2153,11 +2175,15 @@ GA2D_API ga2d_aabb ga2d_aabb_union(ga2d_aabb a, ga2d_aabb b)
     return c;
 }
 
-/* A polygon's vertices and normals expressed in some frame. */
+/* A shape's core expressed in some frame: a polygon's vertices and
+   normals, or a capsule's or segment's two ends with the normals of its
+   two sides (edge 0 from v0 to v1, edge 1 back), and the radius around
+   it. */
 typedef struct ga2d__hull {
     int count;
     ga2d_vec v[GA2D_MAX_POLYGON_VERTICES];
     ga2d_vec n[GA2D_MAX_POLYGON_VERTICES];
+    ga2d_real radius;
 } ga2d__hull;
 
 /* The separating-axis test over p1's edge normals: the largest, over
@@ -2294,51 +2320,38 @@ static void ga2d__put_point(ga2d_manifold *m, ga2d_transform xa, ga2d_vec d_ab, 
     mp->id = id;
 }
 
-/* The manifold, computed in A's frame: B's vertices are brought into it
-   by xa^-1 xb, which subtracts the two positions once (exactly, when they
-   are close), so nothing below depends on the distance from the origin.
-   Steps: SAT over both sets of normals; B's face becomes the reference only
-   when its separation beats A's by 0.1 slop (so the choice does not flicker
-   between nearly equal axes); the incident edge is the other polygon's
-   edge most against the reference normal.  When the polygons are apart by
-   more than 0.1 slop the closest features are found exactly instead: two
-   vertices give one point at the true distance and direction, a vertex
-   facing an edge makes that edge the reference (A's again, unless B's is
-   nearer by 0.1 slop).  The incident edge is clipped to the reference
-   face's side planes and each end within the margin becomes a point,
-   placed midway between the surfaces. */
-static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_polygon *pb, ga2d_transform xb,
-                         ga2d_real slop, ga2d_real margin, ga2d_manifold *m)
+/* The manifold of two hulls in A's frame (B's brought into it by
+   xa^-1 xb, which subtracts the two positions once, exactly when they are
+   close, so nothing below depends on the distance from the origin).
+   Steps: SAT over both sets of normals, on the cores; B's face becomes
+   the reference only when its separation beats A's by 0.1 slop (so the
+   choice does not flicker between nearly equal axes); the incident edge
+   is the other hull's edge most against the reference normal.  When the
+   cores are apart by more than 0.1 slop the closest features are found
+   exactly instead: two vertices give one point at the true distance and
+   direction (rounded corners meet there), a vertex facing an edge makes
+   that edge the reference (A's again, unless B's is nearer by 0.1 slop).
+   The incident edge is clipped to the reference face's side planes and
+   each end within the margin becomes a point.  Separations are the
+   cores' less both radii, and each point lies midway between the two
+   surfaces. */
+static int ga2d__collide_hulls(const ga2d__hull *hA, const ga2d__hull *hB, ga2d_transform xa, ga2d_vec d_ab,
+                               ga2d_real slop, ga2d_real margin, ga2d_manifold *m)
 {
-    ga2d__hull A, B;
     const ga2d__hull *ref, *inc;
-    ga2d_transform xf = ga2d_transform_inv_mul(xa, xb);
-    ga2d_vec d_ab = ga2d_vec_sub(xb.p, xa.p), n, t, r1, r2, v21, v22;
-    ga2d_real sep_a, sep_b, sep;
-    int edge_a, edge_b, flip, i11, i12, i21, i22, j;
+    ga2d_vec n, t, r1, r2, v21, v22;
+    ga2d_real sep_a, sep_b, sep, rsum = hA->radius + hB->radius;
+    int edge_a, edge_b, flip, i11, i12, i21, i22;
 
-    /* all of it defined, the points not made included: a contact's
-       manifold is saved whole in snapshots, and must not carry stack */
-    memset(m, 0, sizeof *m);
-    A.count = pa->count;
-    B.count = pb->count;
-    for (j = 0; j < pa->count; ++j) {
-        A.v[j] = pa->vertices[j];
-        A.n[j] = pa->normals[j];
-    }
-    for (j = 0; j < pb->count; ++j) {
-        B.v[j] = ga2d_transform_apply(xf, pb->vertices[j]);
-        B.n[j] = ga2d_rotate(xf.q, pb->normals[j]);
-    }
-    sep_a = ga2d__max_separation(&A, &B, &edge_a);
-    m->normal = ga2d_rotate(xa.q, A.n[edge_a]);
-    if (sep_a > margin) return 0; /* apart along one of A's normals: B's need not be tried */
-    sep_b = ga2d__max_separation(&B, &A, &edge_b);
-    if (sep_b > margin) return 0;
+    sep_a = ga2d__max_separation(hA, hB, &edge_a);
+    m->normal = ga2d_rotate(xa.q, hA->n[edge_a]);
+    if (sep_a - rsum > margin) return 0; /* apart along one of A's normals: B's need not be tried */
+    sep_b = ga2d__max_separation(hB, hA, &edge_b);
+    if (sep_b - rsum > margin) return 0;
 
     flip = sep_b > sep_a + GA2D__R(0.1) * slop;
-    ref = flip ? &B : &A;
-    inc = flip ? &A : &B;
+    ref = flip ? hB : hA;
+    inc = flip ? hA : hB;
     i11 = flip ? edge_b : edge_a;
     sep = flip ? sep_b : sep_a;
     i12 = i11 + 1 < ref->count ? i11 + 1 : 0;
@@ -2359,8 +2372,8 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
            box landing flat keeps one reference), else the other.  If
            neither face does, two vertices meet: one point at the true
            distance along the true direction. */
-        ga2d__closest ca = ga2d__closest_to_edges(&B, &A, GA2D__R(0.1) * slop);
-        ga2d__closest cb = ga2d__closest_to_edges(&A, &B, GA2D__R(0.1) * slop);
+        ga2d__closest ca = ga2d__closest_to_edges(hB, hA, GA2D__R(0.1) * slop);
+        ga2d__closest cb = ga2d__closest_to_edges(hA, hB, GA2D__R(0.1) * slop);
         const ga2d__closest *c;
         ga2d_real dist = ca.dist < cb.dist ? ca.dist : cb.dist, tol = GA2D__R(0.1) * slop;
         ga2d_vec fn;
@@ -2369,39 +2382,41 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
            edge's end by <= tol), and no vertex of the other lies below
            the face's line (its gap is the distance, within tol) */
         int face_a = ca.dist <= dist + tol &&
-                     GA2D__FABS(ga2d_wedge(A.n[ca.edge], ga2d_vec_sub(B.v[ca.vertex], ca.on_edge))) <= tol &&
-                     ga2d__face_gap(&A, ca.edge, &B) >= dist - tol;
+                     GA2D__FABS(ga2d_wedge(hA->n[ca.edge], ga2d_vec_sub(hB->v[ca.vertex], ca.on_edge))) <= tol &&
+                     ga2d__face_gap(hA, ca.edge, hB) >= dist - tol;
         int face_b = cb.dist <= dist + tol &&
-                     GA2D__FABS(ga2d_wedge(B.n[cb.edge], ga2d_vec_sub(A.v[cb.vertex], cb.on_edge))) <= tol &&
-                     ga2d__face_gap(&B, cb.edge, &A) >= dist - tol;
-        if (dist > margin) return 0;
+                     GA2D__FABS(ga2d_wedge(hB->n[cb.edge], ga2d_vec_sub(hA->v[cb.vertex], cb.on_edge))) <= tol &&
+                     ga2d__face_gap(hB, cb.edge, hA) >= dist - tol;
+        if (dist - rsum > margin) return 0;
         if (!face_a && !face_b) {
             /* two vertices meet: one point, the true distance and direction */
-            ga2d_vec u, qa, qb;
+            ga2d_vec u, qa, qb, mid;
             int ia, ib;
             if (ca.dist <= cb.dist) {
-                qa = ca.on_edge; qb = B.v[ca.vertex]; ia = ca.end; ib = ca.vertex;
+                qa = ca.on_edge; qb = hB->v[ca.vertex]; ia = ca.end; ib = ca.vertex;
             } else {
-                qa = A.v[cb.vertex]; qb = cb.on_edge; ia = cb.vertex; ib = cb.end;
+                qa = hA->v[cb.vertex]; qb = cb.on_edge; ia = cb.vertex; ib = cb.end;
             }
             /* vertices that coincide (a distance that was all rounding, as
                when one polygon is 1e8 times the other's size) have no
                direction: the SAT's axis, from A to B, stands in */
-            if (ga2d_vec_normalize(ga2d_vec_sub(qb, qa), &u) == 0) u = flip ? ga2d_vec_neg(B.n[edge_b]) : A.n[edge_a];
+            if (ga2d_vec_normalize(ga2d_vec_sub(qb, qa), &u) == 0) u = flip ? ga2d_vec_neg(hB->n[edge_b]) : hA->n[edge_a];
             m->normal = ga2d_rotate(xa.q, u);
+            /* midway between the surfaces, qa + u r_A and qb - u r_B */
+            mid = ga2d_vec_scale(ga2d_vec_add(qa, qb), GA2D__R(0.5));
+            if (hA->radius != hB->radius) mid = ga2d_vec_add(mid, ga2d_vec_scale(u, (hA->radius - hB->radius) / 2));
             /* no face is the reference: the flip bit is 0 (both searches
                find the same two vertices at one distance, so which of
                them reports it is rounding, and must not show in the id) */
-            ga2d__put_point(m, xa, d_ab, ga2d_vec_scale(ga2d_vec_add(qa, qb), GA2D__R(0.5)), dist,
-                            ga2d__feature_id(0, ia < 0 ? 0 : ia, ib < 0 ? 0 : ib));
+            ga2d__put_point(m, xa, d_ab, mid, dist - rsum, ga2d__feature_id(0, ia < 0 ? 0 : ia, ib < 0 ? 0 : ib));
             return 1;
         }
         /* the SAT's choice (with its hysteresis, above) when that face
            faces the gap, so both argument orders agree; else the other */
         if (flip ? !face_b : !face_a) flip = !flip;
         c = flip ? &cb : &ca;
-        ref = flip ? &B : &A;
-        inc = flip ? &A : &B;
+        ref = flip ? hB : hA;
+        inc = flip ? hA : hB;
         fn = ref->n[c->edge];
         i11 = c->edge;
         i12 = i11 + 1 < ref->count ? i11 + 1 : 0;
@@ -2420,7 +2435,7 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
     {
         ga2d_real upper1 = ga2d_dot(ga2d_vec_sub(r2, r1), t);
         ga2d_real upper2 = ga2d_dot(ga2d_vec_sub(v21, r1), t), lower2 = ga2d_dot(ga2d_vec_sub(v22, r1), t);
-        ga2d_real span = upper2 - lower2, s_lo, s_hi;
+        ga2d_real span = upper2 - lower2, s_lo, s_hi, lift = inc->radius - ref->radius;
         ga2d_vec v_lo = v22, v_hi = v21;
         /* fractions clamped to the edge: an incident edge lying wholly past
            a side plane is not extended beyond its own ends */
@@ -2434,15 +2449,190 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
         s_lo = ga2d_dot(ga2d_vec_sub(v_lo, r1), n);
         s_hi = ga2d_dot(ga2d_vec_sub(v_hi, r1), n);
         m->normal = ga2d_rotate(xa.q, flip ? ga2d_vec_neg(n) : n);
-        /* the low end lies by r1 and came from v22; the high end by r2 and v21 */
-        if (s_lo <= margin)
-            ga2d__put_point(m, xa, d_ab, ga2d_vec_sub(v_lo, ga2d_vec_scale(n, s_lo / 2)), s_lo,
-                            flip ? ga2d__feature_id(1, i22, i11) : ga2d__feature_id(0, i11, i22));
-        if (s_hi <= margin)
-            ga2d__put_point(m, xa, d_ab, ga2d_vec_sub(v_hi, ga2d_vec_scale(n, s_hi / 2)), s_hi,
-                            flip ? ga2d__feature_id(1, i21, i12) : ga2d__feature_id(0, i12, i21));
+        /* the low end lies by r1 and came from v22; the high end by r2 and
+           v21.  A core end at height s above the reference line has its
+           surface at s - r_inc, the reference surface is at r_ref: the
+           point midway stands (s + r_inc - r_ref)/2 below the end */
+        if (s_lo - rsum <= margin)
+            ga2d__put_point(m, xa, d_ab, ga2d_vec_sub(v_lo, ga2d_vec_scale(n, (lift != 0 ? s_lo + lift : s_lo) / 2)),
+                            s_lo - rsum, flip ? ga2d__feature_id(1, i22, i11) : ga2d__feature_id(0, i11, i22));
+        if (s_hi - rsum <= margin)
+            ga2d__put_point(m, xa, d_ab, ga2d_vec_sub(v_hi, ga2d_vec_scale(n, (lift != 0 ? s_hi + lift : s_hi) / 2)),
+                            s_hi - rsum, flip ? ga2d__feature_id(1, i21, i12) : ga2d__feature_id(0, i12, i21));
     }
     return m->count;
+}
+
+/* A polygon's hull, placed by x (the identity: A's own frame). */
+static void ga2d__polygon_hull(const ga2d_polygon *p, ga2d_transform x, int identity, ga2d__hull *h)
+{
+    int j;
+    h->count = p->count;
+    h->radius = p->radius;
+    for (j = 0; j < p->count; ++j) {
+        h->v[j] = identity ? p->vertices[j] : ga2d_transform_apply(x, p->vertices[j]);
+        h->n[j] = identity ? p->normals[j] : ga2d_rotate(x.q, p->normals[j]);
+    }
+}
+
+/* A capsule's or segment's hull from its two ends (already placed): edge
+   0 runs p1 -> p2 with the outward normal on its right, edge 1 back.
+   Returns 0 for ends that coincide (no direction: a circle). */
+static int ga2d__segment_hull(ga2d_vec p1, ga2d_vec p2, ga2d_real radius, ga2d__hull *h)
+{
+    ga2d_vec e;
+    if (ga2d_vec_normalize(ga2d_vec_sub(p2, p1), &e) == 0) return 0;
+    h->count = 2;
+    h->radius = radius;
+    h->v[0] = p1;
+    h->v[1] = p2;
+    h->n[0] = ga2d_vec_make(e.y, -e.x);
+    h->n[1] = ga2d_vec_make(-e.y, e.x);
+    return 1;
+}
+
+/* The polygon pair, as the world collides its bodies. */
+static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_polygon *pb, ga2d_transform xb,
+                         ga2d_real slop, ga2d_real margin, ga2d_manifold *m)
+{
+    ga2d__hull A, B;
+    /* all of it defined, the points not made included: a contact's
+       manifold is saved whole in snapshots, and must not carry stack */
+    memset(m, 0, sizeof *m);
+    ga2d__polygon_hull(pa, xa, 1, &A);
+    ga2d__polygon_hull(pb, ga2d_transform_inv_mul(xa, xb), 0, &B);
+    return ga2d__collide_hulls(&A, &B, xa, ga2d_vec_sub(xb.p, xa.p), slop, margin, m);
+}
+
+/* A feature id's vertex: a hull's vertex k as 0x80 | k, apart from its
+   faces' numbers. */
+#define GA2D__VERTEX_FEATURE 0x80
+
+/* The nearest point q of a hull's core to the point c (both in one
+   frame), the unit direction u from q to c (out of the core's face when c
+   is inside it, as a polygon's core can hold it), the signed distance d
+   along u (negative inside) and the feature: a face's index, or a vertex
+   as GA2D__VERTEX_FEATURE | index.  For a convex core the face of largest
+   separation holds the nearest point, on it or at one of its ends. */
+static ga2d_real ga2d__hull_nearest(const ga2d__hull *h, ga2d_vec c, ga2d_vec *q, ga2d_vec *u, int *feature)
+{
+    ga2d_real best = -GA2D__MAX, t, len2;
+    int i, face = 0, i2;
+    ga2d_vec e, d;
+    for (i = 0; i < h->count; ++i) {
+        ga2d_real sep = ga2d_dot(h->n[i], ga2d_vec_sub(c, h->v[i]));
+        if (sep > best) {
+            best = sep;
+            face = i;
+        }
+    }
+    i2 = face + 1 < h->count ? face + 1 : 0;
+    e = ga2d_vec_sub(h->v[i2], h->v[face]);
+    d = ga2d_vec_sub(c, h->v[face]);
+    t = ga2d_dot(d, e);
+    len2 = ga2d_dot(e, e);
+    if ((best > 0 || h->count < 3) && (t <= 0 || t >= len2)) {
+        /* past an end of the face (a segment's core has no inside, so its
+           ends count on its line too): that vertex is nearest */
+        int k = t <= 0 ? face : i2;
+        ga2d_vec r = ga2d_vec_sub(c, h->v[k]);
+        ga2d_real dist = ga2d__length(r);
+        *q = h->v[k];
+        *feature = GA2D__VERTEX_FEATURE | k;
+        if (dist > 0) {
+            *u = ga2d_vec_scale(r, 1 / dist);
+            return dist;
+        }
+        *u = h->n[face];
+        return 0;
+    }
+    *u = h->n[face];
+    *q = ga2d_vec_sub(c, ga2d_vec_scale(*u, best));
+    *feature = face;
+    return best;
+}
+
+/* One point between a hull (A, or B when flip) and a circle of centre c
+   and radius rc, in A's frame.  The normal runs from A to B. */
+static int ga2d__collide_hull_circle(const ga2d__hull *h, ga2d_vec c, ga2d_real rc, int flip, ga2d_transform xa,
+                                     ga2d_vec d_ab, ga2d_real margin, ga2d_manifold *m)
+{
+    ga2d_vec q, u, mid;
+    int feature;
+    ga2d_real d = ga2d__hull_nearest(h, c, &q, &u, &feature), sep = d - h->radius - rc;
+    if (sep > margin) return 0;
+    /* midway between the surfaces, q + u r_h and c - u r_c */
+    mid = ga2d_vec_add(ga2d_vec_scale(ga2d_vec_add(q, c), GA2D__R(0.5)), ga2d_vec_scale(u, (h->radius - rc) / 2));
+    m->normal = ga2d_rotate(xa.q, flip ? ga2d_vec_neg(u) : u);
+    ga2d__put_point(m, xa, d_ab, mid, sep, flip ? ga2d__feature_id(1, 0, feature) : ga2d__feature_id(0, feature, 0));
+    return 1;
+}
+
+/* Two circles, centres ca and cb in A's frame: one point on the line of
+   centres (A's x axis when they coincide). */
+static int ga2d__collide_circles(ga2d_vec ca, ga2d_real ra, ga2d_vec cb, ga2d_real rb, ga2d_transform xa, ga2d_vec d_ab,
+                                 ga2d_real margin, ga2d_manifold *m)
+{
+    ga2d_vec r = ga2d_vec_sub(cb, ca), u, mid;
+    ga2d_real d = ga2d__length(r), sep = d - ra - rb;
+    if (sep > margin) return 0;
+    u = d > 0 ? ga2d_vec_scale(r, 1 / d) : ga2d_vec_make(1, 0);
+    mid = ga2d_vec_add(ga2d_vec_scale(ga2d_vec_add(ca, cb), GA2D__R(0.5)), ga2d_vec_scale(u, (ra - rb) / 2));
+    m->normal = ga2d_rotate(xa.q, u);
+    ga2d__put_point(m, xa, d_ab, mid, sep, ga2d__feature_id(0, 0, 0));
+    return 1;
+}
+
+/* A shape as its hull in a frame (x applied unless identity), or as a
+   circle (returns 0: centre *c, radius *r) when it has no edges. */
+static int ga2d__geometry_hull(const ga2d_geometry *g, ga2d_transform x, int identity, ga2d__hull *h, ga2d_vec *c,
+                               ga2d_real *r)
+{
+    ga2d_vec p1, p2;
+    ga2d_real radius = 0;
+    switch (g->type) {
+    case GA2D_SHAPE_POLYGON:
+        ga2d__polygon_hull(&g->as.polygon, x, identity, h);
+        return 1;
+    case GA2D_SHAPE_CIRCLE:
+        *c = identity ? g->as.circle.center : ga2d_transform_apply(x, g->as.circle.center);
+        *r = g->as.circle.radius;
+        return 0;
+    case GA2D_SHAPE_CAPSULE:
+        p1 = g->as.capsule.center1;
+        p2 = g->as.capsule.center2;
+        radius = g->as.capsule.radius;
+        break;
+    default: /* segments */
+        p1 = g->as.segment.point1;
+        p2 = g->as.segment.point2;
+        break;
+    }
+    if (!identity) {
+        p1 = ga2d_transform_apply(x, p1);
+        p2 = ga2d_transform_apply(x, p2);
+    }
+    if (ga2d__segment_hull(p1, p2, radius, h)) return 1;
+    *c = p1; /* its ends coincide: a circle */
+    *r = radius;
+    return 0;
+}
+
+/* Any pair of shapes, in A's frame. */
+static int ga2d__collide_geometries(const ga2d_geometry *ga, ga2d_transform xa, const ga2d_geometry *gb, ga2d_transform xb,
+                                    ga2d_real slop, ga2d_real margin, ga2d_manifold *m)
+{
+    ga2d__hull A, B;
+    ga2d_vec ca, cb, d_ab = ga2d_vec_sub(xb.p, xa.p);
+    ga2d_real ra = 0, rb = 0;
+    int ha, hb;
+    memset(m, 0, sizeof *m);
+    ha = ga2d__geometry_hull(ga, xa, 1, &A, &ca, &ra);
+    hb = ga2d__geometry_hull(gb, ga2d_transform_inv_mul(xa, xb), 0, &B, &cb, &rb);
+    if (ha && hb) return ga2d__collide_hulls(&A, &B, xa, d_ab, slop, margin, m);
+    if (ha) return ga2d__collide_hull_circle(&A, cb, rb, 0, xa, d_ab, margin, m);
+    if (hb) return ga2d__collide_hull_circle(&B, ca, ra, 1, xa, d_ab, margin, m);
+    return ga2d__collide_circles(ca, ra, cb, rb, xa, d_ab, margin, m);
 }
 
 static int ga2d__polygon_ok(const ga2d_polygon *p) { return p && p->count >= 3 && p->count <= GA2D_MAX_POLYGON_VERTICES; }
@@ -2479,25 +2669,91 @@ static int ga2d__polygon_consistent(const ga2d_polygon *p)
     return 1;
 }
 
+/* A polygon as the world-free collider takes it: 0 or -GA2D_ERR_*. */
+static int ga2d__polygon_input(const ga2d_polygon *p)
+{
+    int c;
+    if (!ga2d__polygon_ok(p)) return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    c = ga2d__polygon_consistent(p);
+    if (c == 0 || !ga2d__finite(p->radius)) return -(int)GA2D_ERR_NOT_FINITE;
+    if (c < 0 || p->radius < 0) return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    return 0;
+}
+
+/* A radius as it may be: finite, not negative. */
+static int ga2d__radius_input(ga2d_real r)
+{
+    if (!ga2d__finite(r)) return -(int)GA2D_ERR_NOT_FINITE;
+    return r < 0 ? -(int)GA2D_ERR_INVALID_ARGUMENT : 0;
+}
+
+/* Any shape as the world-free collider takes it: 0 or -GA2D_ERR_*. */
+static int ga2d__geometry_input(const ga2d_geometry *g)
+{
+    if (!g) return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    switch (g->type) {
+    case GA2D_SHAPE_POLYGON: return ga2d__polygon_input(&g->as.polygon);
+    case GA2D_SHAPE_CIRCLE:
+        if (!ga2d__finite_vec(g->as.circle.center)) return -(int)GA2D_ERR_NOT_FINITE;
+        return ga2d__radius_input(g->as.circle.radius);
+    case GA2D_SHAPE_CAPSULE:
+        if (!ga2d__finite_vec(g->as.capsule.center1) || !ga2d__finite_vec(g->as.capsule.center2))
+            return -(int)GA2D_ERR_NOT_FINITE;
+        return ga2d__radius_input(g->as.capsule.radius);
+    case GA2D_SHAPE_SEGMENT:
+        return ga2d__finite_vec(g->as.segment.point1) && ga2d__finite_vec(g->as.segment.point2) ? 0 : -(int)GA2D_ERR_NOT_FINITE;
+    default: return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    }
+}
+
+/* The transforms and unit as the world-free collider takes them. */
+static int ga2d__collide_input(ga2d_transform xa, ga2d_transform xb, ga2d_real units)
+{
+    if (!ga2d__transform_ok(xa) || !ga2d__transform_ok(xb) || !ga2d__finite(units)) return -(int)GA2D_ERR_NOT_FINITE;
+    /* the normal is promised unit: it is turned by these rotors */
+    if (!ga2d__unit_ok(xa.q.c * xa.q.c + xa.q.s * xa.q.s) || !ga2d__unit_ok(xb.q.c * xb.q.c + xb.q.s * xb.q.s))
+        return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    return units > 0 ? 0 : -(int)GA2D_ERR_INVALID_ARGUMENT;
+}
+
 GA2D_API int ga2d_collide_polygons_scaled(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
                                           ga2d_transform xb, ga2d_real units, ga2d_manifold *out)
 {
     ga2d_manifold m;
-    int ca, cb;
+    int ca, cb, r;
     if (!out || !ga2d__polygon_ok(a) || !ga2d__polygon_ok(b)) return -(int)GA2D_ERR_INVALID_ARGUMENT;
     if (!ga2d__transform_ok(xa) || !ga2d__transform_ok(xb) || !ga2d__finite(units)) return -(int)GA2D_ERR_NOT_FINITE;
-    ca = ga2d__polygon_consistent(a);
-    cb = ga2d__polygon_consistent(b);
-    if (ca == 0 || cb == 0) return -(int)GA2D_ERR_NOT_FINITE;
+    ca = ga2d__polygon_input(a);
+    cb = ga2d__polygon_input(b);
+    if (ca == -(int)GA2D_ERR_NOT_FINITE || cb == -(int)GA2D_ERR_NOT_FINITE) return -(int)GA2D_ERR_NOT_FINITE;
     if (ca < 0 || cb < 0) return -(int)GA2D_ERR_INVALID_ARGUMENT;
-    /* the normal is promised unit: it is turned by these rotors */
-    if (!ga2d__unit_ok(xa.q.c * xa.q.c + xa.q.s * xa.q.s) || !ga2d__unit_ok(xb.q.c * xb.q.c + xb.q.s * xb.q.s))
-        return -(int)GA2D_ERR_INVALID_ARGUMENT;
-    if (!(units > 0)) return -(int)GA2D_ERR_INVALID_ARGUMENT;
-    memset(&m, 0, sizeof m);
+    if ((r = ga2d__collide_input(xa, xb, units)) < 0) return r;
     ga2d__collide(a, xa, b, xb, GA2D__R(GA2D_LINEAR_SLOP) * units, GA2D__R(GA2D_SPECULATIVE_DISTANCE) * units, &m);
     *out = m;
     return m.count;
+}
+
+GA2D_API int ga2d_collide_shapes_scaled(const ga2d_geometry *a, ga2d_transform xa, const ga2d_geometry *b,
+                                        ga2d_transform xb, ga2d_real units, ga2d_manifold *out)
+{
+    ga2d_manifold m;
+    int ca, cb, r;
+    if (!out || !a || !b) return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    if ((r = ga2d__collide_input(xa, xb, units)) == -(int)GA2D_ERR_NOT_FINITE) return r;
+    ca = ga2d__geometry_input(a);
+    cb = ga2d__geometry_input(b);
+    if (ca == -(int)GA2D_ERR_NOT_FINITE || cb == -(int)GA2D_ERR_NOT_FINITE) return -(int)GA2D_ERR_NOT_FINITE;
+    if (ca < 0 || cb < 0) return -(int)GA2D_ERR_INVALID_ARGUMENT;
+    if (r < 0) return r;
+    ga2d__collide_geometries(a, xa, b, xb, GA2D__R(GA2D_LINEAR_SLOP) * units, GA2D__R(GA2D_SPECULATIVE_DISTANCE) * units, &m);
+    *out = m;
+    return m.count;
+}
+
+GA2D_API int ga2d_collide_shapes(const ga2d_geometry *a, ga2d_transform xa, const ga2d_geometry *b, ga2d_transform xb,
+                                 ga2d_manifold *out)
+{
+    return ga2d_collide_shapes_scaled(a, xa, b, xb, 1, out);
 }
 
 GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, const ga2d_polygon *b,
