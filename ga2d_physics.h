@@ -910,6 +910,62 @@ GA2D_API ga2d_result ga2d_body_apply_torque(ga2d_world *w, ga2d_body_id id, ga2d
 GA2D_API ga2d_result ga2d_body_apply_impulse(ga2d_world *w, ga2d_body_id id, ga2d_vec impulse, ga2d_vec world_point);
 GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id id, ga2d_real impulse_e12);
 
+/* ----------------------------------------------------------------- shapes */
+/* A body owns any number of shapes: each has its own geometry (in the
+   body's frame), material, filter and user data, and is what collides.
+   Shapes of one body never collide with each other.  The body's mass,
+   centre and inertia are the exact sum over its shapes (parallel axes),
+   refreshed when shapes come and go. */
+typedef struct ga2d_shape_id { uint32_t index1; uint32_t generation; } ga2d_shape_id; /* zero: null */
+GA2D_API ga2d_shape_id ga2d_shape_id_null(void);
+GA2D_API int ga2d_shape_id_is_null(ga2d_shape_id id);
+GA2D_API int ga2d_shape_id_equal(ga2d_shape_id a, ga2d_shape_id b);
+
+typedef struct ga2d_shape_def {
+    ga2d_real density;        /* kg/m^2; default 1 (0: no mass, as for a sensor) */
+    ga2d_real friction;       /* default 0.6; mixes as sqrt(mu_a mu_b) */
+    ga2d_real restitution;    /* default 0; mixes as the larger */
+    ga2d_filter filter;       /* default: category 1, collides with all */
+    void *user_data;
+    int internal_cookie;      /* set by ga2d_default_shape_def(); leave it */
+} ga2d_shape_def;
+GA2D_API ga2d_shape_def ga2d_default_shape_def(void);
+
+/* Each returns the null id on failure (then the world is unchanged); the
+   _checked forms say why: STALE_ID (the body), LOCKED (from a callback or
+   a step), INVALID_ARGUMENT (NULL, a negative density, friction,
+   restitution or radius; a capsule whose ends coincide: make it a
+   circle; a segment of zero length), NOT_FINITE, TOO_LARGE (beyond
+   GA2D_MAX_COORDINATE), the polygon's checks as ga2d_polygon_make's,
+   DEGENERATE (a dynamic body's shapes would give it no mass or inertia),
+   OUT_OF_MEMORY.  A segment has no area: it goes on static and kinematic
+   bodies (INVALID_ARGUMENT on a dynamic one). */
+GA2D_API ga2d_shape_id ga2d_shape_create_circle(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_circle *c);
+GA2D_API ga2d_shape_id ga2d_shape_create_capsule(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_capsule *c);
+GA2D_API ga2d_shape_id ga2d_shape_create_polygon(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_polygon *p);
+GA2D_API ga2d_shape_id ga2d_shape_create_segment(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_segment *s);
+/* Any of the above from a geometry; *out gets the id (null on failure). */
+GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def,
+                                              const ga2d_geometry *g, ga2d_shape_id *out);
+/* Destroys a shape (its contacts end without events, as a body's do);
+   update_body_mass 0 keeps the body's mass as it was until the next
+   shape change or ga2d_body_set_mass_data. */
+GA2D_API ga2d_result ga2d_shape_destroy(ga2d_world *w, ga2d_shape_id id, int update_body_mass);
+GA2D_API int ga2d_shape_is_valid(const ga2d_world *w, ga2d_shape_id id);
+GA2D_API ga2d_body_id ga2d_shape_body(const ga2d_world *w, ga2d_shape_id id);   /* null if stale */
+GA2D_API ga2d_shape_type ga2d_shape_get_type(const ga2d_world *w, ga2d_shape_id id); /* GA2D_SHAPE_TYPE_COUNT if stale */
+/* The shape's geometry in its body's frame (zeroed if stale). */
+GA2D_API ga2d_geometry ga2d_shape_geometry(const ga2d_world *w, ga2d_shape_id id);
+GA2D_API void *ga2d_shape_user_data(const ga2d_world *w, ga2d_shape_id id);
+GA2D_API ga2d_result ga2d_shape_set_friction(ga2d_world *w, ga2d_shape_id id, ga2d_real friction);
+GA2D_API ga2d_result ga2d_shape_set_restitution(ga2d_world *w, ga2d_shape_id id, ga2d_real restitution);
+GA2D_API ga2d_result ga2d_shape_set_filter(ga2d_world *w, ga2d_shape_id id, ga2d_filter f);
+GA2D_API ga2d_filter ga2d_shape_filter(const ga2d_world *w, ga2d_shape_id id);
+/* The shape's box in the broadphase (see ga2d_body_fat_aabb). */
+GA2D_API ga2d_aabb ga2d_shape_fat_aabb(const ga2d_world *w, ga2d_shape_id id);
+/* Up to `capacity` of a body's shapes, in creation order; returns how many it has. */
+GA2D_API int ga2d_body_get_shapes(const ga2d_world *w, ga2d_body_id id, ga2d_shape_id *out, int capacity);
+
 /* -------------------------------------------------------------- collision */
 /* Tolerances, in metres; a world scales them by its length_units_per_meter.
    Linear slop: the overlap the solver allows to keep contacts steady.
@@ -983,11 +1039,12 @@ GA2D_API ga2d_filter ga2d_body_filter(const ga2d_world *w, ga2d_body_id id);
    when the body could leave it within the next step. */
 GA2D_API ga2d_aabb ga2d_body_fat_aabb(const ga2d_world *w, ga2d_body_id id);
 
-/* A contact between two bodies, A's slot before B's; the manifold's normal
-   points from A to B. */
+/* A contact between two shapes of two bodies, shape A's slot before
+   shape B's; the manifold's normal points from A to B. */
 typedef struct ga2d_contact_data {
     ga2d_body_id body_a, body_b;
     ga2d_manifold manifold;
+    ga2d_shape_id shape_a, shape_b;
 } ga2d_contact_data;
 
 /* The bodies that began and ended touching in the last step.  The arrays
@@ -1023,9 +1080,9 @@ GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_c
 #define GA2D_COLOR_AABB 0xBF3FBFu
 
 /* What ga2d_world_draw hands a renderer: any callback may be NULL, and the
-   switches choose what is drawn.  A polygon comes with its body's id and
-   placement, so a renderer can keep one shape per body across frames; its
-   pointer is valid during that call only. */
+   switches choose what is drawn.  A shape comes with its body's id (and a
+   polygon with its body's placement, so a renderer can keep its shapes
+   across frames); a polygon's pointer is valid during that call only. */
 typedef struct ga2d_debug_draw {
     void (*polygon)(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform x, uint32_t color, void *context);
     void (*segment)(ga2d_vec a, ga2d_vec b, uint32_t color, void *context);
@@ -1033,6 +1090,11 @@ typedef struct ga2d_debug_draw {
     /* a contact point: where, its normal (from body A to body B) and separation */
     void (*contact)(ga2d_vec p, ga2d_vec normal, ga2d_real separation, uint32_t color, void *context);
     void (*aabb)(ga2d_aabb box, uint32_t color, void *context);
+    /* a circle shape: its centre, radius and the body's x axis (to show it
+       turn); a capsule: its two centres and radius.  A segment comes to
+       `segment`; a polygon's radius, when it has one, rounds it. */
+    void (*circle)(ga2d_body_id id, ga2d_vec center, ga2d_real radius, ga2d_vec axis, uint32_t color, void *context);
+    void (*capsule)(ga2d_body_id id, ga2d_vec center1, ga2d_vec center2, ga2d_real radius, uint32_t color, void *context);
     int draw_bodies;     /* default 1 */
     int draw_contacts;   /* default 0 */
     int draw_aabbs;      /* default 0: the broadphase's fat boxes */
@@ -2779,7 +2841,7 @@ typedef struct ga2d__held {
 typedef struct ga2d__contact {
     /* first: what walking a body's list reads (the solver's order walks
        every list each step), in one cache line */
-    int a, b;                /* body slots, a < b */
+    int a, b;                /* body slots: shape_a's body, shape_b's */
     int prev[2], next[2];    /* the bodies' list links, -1 at the ends */
     int touching;
     int next_free;           /* -2 while in use */
@@ -2789,6 +2851,7 @@ typedef struct ga2d__contact {
     ga2d_vec end_normal;     /* an ended touch's new normal, while its end is reported */
     ga2d__held held;         /* the manifold in A's frame, while touching */
     uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
+    int shape_a, shape_b;    /* shape slots, shape_a < shape_b */
 } ga2d__contact;
 
 /* What the narrowphase stage found of a contact, for the book-keeping
@@ -2837,9 +2900,9 @@ typedef struct ga2d__body_sim {
 
 /* A body slot, in three parts as they are used: its integration state
    (`sim`, first, so the integrators' reads share the fewest cache lines);
-   its book-keeping (identity, lists, island, sleep); and what it is made
-   of (mass, material, filter, polygon: read once per contact, not per
-   pass).  The solver's view of it is ga2d__sbody, with the solver. */
+   its book-keeping (identity, lists, island, sleep); and its mass, the
+   sum over its shapes (ga2d__shape).  The solver's view of it is
+   ga2d__sbody, with the solver. */
 typedef struct ga2d__body {
     ga2d__body_sim sim;
     /* book-keeping */
@@ -2848,21 +2911,36 @@ typedef struct ga2d__body {
     uint32_t generation;
     int next_free;
     int move_index;              /* index in world->moving, or -1 */
-    int proxy;                   /* leaf in trees[type != static] */
-    int in_move;                 /* queued for pair finding */
     int contact_head;            /* first (oldest) link of its contact list, or -1 */
     int contact_tail;            /* last (newest) link, or -1 */
+    int shape_head, shape_tail;  /* its shapes in creation order (ga2d__shape.next), or -1 */
+    int shape_count;
     int island;                  /* union-find parent while islands form */
     ga2d_real sleep_time, island_rest;
     void *user_data;
-    /* what it is made of */
+    /* its mass */
     ga2d_real mass, inertia;
-    ga2d_real friction, restitution;
     int fixed_rotation;
-    ga2d_filter filter;
-    ga2d_real extent;            /* farthest vertex from the centre */
-    ga2d_polygon polygon;
+    ga2d_real extent;            /* the farthest its shapes reach from the centre */
 } ga2d__body;
+
+/* A shape slot: a body's piece of geometry, in the body's frame, with its
+   material and filter; it has the broadphase proxy, and contacts join
+   shapes.  Shapes live in a pool (stable index, free list) and on their
+   body's list. */
+typedef struct ga2d__shape {
+    int type;                    /* ga2d_shape_type; -1 for a free slot */
+    uint32_t generation;
+    int next_free;
+    int body;                    /* its body's slot */
+    int next;                    /* the next shape of its body, or -1 */
+    int proxy;                   /* leaf in trees[body type != static] */
+    int in_move;                 /* queued for pair finding */
+    ga2d_real density, friction, restitution;
+    ga2d_filter filter;
+    void *user_data;
+    ga2d_geometry geom;
+} ga2d__shape;
 
 /* The solver's types, defined with the solver; the step context holds
    them by pointer. */
@@ -2925,6 +3003,8 @@ struct ga2d_world {
     ga2d_world_def def;          /* as resolved at creation, kept current */
     ga2d__body *bodies;
     int body_capacity, body_used, body_count, free_head;
+    ga2d__shape *shapes;
+    int shape_capacity, shape_used, shape_count, shape_free;
     int *moving;                 /* slots of kinematic and dynamic bodies */
     int moving_count, moving_capacity;
     double time, eval_time;
@@ -2936,7 +3016,7 @@ struct ga2d_world {
     ga2d_world_counters counters;
     /* broadphase: trees[0] static bodies, trees[1] moving ones */
     ga2d__tree trees[2];
-    int *move_buf;               /* slots queued for pair finding */
+    int *move_buf;               /* shapes queued for pair finding */
     int move_count, move_capacity;
     uint64_t *new_pairs;
     int new_pair_count, new_pair_capacity;
@@ -3164,8 +3244,11 @@ static int ga2d__edge_other(const ga2d_world *w, int link)
     return (link & 1) ? c->a : c->b;
 }
 
-static int ga2d__create_contact(ga2d_world *w, int a, int b)
+/* A contact for the shape pair sa < sb (their bodies differ). */
+static int ga2d__create_contact(ga2d_world *w, int sa, int sb)
 {
+    const ga2d__shape *pa = &w->shapes[sa], *pb = &w->shapes[sb];
+    int a = pa->body, b = pb->body;
     ga2d__contact *c;
     int ci;
     if (!ga2d__pairs_reserve(w)) return 0;
@@ -3182,13 +3265,15 @@ static int ga2d__create_contact(ga2d_world *w, int a, int b)
     memset(c, 0, sizeof *c);
     c->a = a;
     c->b = b;
+    c->shape_a = sa;
+    c->shape_b = sb;
     c->next_free = -2;
     c->serial = w->contact_serial++;
-    c->friction = GA2D__SQRT(w->bodies[a].friction * w->bodies[b].friction);
-    c->restitution = w->bodies[a].restitution > w->bodies[b].restitution ? w->bodies[a].restitution : w->bodies[b].restitution;
+    c->friction = GA2D__SQRT(pa->friction * pb->friction);
+    c->restitution = pa->restitution > pb->restitution ? pa->restitution : pb->restitution;
     ga2d__link_contact(w, ci, 0);
     ga2d__link_contact(w, ci, 1);
-    ga2d__pairs_put(w->pair_keys, w->pair_vals, w->pair_capacity, ga2d__pair_key(a, b), ci);
+    ga2d__pairs_put(w->pair_keys, w->pair_vals, w->pair_capacity, ga2d__pair_key(sa, sb), ci);
     ++w->contact_count;
     return 1;
 }
@@ -3198,7 +3283,7 @@ static void ga2d__destroy_contact(ga2d_world *w, int ci)
     ga2d__contact *c = &w->contacts[ci];
     ga2d__unlink_contact(w, ci, 0);
     ga2d__unlink_contact(w, ci, 1);
-    ga2d__pairs_remove(w, ga2d__pair_key(c->a, c->b));
+    ga2d__pairs_remove(w, ga2d__pair_key(c->shape_a, c->shape_b));
     c->next_free = w->contact_free;
     w->contact_free = ci;
     --w->contact_count;
@@ -3212,11 +3297,21 @@ static ga2d_body_id ga2d__id_of(const ga2d_world *w, int slot)
     return id;
 }
 
+static ga2d_shape_id ga2d__shape_id_of(const ga2d_world *w, int k)
+{
+    ga2d_shape_id id;
+    id.index1 = (uint32_t)k + 1;
+    id.generation = w->shapes[k].generation ^ w->tag;
+    return id;
+}
+
 static void ga2d__contact_data(const ga2d_world *w, const ga2d__contact *c, ga2d_contact_data *out)
 {
     out->body_a = ga2d__id_of(w, c->a);
     out->body_b = ga2d__id_of(w, c->b);
     out->manifold = c->manifold;
+    out->shape_a = ga2d__shape_id_of(w, c->shape_a);
+    out->shape_b = ga2d__shape_id_of(w, c->shape_b);
 }
 
 /* Appends an event; on failure the step reports OUT_OF_MEMORY. */
@@ -3261,7 +3356,7 @@ static int ga2d__contacts_compact(ga2d_world *w)
         if (old[i].next_free == -2) pool[k++] = old[i];
     if (n > 1) qsort(pool, (size_t)n, sizeof *pool, ga2d__cmp_contact_serial);
     memset(keys, 0, (size_t)cap * sizeof *keys);
-    for (i = 0; i < n; ++i) ga2d__pairs_put(keys, vals, cap, ga2d__pair_key(pool[i].a, pool[i].b), i);
+    for (i = 0; i < n; ++i) ga2d__pairs_put(keys, vals, cap, ga2d__pair_key(pool[i].shape_a, pool[i].shape_b), i);
     w->contacts = pool;
     w->contact_capacity = n;
     w->contact_used = n;
@@ -3325,13 +3420,16 @@ GA2D_API int ga2d_should_collide(ga2d_filter a, ga2d_filter b)
     return (a.category_bits & b.mask_bits) != 0 && (b.category_bits & a.mask_bits) != 0;
 }
 
-/* A pair gets a contact when the filter allows it and a dynamic body is in
-   it: static and kinematic bodies do not push each other. */
+/* A pair of shapes gets a contact when they are on two bodies, a dynamic
+   one among them (static and kinematic bodies do not push each other),
+   and the filters allow it. */
 static int ga2d__pair_wanted(const ga2d_world *w, int i, int j)
 {
-    const ga2d__body *a = &w->bodies[i], *b = &w->bodies[j];
+    const ga2d__shape *si = &w->shapes[i], *sj = &w->shapes[j];
+    const ga2d__body *a = &w->bodies[si->body], *b = &w->bodies[sj->body];
+    if (si->body == sj->body) return 0;
     if (a->type != GA2D_BODY_DYNAMIC && b->type != GA2D_BODY_DYNAMIC) return 0;
-    return ga2d_should_collide(a->filter, b->filter);
+    return ga2d_should_collide(si->filter, sj->filter);
 }
 
 /* ---------------------------------------------------------- proxies */
@@ -3350,21 +3448,29 @@ static GA2D__HOT ga2d_vec ga2d__body_origin(const ga2d__body *b) { return ga2d_v
 
 static GA2D__HOT ga2d_transform ga2d__body_xf(const ga2d__body *b) { return ga2d_transform_make(ga2d__body_origin(b), b->sim.q); }
 
-static ga2d__tree *ga2d__tree_of(ga2d_world *w, const ga2d__body *b) { return &w->trees[b->type != GA2D_BODY_STATIC]; }
-
-/* A body's fat box, as its tree holds it. */
-static ga2d_aabb ga2d__fat_box(const ga2d_world *w, const ga2d__body *b)
+/* The tree a shape's proxy lives in: static bodies' or moving ones'. */
+static ga2d__tree *ga2d__tree_of(const ga2d_world *w, const ga2d__shape *s)
 {
-    return w->trees[b->type != GA2D_BODY_STATIC].nodes[b->proxy].box;
+    return (ga2d__tree *)&w->trees[w->bodies[s->body].type != GA2D_BODY_STATIC];
 }
 
-/* Queue a body for pair finding (capacity is kept >= the body slots). */
-static void ga2d__buffer_move(ga2d_world *w, int slot)
+/* A shape's fat box, as its tree holds it. */
+static ga2d_aabb ga2d__fat_box(const ga2d_world *w, const ga2d__shape *s) { return ga2d__tree_of(w, s)->nodes[s->proxy].box; }
+
+/* Queue a shape for pair finding (capacity is kept >= the shape slots). */
+static void ga2d__buffer_move(ga2d_world *w, int shape)
 {
-    if (w->bodies[slot].in_move) return;
-    w->bodies[slot].in_move = 1;
+    if (w->shapes[shape].in_move) return;
+    w->shapes[shape].in_move = 1;
     GA2D_ASSERT(w->move_count < w->move_capacity);
-    w->move_buf[w->move_count++] = slot;
+    w->move_buf[w->move_count++] = shape;
+}
+
+/* Queue every shape of a body. */
+static void ga2d__buffer_body(ga2d_world *w, int slot)
+{
+    int s;
+    for (s = w->bodies[slot].shape_head; s >= 0; s = w->shapes[s].next) ga2d__buffer_move(w, s);
 }
 
 /* A body's fat-box margin: GA2D_AABB_MARGIN, or a quarter of its extent
@@ -3392,34 +3498,77 @@ static ga2d_aabb ga2d__reach_box(const ga2d__body *b, ga2d_aabb box, ga2d_real d
     return ga2d__fatten(box, swing);
 }
 
-/* Whether a body's fat box no longer holds all it can reach in this
-   step, and the box it needs then (*fat): the reach grown by the margin
-   and stretched along one more step of motion, so a body flying steadily
-   re-fits every other step.  A box more than four margins larger than
-   that (a fast body that has slowed) is re-fitted too, or it would hold
-   pairs it can no longer reach. */
-static int ga2d__needs_refit(const ga2d_world *w, const ga2d__body *b, ga2d_aabb *fat)
+/* The radius of a shape's round part (0: sharp). */
+static ga2d_real ga2d__shape_radius(const ga2d__shape *s)
 {
-    ga2d_aabb now = ga2d_polygon_aabb(&b->polygon, ga2d__body_xf(b));
-    ga2d_aabb reach = ga2d__reach_box(b, now, w->step.dt), box = ga2d__fat_box(w, b);
+    switch (s->geom.type) {
+    case GA2D_SHAPE_CIRCLE: return s->geom.as.circle.radius;
+    case GA2D_SHAPE_CAPSULE: return s->geom.as.capsule.radius;
+    case GA2D_SHAPE_POLYGON: return s->geom.as.polygon.radius;
+    default: return 0;
+    }
+}
+
+/* A shape's AABB with its body placed by x. */
+static ga2d_aabb ga2d__shape_aabb(const ga2d__shape *s, ga2d_transform x)
+{
+    const ga2d_geometry *g = &s->geom;
+    ga2d_aabb box;
+    ga2d_vec p1, p2;
+    ga2d_real r = 0;
+    switch (g->type) {
+    case GA2D_SHAPE_POLYGON: return ga2d_polygon_aabb(&g->as.polygon, x);
+    case GA2D_SHAPE_CIRCLE:
+        p1 = p2 = ga2d_transform_apply(x, g->as.circle.center);
+        r = g->as.circle.radius;
+        break;
+    case GA2D_SHAPE_CAPSULE:
+        p1 = ga2d_transform_apply(x, g->as.capsule.center1);
+        p2 = ga2d_transform_apply(x, g->as.capsule.center2);
+        r = g->as.capsule.radius;
+        break;
+    default:
+        p1 = ga2d_transform_apply(x, g->as.segment.point1);
+        p2 = ga2d_transform_apply(x, g->as.segment.point2);
+        break;
+    }
+    box.lower = ga2d_vec_make(p1.x < p2.x ? p1.x : p2.x, p1.y < p2.y ? p1.y : p2.y);
+    box.upper = ga2d_vec_make(p1.x > p2.x ? p1.x : p2.x, p1.y > p2.y ? p1.y : p2.y);
+    return ga2d__fatten(box, r);
+}
+
+/* Whether a shape's fat box no longer holds all its body can reach with
+   it in this step, and the box it needs then (*fat): the reach grown by
+   the margin and stretched along one more step of motion, so a body
+   flying steadily re-fits every other step.  A box more than four
+   margins larger than that (a fast body that has slowed) is re-fitted
+   too, or it would hold pairs it can no longer reach. */
+static int ga2d__needs_refit(const ga2d_world *w, const ga2d__body *b, const ga2d__shape *s, ga2d_aabb *fat)
+{
+    ga2d_aabb now = ga2d__shape_aabb(s, ga2d__body_xf(b));
+    ga2d_aabb reach = ga2d__reach_box(b, now, w->step.dt), box = ga2d__fat_box(w, s);
     ga2d_real margin = ga2d__margin(w, b);
     *fat = ga2d__fatten(ga2d__reach_box(b, reach, w->step.dt), margin);
     return !(ga2d_aabb_contains(box, reach) && ga2d_aabb_contains(ga2d__fatten(*fat, 4 * margin), box));
 }
 
-/* The tree takes a body's new fat box and the body is queued for pair
-   finding: then every pair the step can bring into touch exists before
-   the narrowphase runs. */
+/* The tree takes a body's shapes' new fat boxes and they are queued for
+   pair finding: then every pair the step can bring into touch exists
+   before the narrowphase runs. */
 static void ga2d__update_proxy(ga2d_world *w, int slot)
 {
     ga2d__body *b = &w->bodies[slot];
-    ga2d_aabb fat;
-    if (!ga2d__needs_refit(w, b, &fat)) return;
-    ga2d__tree_move(ga2d__tree_of(w, b), b->proxy, fat);
-    ga2d__buffer_move(w, slot);
+    int s;
+    for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
+        ga2d__shape *sh = &w->shapes[s];
+        ga2d_aabb fat;
+        if (!ga2d__needs_refit(w, b, sh, &fat)) continue;
+        ga2d__tree_move(ga2d__tree_of(w, sh), sh->proxy, fat);
+        ga2d__buffer_move(w, s);
+    }
 }
 
-/* Pair finding for one queued body: the query callback's context. */
+/* Pair finding for one queued shape: the query callback's context. */
 typedef struct ga2d__pair_query { ga2d_world *w; int self; } ga2d__pair_query;
 
 static void ga2d__pair_found(void *ctx, int other)
@@ -3429,7 +3578,7 @@ static void ga2d__pair_found(void *ctx, int other)
     int a = q->self < other ? q->self : other, b = q->self < other ? other : q->self;
     if (other == q->self) return;
     /* both queued: the one queued first (smaller slot) finds the pair */
-    if (w->bodies[other].in_move && other < q->self) return;
+    if (w->shapes[other].in_move && other < q->self) return;
     if (!ga2d__pair_wanted(w, a, b) || ga2d__pairs_find(w, ga2d__pair_key(a, b)) >= 0) return;
     if (!ga2d__grow(&w->mem, (void **)&w->new_pairs, &w->new_pair_capacity, w->new_pair_count + 1,
                     sizeof *w->new_pairs)) {
@@ -3504,21 +3653,21 @@ static void ga2d__destroy_body_contacts(ga2d_world *w, int slot, int only_unwant
     int link = ga2d__first_edge(w, slot);
     while (link >= 0) {
         int ci = link >> 1, next = ga2d__next_edge(w, link);
-        if (!only_unwanted || !ga2d__pair_wanted(w, w->contacts[ci].a, w->contacts[ci].b)) ga2d__destroy_contact(w, ci);
+        if (!only_unwanted || !ga2d__pair_wanted(w, w->contacts[ci].shape_a, w->contacts[ci].shape_b)) ga2d__destroy_contact(w, ci);
         link = next;
     }
 }
 
-/* ------------------------------------------------------------- queries */
 GA2D_API ga2d_result ga2d_body_set_filter(ga2d_world *w, ga2d_body_id id, ga2d_filter f)
 {
     ga2d__body *b;
     ga2d_result r = ga2d__writable(w, id, &b);
+    int s;
     if (r != GA2D_OK) return r;
     ga2d__wake(w, ga2d__slot(id));
-    b->filter = f;
+    for (s = b->shape_head; s >= 0; s = w->shapes[s].next) w->shapes[s].filter = f;
     ga2d__destroy_body_contacts(w, ga2d__slot(id), 1);
-    ga2d__buffer_move(w, ga2d__slot(id)); /* pairs it may now make */
+    ga2d__buffer_body(w, ga2d__slot(id)); /* pairs it may now make */
     return GA2D_OK;
 }
 
@@ -3527,15 +3676,23 @@ GA2D_API ga2d_filter ga2d_body_filter(const ga2d_world *w, ga2d_body_id id)
     const ga2d__body *b = ga2d__lookup(w, id);
     ga2d_filter f;
     memset(&f, 0, sizeof f);
-    return b ? b->filter : f;
+    return b && b->shape_head >= 0 ? w->shapes[b->shape_head].filter : f;
 }
 
 GA2D_API ga2d_aabb ga2d_body_fat_aabb(const ga2d_world *w, ga2d_body_id id)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
     ga2d_aabb box;
+    int s;
     memset(&box, 0, sizeof box);
-    return b ? ga2d__fat_box(w, b) : box;
+    if (!b) return box;
+    if (b->shape_head < 0) {
+        box.lower = box.upper = ga2d__body_origin(b);
+        return box;
+    }
+    box = ga2d__fat_box(w, &w->shapes[b->shape_head]);
+    for (s = w->shapes[b->shape_head].next; s >= 0; s = w->shapes[s].next) box = ga2d_aabb_union(box, ga2d__fat_box(w, &w->shapes[s]));
+    return box;
 }
 
 static int ga2d__list_contacts(const ga2d_world *w, ga2d_contact_data *out, int capacity, int touching_only)
@@ -3718,6 +3875,7 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     w->mem.ctx = w;
     w->tag = ga2d__world_tag(w);
     w->free_head = -1;
+    w->shape_free = -1;
     w->trees[0].root = w->trees[0].free_list = -1;
     w->trees[1].root = w->trees[1].free_list = -1;
     w->contact_free = -1;
@@ -3747,6 +3905,7 @@ static void ga2d__destroy_now(ga2d_world *w)
     w->destroy_pending = 1;
     w = &dead;
     GA2D__FREE_ARRAY(a, w->bodies, w->body_capacity);
+    GA2D__FREE_ARRAY(a, w->shapes, w->shape_capacity);
     GA2D__FREE_ARRAY(a, w->moving, w->moving_capacity);
     ga2d__tree_release(a, &w->trees[0]);
     ga2d__tree_release(a, &w->trees[1]);
@@ -4002,11 +4161,84 @@ static ga2d_result ga2d__polygon_remake(const ga2d_polygon *in, ga2d_polygon *ou
     return GA2D_OK;
 }
 
+/* A point a shape may have: finite (NOT_FINITE), within
+   GA2D_MAX_COORDINATE (TOO_LARGE); 0 when fine. */
+static ga2d_result ga2d__point_check(ga2d_vec p)
+{
+    if (!ga2d__finite_vec(p)) return GA2D_ERR_NOT_FINITE;
+    if (!(GA2D__FABS(p.x) <= GA2D__R(GA2D_MAX_COORDINATE) && GA2D__FABS(p.y) <= GA2D__R(GA2D_MAX_COORDINATE)))
+        return GA2D_ERR_TOO_LARGE;
+    return GA2D_OK;
+}
+
+/* A radius a shape may have: finite, not negative, not beyond
+   GA2D_MAX_COORDINATE. */
+static ga2d_result ga2d__radius_check(ga2d_real r)
+{
+    if (!ga2d__finite(r)) return GA2D_ERR_NOT_FINITE;
+    if (r < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    return r > GA2D__R(GA2D_MAX_COORDINATE) ? GA2D_ERR_TOO_LARGE : GA2D_OK;
+}
+
+/* Two ends that make a direction: apart by more than 64 eps of their
+   size (closer, the capsule is a circle and the segment nothing). */
+static int ga2d__ends_apart(ga2d_vec p1, ga2d_vec p2)
+{
+    ga2d_real size = GA2D__FABS(p1.x) + GA2D__FABS(p1.y) + GA2D__FABS(p2.x) + GA2D__FABS(p2.y);
+    return ga2d_vec_length(ga2d_vec_sub(p2, p1)) > 64 * GA2D__EPS * size && ga2d_vec_normalize(ga2d_vec_sub(p2, p1), NULL) != 0;
+}
+
+/* A shape's geometry and density on a body of the given type, checked
+   into *out (a polygon rebuilt from its vertices, as ga2d_polygon_make
+   would make it).  A dynamic body's shape of positive density must have a
+   mass and an inertia whose inverses are finite: the step divides by
+   both. */
+static ga2d_result ga2d__geometry_check(const ga2d_geometry *g, int body_type, ga2d_real density, ga2d_geometry *out)
+{
+    ga2d_geometry c;
+    ga2d_mass m;
+    ga2d_result r;
+    memset(&c, 0, sizeof c);
+    c.type = g->type;
+    switch (g->type) {
+    case GA2D_SHAPE_POLYGON:
+        r = ga2d__polygon_remake(&g->as.polygon, &c.as.polygon);
+        if (r == GA2D_OK) r = ga2d_polygon_mass_checked(&c.as.polygon, density, &m);
+        break;
+    case GA2D_SHAPE_CIRCLE:
+        c.as.circle = g->as.circle;
+        if ((r = ga2d__point_check(c.as.circle.center)) == GA2D_OK && (r = ga2d__radius_check(c.as.circle.radius)) == GA2D_OK)
+            r = ga2d_circle_mass_checked(&c.as.circle, density, &m);
+        break;
+    case GA2D_SHAPE_CAPSULE:
+        c.as.capsule = g->as.capsule;
+        if ((r = ga2d__point_check(c.as.capsule.center1)) == GA2D_OK && (r = ga2d__point_check(c.as.capsule.center2)) == GA2D_OK &&
+            (r = ga2d__radius_check(c.as.capsule.radius)) == GA2D_OK) {
+            r = ga2d__ends_apart(c.as.capsule.center1, c.as.capsule.center2) ? GA2D_OK : GA2D_ERR_INVALID_ARGUMENT;
+            if (r == GA2D_OK) r = ga2d_capsule_mass_checked(&c.as.capsule, density, &m);
+        }
+        break;
+    case GA2D_SHAPE_SEGMENT:
+        c.as.segment = g->as.segment;
+        if ((r = ga2d__point_check(c.as.segment.point1)) == GA2D_OK && (r = ga2d__point_check(c.as.segment.point2)) == GA2D_OK)
+            r = ga2d__ends_apart(c.as.segment.point1, c.as.segment.point2) && body_type != GA2D_BODY_DYNAMIC
+                    ? GA2D_OK : GA2D_ERR_INVALID_ARGUMENT;
+        memset(&m, 0, sizeof m);
+        break;
+    default: return GA2D_ERR_INVALID_ARGUMENT;
+    }
+    if (r != GA2D_OK) return r;
+    if (body_type == GA2D_BODY_DYNAMIC && density > 0 &&
+        (!(m.mass > 0) || !(m.inertia > 0) || !ga2d__finite(1 / m.mass) || !ga2d__finite(1 / m.inertia)))
+        return GA2D_ERR_DEGENERATE;
+    *out = c;
+    return GA2D_OK;
+}
+
 /* A resolved def's values against their bounds. */
 static ga2d_result ga2d__body_def_check(const ga2d_body_def *d)
 {
-    ga2d_polygon check;
-    ga2d_result r;
+    ga2d_geometry g;
     if ((int)d->type < 0 || (int)d->type >= GA2D_BODY_TYPE_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
     if (!(d->rotor.c == 0 && d->rotor.s == 0) && ga2d__finite(d->rotor.c) && ga2d__finite(d->rotor.s) &&
         ga2d_vec_normalize(ga2d_vec_make(d->rotor.c, d->rotor.s), NULL) == 0)
@@ -4020,17 +4252,11 @@ static ga2d_result ga2d__body_def_check(const ga2d_body_def *d)
     if (d->type == GA2D_BODY_DYNAMIC && !(d->density > 0)) return GA2D_ERR_INVALID_ARGUMENT;
     if (d->density < 0 || d->friction < 0 || d->restitution < 0 || d->linear_damping < 0 || d->angular_damping < 0)
         return GA2D_ERR_INVALID_ARGUMENT;
-    r = ga2d__polygon_remake(&d->polygon, &check);
-    if (r != GA2D_OK) return r;
-    if (d->type == GA2D_BODY_DYNAMIC) {
-        ga2d_mass m;
-        r = ga2d_polygon_mass_checked(&check, d->density, &m);
-        if (r != GA2D_OK) return r;
-        /* the step divides by both: their inverses must be finite too */
-        if (!(m.mass > 0) || !(m.inertia > 0) || !ga2d__finite(1 / m.mass) || !ga2d__finite(1 / m.inertia))
-            return GA2D_ERR_DEGENERATE;
-    }
-    return GA2D_OK;
+    if (d->polygon.count == 0) return GA2D_OK; /* no shape */
+    memset(&g, 0, sizeof g);
+    g.type = GA2D_SHAPE_POLYGON;
+    g.as.polygon = d->polygon;
+    return ga2d__geometry_check(&g, (int)d->type, d->density, &g);
 }
 
 GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *def)
@@ -4058,22 +4284,169 @@ static void ga2d__moving_remove(ga2d_world *w, int i)
     w->bodies[i].move_index = -1;
 }
 
+/* ------------------------------------------------------------ shapes */
+/* A shape's exact mass properties at density rho in its body's frame (a
+   segment has none). */
+static ga2d_mass ga2d__shape_mass(const ga2d__shape *s, ga2d_real rho)
+{
+    ga2d_mass m;
+    memset(&m, 0, sizeof m);
+    switch (s->geom.type) {
+    case GA2D_SHAPE_POLYGON: ga2d_polygon_mass_checked(&s->geom.as.polygon, rho, &m); break;
+    case GA2D_SHAPE_CIRCLE: ga2d_circle_mass_checked(&s->geom.as.circle, rho, &m); break;
+    case GA2D_SHAPE_CAPSULE: ga2d_capsule_mass_checked(&s->geom.as.capsule, rho, &m); break;
+    default: m.center = ga2d_vec_scale(ga2d_vec_add(s->geom.as.segment.point1, s->geom.as.segment.point2), GA2D__R(0.5)); break;
+    }
+    return m;
+}
+
+/* How far a shape reaches from the point c of its body's frame. */
+static ga2d_real ga2d__shape_reach(const ga2d__shape *s, ga2d_vec c)
+{
+    const ga2d_geometry *g = &s->geom;
+    ga2d_real d = 0, e;
+    int j;
+    switch (g->type) {
+    case GA2D_SHAPE_POLYGON:
+        for (j = 0; j < g->as.polygon.count; ++j) {
+            e = ga2d_vec_length(ga2d_vec_sub(g->as.polygon.vertices[j], c));
+            d = e > d ? e : d;
+        }
+        return d + g->as.polygon.radius;
+    case GA2D_SHAPE_CIRCLE: return ga2d_vec_length(ga2d_vec_sub(g->as.circle.center, c)) + g->as.circle.radius;
+    case GA2D_SHAPE_CAPSULE:
+        d = ga2d_vec_length(ga2d_vec_sub(g->as.capsule.center1, c));
+        e = ga2d_vec_length(ga2d_vec_sub(g->as.capsule.center2, c));
+        return (d > e ? d : e) + g->as.capsule.radius;
+    default:
+        d = ga2d_vec_length(ga2d_vec_sub(g->as.segment.point1, c));
+        e = ga2d_vec_length(ga2d_vec_sub(g->as.segment.point2, c));
+        return d > e ? d : e;
+    }
+}
+
+/* The body's mass, centre and inertia as the sum over its shapes, about
+   the first shape's centre c0 so that one shape's data are taken as they
+   are: M = sum m_i, C = c0 + sum m_i (c_i - c0) / M, and by parallel axes
+   I = sum I_i + m_i |c_i - C|^2.  Static and kinematic bodies take the
+   centroid of their shapes' areas (density 1) and no mass.  A dynamic body
+   whose shapes have no mass gets mass 1 and no inertia (it does not turn)
+   until a shape or ga2d_body_set_mass_data gives it some.  The origin
+   stays where it is (the centre moves with the rigid motion, so its
+   velocity becomes v + (C' - C) Omega), and the extent is refreshed. */
+static void ga2d__update_mass(ga2d_world *w, int slot, ga2d_vec origin)
+{
+    ga2d__body *b = &w->bodies[slot];
+    int dynamic = b->type == GA2D_BODY_DYNAMIC, k;
+    ga2d_real M = 0, I = 0;
+    ga2d_vec c0 = ga2d_vec_make(0, 0), C, center, moment = ga2d_vec_make(0, 0);
+    for (k = b->shape_head; k >= 0; k = w->shapes[k].next) {
+        const ga2d__shape *sh = &w->shapes[k];
+        ga2d_mass m = ga2d__shape_mass(sh, dynamic ? sh->density : 1);
+        if (k == b->shape_head) c0 = m.center;
+        M += m.mass;
+        if (k != b->shape_head) moment = ga2d_vec_add(moment, ga2d_vec_scale(ga2d_vec_sub(m.center, c0), m.mass));
+    }
+    C = M > 0 && b->shape_count > 1 ? ga2d_vec_add(c0, ga2d_vec_scale(moment, 1 / M)) : c0;
+    if (!(M > 0) && b->shape_count > 1) C = c0;
+    for (k = b->shape_head; k >= 0 && dynamic; k = w->shapes[k].next) {
+        const ga2d__shape *sh = &w->shapes[k];
+        ga2d_mass m = ga2d__shape_mass(sh, sh->density);
+        I += b->shape_count > 1 ? m.inertia + m.mass * ga2d_vec_length_sq(ga2d_vec_sub(m.center, C)) : m.inertia;
+    }
+    b->sim.local_center = C;
+    center = ga2d_vec_add(origin, ga2d_rotate(b->sim.q, C));
+    b->sim.v = ga2d_vec_add(b->sim.v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(center, b->sim.center)), b->sim.w));
+    b->sim.center = center;
+    b->sim.center0 = center;
+    b->sim.q0 = b->sim.q;
+    b->sim.dq = ga2d_rotor_identity();
+    b->mass = b->inertia = b->sim.inv_mass = b->sim.inv_inertia = 0;
+    if (dynamic) {
+        b->mass = M > 0 ? M : 1;
+        b->sim.inv_mass = 1 / b->mass;
+        b->inertia = M > 0 ? I : 0;
+        b->sim.inv_inertia = b->fixed_rotation || !(b->inertia > 0) ? 0 : 1 / b->inertia;
+        if (b->sim.inv_inertia == 0) b->sim.w = 0;
+    }
+    b->extent = 0;
+    for (k = b->shape_head; k >= 0; k = w->shapes[k].next) {
+        ga2d_real d = ga2d__shape_reach(&w->shapes[k], C);
+        b->extent = d > b->extent ? d : b->extent;
+    }
+    b->sim.field_valid = 0;
+}
+
+/* Room for one more shape, its queue entry and its proxy in the tree of
+   a body that moves or not: 0 when memory runs out (nothing changed). */
+static int ga2d__shape_reserve(ga2d_world *w, int moves)
+{
+    int slot = w->shape_free >= 0 ? w->shape_free : w->shape_used;
+    if (!ga2d__grow(&w->mem, (void **)&w->shapes, &w->shape_capacity, slot + 1, sizeof *w->shapes)) return 0;
+    if (!ga2d__grow(&w->mem, (void **)&w->move_buf, &w->move_capacity, w->shape_used + 1, sizeof *w->move_buf)) return 0;
+    return ga2d__tree_reserve(&w->mem, &w->trees[moves], 1);
+}
+
+/* A checked shape onto a body, in reserved room: appended to the body's
+   list; its proxy waits for ga2d__shape_proxies (the box needs the body's
+   mass). */
+static int ga2d__shape_add(ga2d_world *w, int slot, const ga2d_shape_def *def, const ga2d_geometry *g)
+{
+    ga2d__body *b = &w->bodies[slot];
+    ga2d__shape *sh;
+    int k = w->shape_free >= 0 ? w->shape_free : w->shape_used;
+    if (k == w->shape_used) {
+        w->shapes[k].generation = 0;
+        ++w->shape_used;
+    } else {
+        w->shape_free = w->shapes[k].next_free;
+    }
+    sh = &w->shapes[k];
+    {
+        uint32_t generation = sh->generation + 1;
+        memset(sh, 0, sizeof *sh);
+        sh->generation = generation ? generation : 1; /* 0 is the null id's */
+    }
+    sh->type = (int)g->type;
+    sh->geom = *g;
+    sh->body = slot;
+    sh->next = -1;
+    sh->next_free = -1;
+    sh->proxy = -1;
+    sh->density = def->density;
+    sh->friction = def->friction;
+    sh->restitution = def->restitution;
+    sh->filter = def->filter;
+    sh->user_data = def->user_data;
+    if (b->shape_tail >= 0) w->shapes[b->shape_tail].next = k;
+    else b->shape_head = k;
+    b->shape_tail = k;
+    ++b->shape_count;
+    ++w->shape_count;
+    return k;
+}
+
+/* A new shape's proxy: its fat box in its body's tree, queued for pairs. */
+static void ga2d__shape_proxy(ga2d_world *w, int k)
+{
+    ga2d__shape *sh = &w->shapes[k];
+    const ga2d__body *b = &w->bodies[sh->body];
+    sh->proxy = ga2d__tree_create(ga2d__tree_of(w, sh), ga2d__fatten(ga2d__shape_aabb(sh, ga2d__body_xf(b)), ga2d__margin(w, b)), k);
+    ga2d__buffer_move(w, k);
+}
+
 static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
 {
     ga2d_body_id id = ga2d_body_id_null();
-    ga2d_polygon poly;
-    ga2d_mass m;
     ga2d__body *b;
-    int slot, moves;
+    ga2d_geometry g;
+    int slot, moves, shape = -1;
     moves = def->type != GA2D_BODY_STATIC;
     /* every allocation first: a failure leaves the world as it was */
     slot = w->free_head >= 0 ? w->free_head : w->body_used;
     if (!ga2d__grow(&w->mem, (void **)&w->bodies, &w->body_capacity, slot + 1, sizeof *w->bodies)) return id;
-    if (!ga2d__grow(&w->mem, (void **)&w->move_buf, &w->move_capacity, w->body_used + 1, sizeof *w->move_buf))
-        return id;
     if (!ga2d__grow(&w->mem, (void **)&w->wake_queue, &w->wake_capacity, w->body_used + 1, sizeof *w->wake_queue))
         return id;
-    if (!ga2d__tree_reserve(&w->mem, &w->trees[moves], 1)) return id;
     if (moves) {
         /* room for every slot: sleeping bodies come back without allocating */
         if (!ga2d__grow(&w->mem, (void **)&w->moving, &w->moving_capacity, w->body_used + 1, sizeof *w->moving))
@@ -4083,9 +4456,12 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
             return id;
         if (!ga2d__reserve_refits(w, w->moving_capacity)) return id;
     }
-    ga2d__polygon_remake(&def->polygon, &poly); /* validated above */
-    /* the centroid for every type; mass and inertia only move dynamic bodies */
-    ga2d_polygon_mass_checked(&poly, def->type == GA2D_BODY_DYNAMIC ? def->density : 1, &m);
+    if (def->polygon.count > 0) {
+        if (!ga2d__shape_reserve(w, moves)) return id;
+        memset(&g, 0, sizeof g);
+        g.type = GA2D_SHAPE_POLYGON;
+        ga2d__polygon_remake(&def->polygon, &g.as.polygon); /* validated above */
+    }
 
     if (slot == w->body_used) {
         w->bodies[slot].generation = 0;
@@ -4100,15 +4476,9 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
         b->generation = generation ? generation : 1; /* 0 is the null id's */
     }
     b->type = (int)def->type;
-    b->polygon = poly;
-    b->sim.local_center = m.center;
+    b->shape_head = b->shape_tail = -1;
     b->sim.q = (def->rotor.c == 0 && def->rotor.s == 0) ? ga2d_rotor_identity() : ga2d_rotor_normalize(def->rotor);
-    b->sim.center = ga2d_vec_add(def->position, ga2d_rotate(b->sim.q, m.center));
-    b->sim.center0 = b->sim.center; /* bodies that never step keep their start pose */
-    b->sim.q0 = b->sim.q;
-    b->sim.dq = ga2d_rotor_identity();
-    b->friction = def->friction;
-    b->restitution = def->restitution;
+    b->sim.center = def->position;
     b->sim.linear_damping = def->linear_damping;
     b->sim.angular_damping = def->angular_damping;
     b->sim.gravity_scale = def->gravity_scale;
@@ -4117,30 +4487,25 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
     b->user_data = def->user_data;
     b->move_index = -1;
     b->next_free = -1;
-    if (def->type == GA2D_BODY_DYNAMIC) {
-        b->mass = m.mass;
-        b->sim.inv_mass = 1 / m.mass;
-        b->inertia = m.inertia;
-        b->sim.inv_inertia = b->fixed_rotation ? 0 : 1 / m.inertia;
+    b->contact_head = b->contact_tail = -1;
+    if (def->polygon.count > 0) {
+        ga2d_shape_def sd = ga2d_default_shape_def();
+        sd.density = def->density;
+        sd.friction = def->friction;
+        sd.restitution = def->restitution;
+        sd.filter = def->filter;
+        shape = ga2d__shape_add(w, slot, &sd, &g);
     }
-    {
-        int j;
-        for (j = 0; j < poly.count; ++j) {
-            ga2d_real d = ga2d_vec_length(ga2d_vec_sub(poly.vertices[j], m.center));
-            b->extent = d > b->extent ? d : b->extent;
-        }
-        b->extent += poly.radius;
-    }
+    /* bodies that never step keep their start pose */
+    ga2d__update_mass(w, slot, def->position);
     if (def->type != GA2D_BODY_DYNAMIC) b->awake = 1; /* only dynamic bodies sleep */
     if (moves) {
         b->sim.v = def->velocity;
         b->sim.w = (b->fixed_rotation && def->type == GA2D_BODY_DYNAMIC) ? 0 : def->angular_velocity;
+        if (b->sim.inv_inertia == 0 && def->type == GA2D_BODY_DYNAMIC) b->sim.w = 0;
         if (b->awake) ga2d__moving_add(w, slot);
     }
-    b->filter = def->filter;
-    b->contact_head = b->contact_tail = -1;
-    b->proxy = ga2d__tree_create(&w->trees[moves], ga2d__fatten(ga2d_polygon_aabb(&poly, ga2d__body_xf(b)), ga2d__margin(w, b)), slot);
-    ga2d__buffer_move(w, slot);
+    if (shape >= 0) ga2d__shape_proxy(w, shape);
     ++w->body_count;
     return ga2d__id_of(w, slot);
 }
@@ -4156,6 +4521,35 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
     id = ga2d__body_create(w, &d);
     ga2d__leave(w);
     return id;
+}
+
+/* A shape's proxy and queue entry go, and its slot is freed (its
+   contacts are gone already).  The queue entry goes with it: the slot,
+   reused before the next step, queues again, and the buffer is sized for
+   one entry per slot (destroy-create cycles between steps overflowed it). */
+static void ga2d__shape_free(ga2d_world *w, int k)
+{
+    ga2d__shape *sh = &w->shapes[k];
+    ga2d__body *b = &w->bodies[sh->body];
+    int prev = -1, j;
+    ga2d__tree_destroy(ga2d__tree_of(w, sh), sh->proxy);
+    if (sh->in_move)
+        for (j = 0; j < w->move_count; ++j)
+            if (w->move_buf[j] == k) {
+                w->move_buf[j] = w->move_buf[--w->move_count];
+                break;
+            }
+    for (j = b->shape_head; j != k; j = w->shapes[j].next) prev = j;
+    if (prev >= 0) w->shapes[prev].next = sh->next;
+    else b->shape_head = sh->next;
+    if (b->shape_tail == k) b->shape_tail = prev;
+    --b->shape_count;
+    --w->shape_count;
+    sh->in_move = 0;
+    sh->type = -1;
+    sh->generation = sh->generation + 1 ? sh->generation + 1 : 1;
+    sh->next_free = w->shape_free;
+    w->shape_free = k;
 }
 
 GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
@@ -4174,26 +4568,272 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
         }
     }
     ga2d__destroy_body_contacts(w, slot, 0);
-    ga2d__tree_destroy(ga2d__tree_of(w, b), b->proxy);
+    while (b->shape_head >= 0) ga2d__shape_free(w, b->shape_head);
     ga2d__moving_remove(w, slot);
-    if (b->in_move) {
-        /* its queue entry goes with it: the slot, reused before the next
-           step, queues again, and the buffer is sized for one entry per
-           slot (destroy-create cycles between steps overflowed it) */
-        int k;
-        for (k = 0; k < w->move_count; ++k)
-            if (w->move_buf[k] == slot) {
-                w->move_buf[k] = w->move_buf[--w->move_count];
-                break;
-            }
-    }
-    b->in_move = 0;
     b->type = -1;
     b->generation = b->generation + 1 ? b->generation + 1 : 1;
     b->next_free = w->free_head;
     w->free_head = slot;
     --w->body_count;
     return GA2D_OK;
+}
+
+GA2D_API ga2d_shape_id ga2d_shape_id_null(void) { ga2d_shape_id id; id.index1 = 0; id.generation = 0; return id; }
+GA2D_API int ga2d_shape_id_is_null(ga2d_shape_id id) { return id.index1 == 0; }
+GA2D_API int ga2d_shape_id_equal(ga2d_shape_id a, ga2d_shape_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+
+/* The live shape an id names, or NULL (as ga2d__lookup for bodies). */
+static ga2d__shape *ga2d__shape_lookup(const ga2d_world *w, ga2d_shape_id id)
+{
+    ga2d__shape *sh;
+    if (!w || id.index1 == 0 || id.index1 > (uint32_t)w->shape_used) return NULL;
+    sh = &w->shapes[id.index1 - 1];
+    if (sh->type < 0 || (sh->generation ^ w->tag) != id.generation) return NULL;
+    return sh;
+}
+
+/* Refuses a change while the world is stepping or in a callback. */
+static ga2d_result ga2d__shape_writable(const ga2d_world *w, ga2d_shape_id id, ga2d__shape **out)
+{
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->lock) return GA2D_ERR_LOCKED;
+    *out = ga2d__shape_lookup(w, id);
+    return *out ? GA2D_OK : GA2D_ERR_STALE_ID;
+}
+
+GA2D_API ga2d_shape_def ga2d_default_shape_def(void)
+{
+    ga2d_shape_def d;
+    memset(&d, 0, sizeof d);
+    d.density = GA2D__R(GA2D_DEFAULT_DENSITY);
+    d.friction = GA2D__R(GA2D_DEFAULT_FRICTION);
+    d.filter = ga2d_default_filter();
+    d.internal_cookie = GA2D_DEF_COOKIE;
+    return d;
+}
+
+/* The one place a shape def's zeros become defaults (see "Defs"). */
+static void ga2d__resolve_shape_def(const ga2d_shape_def *in, ga2d_shape_def *out)
+{
+    ga2d_shape_def dflt = ga2d_default_shape_def();
+    int stamped = in->internal_cookie == GA2D_DEF_COOKIE;
+    memset(out, 0, sizeof *out);
+    out->internal_cookie = GA2D_DEF_COOKIE;
+    GA2D__TAKE(density);
+    GA2D__TAKE(friction);
+    GA2D__TAKE(restitution);
+    GA2D__TAKE(filter);
+    GA2D__TAKE(user_data);
+}
+
+GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def,
+                                              const ga2d_geometry *g, ga2d_shape_id *out)
+{
+    ga2d_shape_def d;
+    ga2d_geometry clean;
+    ga2d__body *b;
+    ga2d_result r;
+    int k;
+    if (out) *out = ga2d_shape_id_null();
+    if (!w || !def || !g || !out) return GA2D_ERR_INVALID_ARGUMENT;
+    if ((r = ga2d__writable(w, body, &b)) != GA2D_OK) return r;
+    ga2d__resolve_shape_def(def, &d);
+    if (!ga2d__finite(d.density) || !ga2d__finite(d.friction) || !ga2d__finite(d.restitution)) return GA2D_ERR_NOT_FINITE;
+    if (d.density < 0 || d.friction < 0 || d.restitution < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    if ((r = ga2d__geometry_check(g, b->type, d.density, &clean)) != GA2D_OK) return r;
+    ga2d__enter(w);
+    if (!ga2d__shape_reserve(w, b->type != GA2D_BODY_STATIC)) {
+        ga2d__leave(w);
+        return GA2D_ERR_OUT_OF_MEMORY;
+    }
+    b = &w->bodies[ga2d__slot(body)];
+    k = ga2d__shape_add(w, ga2d__slot(body), &d, &clean);
+    ga2d__update_mass(w, ga2d__slot(body), ga2d__body_origin(b));
+    ga2d__shape_proxy(w, k);
+    ga2d__wake(w, ga2d__slot(body));
+    *out = ga2d__shape_id_of(w, k);
+    ga2d__leave(w);
+    return GA2D_OK;
+}
+
+/* The typed makers: a geometry each. */
+static ga2d_shape_id ga2d__shape_create(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_geometry *g)
+{
+    ga2d_shape_id id;
+    ga2d_shape_create_checked(w, body, def, g, &id);
+    return id;
+}
+
+GA2D_API ga2d_shape_id ga2d_shape_create_circle(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_circle *c)
+{
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = GA2D_SHAPE_CIRCLE;
+    if (c) g.as.circle = *c;
+    return c ? ga2d__shape_create(w, body, def, &g) : ga2d_shape_id_null();
+}
+
+GA2D_API ga2d_shape_id ga2d_shape_create_capsule(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_capsule *c)
+{
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = GA2D_SHAPE_CAPSULE;
+    if (c) g.as.capsule = *c;
+    return c ? ga2d__shape_create(w, body, def, &g) : ga2d_shape_id_null();
+}
+
+GA2D_API ga2d_shape_id ga2d_shape_create_polygon(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_polygon *p)
+{
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = GA2D_SHAPE_POLYGON;
+    if (p) g.as.polygon = *p;
+    return p ? ga2d__shape_create(w, body, def, &g) : ga2d_shape_id_null();
+}
+
+GA2D_API ga2d_shape_id ga2d_shape_create_segment(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_segment *sg)
+{
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = GA2D_SHAPE_SEGMENT;
+    if (sg) g.as.segment = *sg;
+    return sg ? ga2d__shape_create(w, body, def, &g) : ga2d_shape_id_null();
+}
+
+GA2D_API ga2d_result ga2d_shape_destroy(ga2d_world *w, ga2d_shape_id id, int update_body_mass)
+{
+    ga2d__shape *sh;
+    ga2d_result r = ga2d__shape_writable(w, id, &sh);
+    int k, slot, link;
+    if (r != GA2D_OK) return r;
+    k = (int)id.index1 - 1;
+    slot = sh->body;
+    /* its contacts end; what rested on it wakes */
+    link = ga2d__first_edge(w, slot);
+    while (link >= 0) {
+        int ci = link >> 1, next = ga2d__next_edge(w, link);
+        const ga2d__contact *ct = &w->contacts[ci];
+        if (ct->shape_a == k || ct->shape_b == k) {
+            if (ct->touching) ga2d__wake(w, ga2d__edge_other(w, link));
+            ga2d__destroy_contact(w, ci);
+        }
+        link = next;
+    }
+    ga2d__shape_free(w, k);
+    if (update_body_mass) ga2d__update_mass(w, slot, ga2d__body_origin(&w->bodies[slot]));
+    ga2d__wake(w, slot);
+    return GA2D_OK;
+}
+
+GA2D_API int ga2d_shape_is_valid(const ga2d_world *w, ga2d_shape_id id) { return ga2d__shape_lookup(w, id) != NULL; }
+
+GA2D_API ga2d_body_id ga2d_shape_body(const ga2d_world *w, ga2d_shape_id id)
+{
+    const ga2d__shape *sh = ga2d__shape_lookup(w, id);
+    return sh ? ga2d__id_of(w, sh->body) : ga2d_body_id_null();
+}
+
+GA2D_API ga2d_shape_type ga2d_shape_get_type(const ga2d_world *w, ga2d_shape_id id)
+{
+    const ga2d__shape *sh = ga2d__shape_lookup(w, id);
+    return sh ? (ga2d_shape_type)sh->type : GA2D_SHAPE_TYPE_COUNT;
+}
+
+GA2D_API ga2d_geometry ga2d_shape_geometry(const ga2d_world *w, ga2d_shape_id id)
+{
+    const ga2d__shape *sh = ga2d__shape_lookup(w, id);
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = GA2D_SHAPE_TYPE_COUNT;
+    return sh ? sh->geom : g;
+}
+
+GA2D_API void *ga2d_shape_user_data(const ga2d_world *w, ga2d_shape_id id)
+{
+    const ga2d__shape *sh = ga2d__shape_lookup(w, id);
+    return sh ? sh->user_data : NULL;
+}
+
+/* A material change reaches the shape's contacts at once. */
+static void ga2d__shape_materials(ga2d_world *w, int k)
+{
+    int link;
+    for (link = ga2d__first_edge(w, w->shapes[k].body); link >= 0; link = ga2d__next_edge(w, link)) {
+        ga2d__contact *ct = &w->contacts[link >> 1];
+        const ga2d__shape *pa = &w->shapes[ct->shape_a], *pb = &w->shapes[ct->shape_b];
+        if (ct->shape_a != k && ct->shape_b != k) continue;
+        ct->friction = GA2D__SQRT(pa->friction * pb->friction);
+        ct->restitution = pa->restitution > pb->restitution ? pa->restitution : pb->restitution;
+    }
+}
+
+GA2D_API ga2d_result ga2d_shape_set_friction(ga2d_world *w, ga2d_shape_id id, ga2d_real friction)
+{
+    ga2d__shape *sh;
+    ga2d_result r = ga2d__shape_writable(w, id, &sh);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(friction)) return GA2D_ERR_NOT_FINITE;
+    if (friction < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    sh->friction = friction;
+    ga2d__shape_materials(w, (int)id.index1 - 1);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_shape_set_restitution(ga2d_world *w, ga2d_shape_id id, ga2d_real restitution)
+{
+    ga2d__shape *sh;
+    ga2d_result r = ga2d__shape_writable(w, id, &sh);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(restitution)) return GA2D_ERR_NOT_FINITE;
+    if (restitution < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    sh->restitution = restitution;
+    ga2d__shape_materials(w, (int)id.index1 - 1);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_shape_set_filter(ga2d_world *w, ga2d_shape_id id, ga2d_filter f)
+{
+    ga2d__shape *sh;
+    ga2d_result r = ga2d__shape_writable(w, id, &sh);
+    int k = (int)id.index1 - 1, link;
+    if (r != GA2D_OK) return r;
+    ga2d__wake(w, sh->body);
+    sh->filter = f;
+    link = ga2d__first_edge(w, sh->body);
+    while (link >= 0) {
+        int ci = link >> 1, next = ga2d__next_edge(w, link);
+        const ga2d__contact *ct = &w->contacts[ci];
+        if ((ct->shape_a == k || ct->shape_b == k) && !ga2d__pair_wanted(w, ct->shape_a, ct->shape_b)) ga2d__destroy_contact(w, ci);
+        link = next;
+    }
+    ga2d__buffer_move(w, k); /* pairs it may now make */
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_filter ga2d_shape_filter(const ga2d_world *w, ga2d_shape_id id)
+{
+    const ga2d__shape *sh = ga2d__shape_lookup(w, id);
+    ga2d_filter f;
+    memset(&f, 0, sizeof f);
+    return sh ? sh->filter : f;
+}
+
+GA2D_API ga2d_aabb ga2d_shape_fat_aabb(const ga2d_world *w, ga2d_shape_id id)
+{
+    const ga2d__shape *sh = ga2d__shape_lookup(w, id);
+    ga2d_aabb box;
+    memset(&box, 0, sizeof box);
+    return sh ? ga2d__fat_box(w, sh) : box;
+}
+
+GA2D_API int ga2d_body_get_shapes(const ga2d_world *w, ga2d_body_id id, ga2d_shape_id *out, int capacity)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    int k, n = 0;
+    if (!b) return 0;
+    for (k = b->shape_head; k >= 0; k = w->shapes[k].next, ++n)
+        if (out && n < capacity) out[n] = ga2d__shape_id_of(w, k);
+    return n;
 }
 
 GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id) { return ga2d__lookup(w, id) != NULL; }
@@ -4299,7 +4939,11 @@ GA2D_API ga2d_real ga2d_body_kinetic_energy(const ga2d_world *w, ga2d_body_id id
 GA2D_API const ga2d_polygon *ga2d_body_polygon(const ga2d_world *w, ga2d_body_id id)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
-    return b ? &b->polygon : NULL;
+    int k;
+    if (!b) return NULL;
+    for (k = b->shape_head; k >= 0; k = w->shapes[k].next)
+        if (w->shapes[k].type == GA2D_SHAPE_POLYGON) return &w->shapes[k].geom.as.polygon;
+    return NULL;
 }
 
 GA2D_API void *ga2d_body_user_data(const ga2d_world *w, ga2d_body_id id)
@@ -4535,6 +5179,7 @@ struct ga2d__contact_constraint {
     int to_static;               /* the other body cannot move: stiffer */
     int count;
     int lane;                    /* group * GA2D__LANES + lane in the lane solver */
+    ga2d_real round_a, round_b;  /* the shapes' radii: their round parts (ga2d__point_now) */
     ga2d__cpoint p[2];
 };
 
@@ -4672,6 +5317,9 @@ struct ga2d__group {
     ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
+    int round;              /* a lane has a round shape: rax.. are core anchors, o.. their radii along n */
+    ga2d__w oax, oay, obx, oby;
+    ga2d__w tw;             /* +-1/2 where one side is round: the point slides with it (ga2d__point_now) */
 };
 
 /* A soft constraint seen by an implicit step (ga2d__make_soft). */
@@ -4808,6 +5456,8 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->inv_ib = ga2d__solver_moves(bb) ? b->inv_inertia : 0;
         cc->to_static = cc->inv_ma == 0 || cc->inv_mb == 0;
         cc->count = ct->manifold.count;
+        cc->round_a = ga2d__shape_radius(&w->shapes[ct->shape_a]);
+        cc->round_b = ga2d__shape_radius(&w->shapes[ct->shape_b]);
         /* anchors from the centres, taken from the origin-relative ones so
            that no large coordinates are subtracted */
         ca = ga2d_rotate(a->q, a->local_center);
@@ -4860,18 +5510,38 @@ static void ga2d__refresh_turns(ga2d__step_context *c, int begin, int end)
    shares, so that the impulses -P on A and +P on B have no moment and
    angular momentum about any point is kept.  Anchors are returned relative
    to each centre, built from the centre-to-centre vector so that nothing
-   large is subtracted. */
+   large is subtracted.  A round shape's anchor is a core point and its
+   radius along the normal: only the core point turns with the body (a
+   rolling disc's contact stays at its bottom, where carrying it round
+   would lift it by r (1 - cos) and let the disc sink). */
 static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__contact_constraint *c, const ga2d__body_sim *a, const ga2d__body_sim *b,
                                  const ga2d__cpoint *p, ga2d_vec *ra, ga2d_vec *rb)
 {
-    ga2d_vec ra1 = ga2d_rotate(a->dq, p->ra);
-    ga2d_vec rb1 = ga2d_rotate(b->dq, p->rb);
+    ga2d_vec ra1, rb1;
+    if (c->round_a != 0 || c->round_b != 0) {
+        ga2d_vec oa = ga2d_vec_scale(c->normal, c->round_a), ob = ga2d_vec_scale(c->normal, -c->round_b);
+        ra1 = ga2d_vec_add(ga2d_rotate(a->dq, ga2d_vec_sub(p->ra, oa)), oa);
+        rb1 = ga2d_vec_add(ga2d_rotate(b->dq, ga2d_vec_sub(p->rb, ob)), ob);
+    } else {
+        ra1 = ga2d_rotate(a->dq, p->ra);
+        rb1 = ga2d_rotate(b->dq, p->rb);
+    }
+    {
     ga2d_vec d = ga2d_vec_sub(b->center, a->center);
     ga2d_vec da = ga2d_vec_add(ga2d_vec_sub(a->center, a->center0), ga2d_vec_sub(ra1, p->ra));
     ga2d_vec db = ga2d_vec_add(ga2d_vec_sub(b->center, b->center0), ga2d_vec_sub(rb1, p->rb));
-    *ra = ga2d_vec_add(ra1, ga2d_vec_scale(ga2d_vec_sub(ga2d_vec_add(d, rb1), ra1), GA2D__R(0.5)));
+    ga2d_vec e = ga2d_vec_sub(ga2d_vec_add(d, rb1), ra1);
+    *ra = ga2d_vec_add(ra1, ga2d_vec_scale(e, GA2D__R(0.5)));
+    if ((c->round_a != 0) != (c->round_b != 0)) {
+        /* one side round: along the surfaces the point is the round
+           side's (a disc's impulses pass through its bottom, where the
+           midpoint of anchors sliding apart would lag and brake it) */
+        ga2d_vec et = ga2d_vec_sub(e, ga2d_vec_scale(c->normal, ga2d_dot(e, c->normal)));
+        *ra = ga2d_vec_add(*ra, ga2d_vec_scale(et, c->round_b != 0 ? GA2D__R(0.5) : GA2D__R(-0.5)));
+    }
     *rb = ga2d_vec_sub(*ra, d);
     return p->separation + ga2d_dot(ga2d_vec_sub(db, da), c->normal);
+    }
 }
 
 /* The lanes' bodies in registers. */
@@ -5059,10 +5729,21 @@ static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2
     ga2d__w rb1x = ga2d__wsub(ga2d__wmul(B->qc, g->rbx[k]), ga2d__wmul(B->qs, g->rby[k]));
     ga2d__w rb1y = ga2d__wadd(ga2d__wmul(B->qs, g->rbx[k]), ga2d__wmul(B->qc, g->rby[k]));
     ga2d__w dx = ga2d__wadd(g->dx, ga2d__wsub(B->dpx, A->dpx)), dy = ga2d__wadd(g->dy, ga2d__wsub(B->dpy, A->dpy));
+    if (g->round) { /* the radii along n, which do not turn (ga2d__point_now) */
+        ra1x = ga2d__wadd(ra1x, g->oax);
+        ra1y = ga2d__wadd(ra1y, g->oay);
+        rb1x = ga2d__wadd(rb1x, g->obx);
+        rb1y = ga2d__wadd(rb1y, g->oby);
+    }
     ga2d__w ex = ga2d__wsub(ga2d__wadd(dx, rb1x), ra1x), ey = ga2d__wsub(ga2d__wadd(dy, rb1y), ra1y);
     ga2d__w half = ga2d__wsplat(GA2D__R(0.5));
     r->ax = ga2d__wadd(ra1x, ga2d__wmul(ex, half));
     r->ay = ga2d__wadd(ra1y, ga2d__wmul(ey, half));
+    if (g->round) { /* along the surfaces, the round side's point */
+        ga2d__w en = ga2d__wdot(ex, ey, g->nx, g->ny);
+        r->ax = ga2d__wadd(r->ax, ga2d__wmul(g->tw, ga2d__wsub(ex, ga2d__wmul(en, g->nx))));
+        r->ay = ga2d__wadd(r->ay, ga2d__wmul(g->tw, ga2d__wsub(ey, ga2d__wmul(en, g->ny))));
+    }
     r->bx = ga2d__wsub(r->ax, dx);
     r->by = ga2d__wsub(r->ay, dy);
     return ga2d__wadd(g->adjust[k], ga2d__wdot(ex, ey, g->nx, g->ny));
@@ -5283,6 +5964,7 @@ static void ga2d__solve_baumgarte(ga2d__step_context *c, int begin, int end)
 static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constraint *c, ga2d_vec d, const ga2d__soft *sf,
                              const ga2d__contact_constraint *none)
 {
+    ga2d_vec oa, ob;
     int k;
     GA2D__LANE(g->nx, l) = c->normal.x;
     GA2D__LANE(g->ny, l) = c->normal.y;
@@ -5297,12 +5979,22 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->soft_mass, l) = sf->mass_scale;
     GA2D__LANE(g->soft_impulse, l) = sf->impulse_scale;
     GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
+    /* round shapes: core anchors that turn, radii along n that do not */
+    oa = ga2d_vec_scale(c->normal, c->round_a);
+    ob = ga2d_vec_scale(c->normal, -c->round_b);
+    if (c->round_a != 0 || c->round_b != 0) g->round = 1;
+    GA2D__LANE(g->oax, l) = oa.x;
+    GA2D__LANE(g->oay, l) = oa.y;
+    GA2D__LANE(g->obx, l) = ob.x;
+    GA2D__LANE(g->oby, l) = ob.y;
+    GA2D__LANE(g->tw, l) = (c->round_a != 0) == (c->round_b != 0) ? 0 : (c->round_b != 0 ? GA2D__R(0.5) : GA2D__R(-0.5));
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
-        GA2D__LANE(g->rax[k], l) = p->ra.x;
-        GA2D__LANE(g->ray[k], l) = p->ra.y;
-        GA2D__LANE(g->rbx[k], l) = p->rb.x;
-        GA2D__LANE(g->rby[k], l) = p->rb.y;
+        ga2d_vec ca = c->round_a != 0 ? ga2d_vec_sub(p->ra, oa) : p->ra, cb = c->round_b != 0 ? ga2d_vec_sub(p->rb, ob) : p->rb;
+        GA2D__LANE(g->rax[k], l) = ca.x;
+        GA2D__LANE(g->ray[k], l) = ca.y;
+        GA2D__LANE(g->rbx[k], l) = cb.x;
+        GA2D__LANE(g->rby[k], l) = cb.y;
         GA2D__LANE(g->adjust[k], l) =
             p->separation - ((d.x + (p->rb.x - p->ra.x)) * c->normal.x + (d.y + (p->rb.y - p->ra.y)) * c->normal.y);
         GA2D__LANE(g->has[k], l) = k < c->count ? 1 : 0;
@@ -5332,6 +6024,7 @@ static void ga2d__group_open(ga2d__group *g)
 {
     g->count = 0;
     g->skip = 0;
+    g->round = 0;
 }
 
 /* The first group from gi on with a free lane (or group_count): full
@@ -6089,63 +6782,73 @@ static void ga2d__bits_zero(uint64_t *bits, int n)
     if (n > 0) memset(bits, 0, (size_t)((n + 63) / 64) * sizeof *bits);
 }
 
-/* Stage, over the moving bodies: each whose fat box no longer holds what
-   it can reach in this step gets its new box, written into its own tree
-   leaf (a leaf's box is read by nothing else until ga2d__refit_proxies
-   moves it in the tree), and its bit. */
+/* Stage, over the moving bodies: a body any of whose shapes' fat boxes no
+   longer holds what it can reach in this step gets new boxes for all its
+   shapes, written into their own tree leaves (a leaf's box is read by
+   nothing else until ga2d__refit_proxies moves it in the tree), and its
+   bit. */
 static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     int k;
     for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
+        const ga2d__body *b = &w->bodies[w->moving[k]];
+        int s, refit = 0;
         ga2d_aabb fat;
-        if (!ga2d__needs_refit(w, b, &fat)) continue;
-        ga2d__tree_of(w, b)->nodes[b->proxy].box = fat;
+        for (s = b->shape_head; s >= 0 && !refit; s = w->shapes[s].next) refit = ga2d__needs_refit(w, b, &w->shapes[s], &fat);
+        if (!refit) continue;
+        for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
+            const ga2d__shape *sh = &w->shapes[s];
+            ga2d__needs_refit(w, b, sh, &fat);
+            ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
+        }
         c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
     }
 }
 
-/* Book-keeping: the marked bodies' boxes move in the tree, in the moving
-   list's order (the tree's shape depends on it), and the bodies queue
-   for pair finding; then the queue is sorted, without destroyed bodies
-   and repeats (a slot destroyed and reused). */
+/* Book-keeping: the marked bodies' new shape boxes move in the tree, in
+   the moving list's order (the tree's shape depends on it), and the
+   shapes queue for pair finding; then the queue is sorted, without
+   destroyed shapes and repeats (a slot destroyed and reused). */
 static void ga2d__refit_proxies(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     int k, n;
     for (k = ga2d__next_bit(c->refits, 0, w->moving_count); k >= 0; k = ga2d__next_bit(c->refits, k + 1, w->moving_count)) {
-        int slot = w->moving[k];
-        ga2d__body *b = &w->bodies[slot];
-        ga2d__tree *t = ga2d__tree_of(w, b);
-        ga2d__tree_move(t, b->proxy, t->nodes[b->proxy].box);
-        ga2d__buffer_move(w, slot);
+        int s;
+        for (s = w->bodies[w->moving[k]].shape_head; s >= 0; s = w->shapes[s].next) {
+            ga2d__shape *sh = &w->shapes[s];
+            ga2d__tree *t = ga2d__tree_of(w, sh);
+            ga2d__tree_move(t, sh->proxy, t->nodes[sh->proxy].box);
+            ga2d__buffer_move(w, s);
+        }
     }
     if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
     for (k = 0, n = 0; k < w->move_count; ++k) {
-        int slot = w->move_buf[k];
-        if (w->bodies[slot].type >= 0 && w->bodies[slot].in_move && (n == 0 || w->move_buf[n - 1] != slot))
-            w->move_buf[n++] = slot;
+        int s = w->move_buf[k];
+        if (w->shapes[s].type >= 0 && w->shapes[s].in_move && (n == 0 || w->move_buf[n - 1] != s))
+            w->move_buf[n++] = s;
     }
     w->move_count = n;
     w->new_pair_count = 0;
 }
 
-/* Stage, over the queued bodies: each queued body (moved out of its box,
-   created, teleported, refiltered) is queried against the moving tree
-   (and, if it moves, the static tree); the pairs it finds are listed. */
+/* Stage, over the queued shapes: each queued shape (moved out of its
+   box, created, teleported, refiltered) is queried against the moving
+   tree (and, if its body moves, the static tree); the pairs it finds are
+   listed. */
 static void ga2d__find_pairs(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     int k;
     for (k = begin; k < end; ++k) {
-        int slot = w->move_buf[k];
+        int s = w->move_buf[k];
         ga2d__pair_query q;
-        ga2d_aabb box = ga2d__fat_box(w, &w->bodies[slot]);
+        ga2d_aabb box = ga2d__fat_box(w, &w->shapes[s]);
         q.w = w;
-        q.self = slot;
+        q.self = s;
         ga2d__tree_query(&w->trees[1], box, ga2d__pair_found, &q);
-        if (w->bodies[slot].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
+        if (w->bodies[w->shapes[s].body].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
     }
 }
 
@@ -6161,10 +6864,10 @@ static void ga2d__create_pairs(ga2d__step_context *c)
         if (k > 0 && w->new_pairs[k - 1] == key) continue;
         if (!ga2d__create_contact(w, (int)(key >> 32), (int)(uint32_t)key)) c->error = GA2D_ERR_OUT_OF_MEMORY;
     }
-    /* out of memory: some pairs were not made, so every queued body stays
+    /* out of memory: some pairs were not made, so every queued shape stays
        queued and is searched again next step (pairs already made are kept) */
     if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
-    for (k = 0; k < w->move_count; ++k) w->bodies[w->move_buf[k]].in_move = 0;
+    for (k = 0; k < w->move_count; ++k) w->shapes[w->move_buf[k]].in_move = 0;
     w->move_count = 0;
 }
 
@@ -6188,7 +6891,7 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
         b = &w->bodies[ct->b];
         /* a pair with nothing awake that moves has nothing new to say */
         if (!(a->awake && a->type != GA2D_BODY_STATIC) && !(b->awake && b->type != GA2D_BODY_STATIC)) continue;
-        if (!ga2d_aabb_overlaps(ga2d__fat_box(w, a), ga2d__fat_box(w, b))) {
+        if (!ga2d_aabb_overlaps(ga2d__fat_box(w, &w->shapes[ct->shape_a]), ga2d__fat_box(w, &w->shapes[ct->shape_b]))) {
             ct->flags = GA2D__CONTACT_DISJOINT;
             c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
             continue;
@@ -6202,7 +6905,8 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
                speculative points only let bodies approach up to the gap */
             ga2d_real reach = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
                               GA2D__FABS(b->sim.w) * b->extent;
-            ga2d__collide(&a->polygon, xa, &b->polygon, xb, w->slop, w->speculative + reach * c->dt, &m);
+            ga2d__collide_geometries(&w->shapes[ct->shape_a].geom, xa, &w->shapes[ct->shape_b].geom, xb, w->slop,
+                                     w->speculative + reach * c->dt, &m);
             ga2d__hold_manifold(&ct->held, xa, xb, &m);
             for (i = 0; i < m.count; ++i)
                 for (j = 0; j < ct->manifold.count; ++j)
@@ -6581,23 +7285,23 @@ static void ga2d__update_sleep(ga2d__step_context *c)
 /* Layout: a header (magic, version, the build's real size and polygon
    size, the sizes of a body and a contact record, payload size, an FNV-1a
    checksum of the payload), then the payload: the world def (its pointers
-   left out), time and counters, every body slot, each live body's fat
-   box, and the live contacts oldest first.  Everything is written field
+   left out), time and counters, every body slot, every shape slot, each
+   live shape's fat box, and the live contacts oldest first.  Everything is written field
    by field, so the library's structs may change without changing the
    format, and no padding byte is saved.  Loading validates all of it into
    a new world and swaps it in only when everything checked out; derived
    structures (trees, the moving list, the pair set, each body's contact
-   list) are rebuilt, and since the lists are rebuilt in creation order and
+   list; its shape list is saved, as links, and checked) are rebuilt, and since the lists are rebuilt in creation order and
    pairs and the solver follow canonical orders, the loaded world steps bit
    for bit as the saved one. */
 /* 2: body fields reordered (0.6.0); 3: held manifolds (0.8.0); 4: the
    world's id tag, body and def fields (0.8.1); 5: the def's cookie; 6:
-   field by field (0.8.2); 7: a polygon's radius (0.9.0) */
+   field by field (0.8.2); 7: shapes (0.9.0) */
 #define GA2D__SNAP_VERSION 7u
 
 typedef struct ga2d__snap_header {
     char magic[8];
-    uint32_t version, real_size, max_vertices, body_size, contact_size, reserved;
+    uint32_t version, real_size, max_vertices, body_size, contact_size, shape_size;
     uint64_t payload_size, checksum;
 } ga2d__snap_header;
 
@@ -6739,7 +7443,9 @@ static void ga2d__io_body(ga2d__codec *k, ga2d__body *b)
     ga2d__io_real(k, &b->extent);
     ga2d__io_int(k, &b->awake);
     ga2d__io_int(k, &b->fixed_rotation);
-    ga2d__io_int(k, &b->in_move);
+    ga2d__io_int(k, &b->shape_head);
+    ga2d__io_int(k, &b->shape_tail);
+    ga2d__io_int(k, &b->shape_count);
     ga2d__io_vec(k, &b->sim.force);
     ga2d__io_real(k, &b->sim.torque);
     ga2d__io_real(k, &b->sim.gravity_scale);
@@ -6750,16 +7456,52 @@ static void ga2d__io_body(ga2d__codec *k, ga2d__body *b)
     ga2d__io_vec(k, &b->sim.field_accel);
     ga2d__io_real(k, &b->sim.field_alpha);
     ga2d__io_int(k, &b->sim.field_valid);
-    ga2d__io_real(k, &b->friction);
-    ga2d__io_real(k, &b->restitution);
-    ga2d__io_u32(k, &b->filter.category_bits);
-    ga2d__io_u32(k, &b->filter.mask_bits);
-    ga2d__io(k, &b->filter.group_index, sizeof b->filter.group_index);
     ga2d__io_real(k, &b->sleep_time);
     ga2d__io_real(k, &b->island_rest);
-    ga2d__io_polygon(k, &b->polygon);
     ga2d__io_u64(k, &user); /* restored as saved: see ga2d_world_snapshot_load */
     b->user_data = (void *)(uintptr_t)user;
+}
+
+/* A shape slot: a free one is its type, link and generation; a live one
+   its body and list link, queue flag, material, filter, user data and
+   geometry (its proxy is rebuilt). */
+static void ga2d__io_shape(ga2d__codec *k, ga2d__shape *s)
+{
+    uint64_t user = (uint64_t)(uintptr_t)s->user_data;
+    ga2d_geometry *g = &s->geom;
+    ga2d__io_int(k, &s->type);
+    ga2d__io_int(k, &s->next_free);
+    ga2d__io_u32(k, &s->generation);
+    if (s->type < 0) return;
+    ga2d__io_int(k, &s->body);
+    ga2d__io_int(k, &s->next);
+    ga2d__io_int(k, &s->in_move);
+    ga2d__io_real(k, &s->density);
+    ga2d__io_real(k, &s->friction);
+    ga2d__io_real(k, &s->restitution);
+    ga2d__io_u32(k, &s->filter.category_bits);
+    ga2d__io_u32(k, &s->filter.mask_bits);
+    ga2d__io(k, &s->filter.group_index, sizeof s->filter.group_index);
+    ga2d__io_u64(k, &user);
+    s->user_data = (void *)(uintptr_t)user;
+    g->type = (ga2d_shape_type)s->type;
+    switch (s->type) {
+    case GA2D_SHAPE_POLYGON: ga2d__io_polygon(k, &g->as.polygon); break;
+    case GA2D_SHAPE_CIRCLE:
+        ga2d__io_vec(k, &g->as.circle.center);
+        ga2d__io_real(k, &g->as.circle.radius);
+        break;
+    case GA2D_SHAPE_CAPSULE:
+        ga2d__io_vec(k, &g->as.capsule.center1);
+        ga2d__io_vec(k, &g->as.capsule.center2);
+        ga2d__io_real(k, &g->as.capsule.radius);
+        break;
+    case GA2D_SHAPE_SEGMENT:
+        ga2d__io_vec(k, &g->as.segment.point1);
+        ga2d__io_vec(k, &g->as.segment.point2);
+        break;
+    default: k->ok = 0; break;
+    }
 }
 
 static void ga2d__io_manifold(ga2d__codec *k, ga2d_manifold *m)
@@ -6785,8 +7527,8 @@ static void ga2d__io_manifold(ga2d__codec *k, ga2d_manifold *m)
 static void ga2d__io_contact(ga2d__codec *k, ga2d__contact *c)
 {
     int i;
-    ga2d__io_int(k, &c->a);
-    ga2d__io_int(k, &c->b);
+    ga2d__io_int(k, &c->shape_a);
+    ga2d__io_int(k, &c->shape_b);
     ga2d__io_u64(k, &c->serial);
     ga2d__io_int(k, &c->touching);
     ga2d__io_real(k, &c->friction);
@@ -6813,19 +7555,23 @@ static uint64_t ga2d__fnv1a(const unsigned char *p, size_t n)
     return h;
 }
 
-/* The header; the record sizes are those of a live body with a full
-   polygon and of a touching contact with two points, as written. */
+/* The header; the record sizes are those of a live body, of a live
+   polygon shape with a full polygon and of a touching contact with two
+   points, as written. */
 static ga2d__snap_header ga2d__snap_header_make(uint64_t payload)
 {
     ga2d__snap_header h;
     ga2d__codec k;
     ga2d__body b;
+    ga2d__shape s;
     ga2d__contact c;
     memset(&h, 0, sizeof h);
     k = ga2d__codec_writer(NULL);
     memset(&b, 0, sizeof b);
+    memset(&s, 0, sizeof s);
     memset(&c, 0, sizeof c);
-    b.polygon.count = GA2D_MAX_POLYGON_VERTICES;
+    s.type = GA2D_SHAPE_POLYGON;
+    s.geom.as.polygon.count = GA2D_MAX_POLYGON_VERTICES;
     c.touching = 1;
     c.manifold.count = 2;
     memcpy(h.magic, "GA2DSNAP", 8);
@@ -6834,6 +7580,9 @@ static ga2d__snap_header ga2d__snap_header_make(uint64_t payload)
     h.max_vertices = (uint32_t)GA2D_MAX_POLYGON_VERTICES;
     ga2d__io_body(&k, &b);
     h.body_size = (uint32_t)k.n;
+    k.n = 0;
+    ga2d__io_shape(&k, &s);
+    h.shape_size = (uint32_t)k.n;
     k.n = 0;
     ga2d__io_contact(&k, &c);
     h.contact_size = (uint32_t)k.n;
@@ -6873,10 +7622,20 @@ static void ga2d__snap_payload(const ga2d_world *w, ga2d__codec *k, ga2d__snap_o
         ga2d__body b = w->bodies[i];
         ga2d__io_body(k, &b);
     }
-    for (i = 0; i < w->body_used; ++i) {
-        const ga2d__body *b = &w->bodies[i];
-        if (b->type >= 0) {
-            ga2d_aabb box = ga2d__fat_box(w, b);
+    used = w->shape_used;
+    free_head = w->shape_free;
+    count = w->shape_count;
+    ga2d__io_int(k, &used);
+    ga2d__io_int(k, &free_head);
+    ga2d__io_int(k, &count);
+    for (i = 0; i < w->shape_used; ++i) {
+        ga2d__shape sh = w->shapes[i];
+        ga2d__io_shape(k, &sh);
+    }
+    for (i = 0; i < w->shape_used; ++i) {
+        const ga2d__shape *sh = &w->shapes[i];
+        if (sh->type >= 0) {
+            ga2d_aabb box = ga2d__fat_box(w, sh);
             ga2d__io_vec(k, &box.lower);
             ga2d__io_vec(k, &box.upper);
         }
@@ -6943,37 +7702,55 @@ GA2D_API ga2d_result ga2d_world_snapshot_save(const ga2d_world *w, void *buf, si
     return GA2D_OK;
 }
 
-/* A saved body is one the library could have made: a valid polygon as
-   ga2d_polygon_make would give it, finite state, a unit rotor, flags that
-   are flags.  (Free slots: only their link is used.) */
+/* A saved body is one the library could have made: finite state, a unit
+   rotor, flags that are flags.  (Free slots: only their link is used.) */
 static int ga2d__snap_body_ok(const ga2d__body *b, int body_used)
 {
     const ga2d_real *r[] = {&b->sim.center.x, &b->sim.center.y, &b->sim.q.c, &b->sim.q.s, &b->sim.v.x, &b->sim.v.y, &b->sim.w, &b->sim.force.x,
                             &b->sim.force.y, &b->sim.torque, &b->sim.field_force.x, &b->sim.field_force.y, &b->sim.field_torque,
                             &b->sim.field_accel.x, &b->sim.field_accel.y, &b->sim.field_alpha, &b->mass, &b->sim.inv_mass, &b->inertia,
-                            &b->sim.inv_inertia, &b->sim.local_center.x, &b->sim.local_center.y, &b->friction, &b->restitution,
+                            &b->sim.inv_inertia, &b->sim.local_center.x, &b->sim.local_center.y,
                             &b->sim.linear_damping, &b->sim.angular_damping, &b->sim.gravity_scale, &b->sim.center0.x, &b->sim.center0.y,
                             &b->sim.q0.c, &b->sim.q0.s, &b->sim.dq.c, &b->sim.dq.s, &b->extent, &b->sleep_time, &b->island_rest};
-    ga2d_polygon p;
     ga2d_real q2;
     size_t i;
-    int k;
     if (b->type < 0) return b->type == -1 && b->next_free >= -1 && b->next_free < body_used;
     if (b->type > GA2D_BODY_DYNAMIC || b->generation == 0) return 0;
     for (i = 0; i < sizeof r / sizeof r[0]; ++i)
         if (!ga2d__finite(*r[i])) return 0;
-    if (b->mass < 0 || b->sim.inv_mass < 0 || b->inertia < 0 || b->sim.inv_inertia < 0 || b->friction < 0 ||
-        b->restitution < 0 || b->sim.linear_damping < 0 || b->sim.angular_damping < 0 || b->extent < 0)
+    if (b->mass < 0 || b->sim.inv_mass < 0 || b->inertia < 0 || b->sim.inv_inertia < 0 || b->sim.linear_damping < 0 ||
+        b->sim.angular_damping < 0 || b->extent < 0)
         return 0;
     q2 = b->sim.q.c * b->sim.q.c + b->sim.q.s * b->sim.q.s;
     if (!(q2 > GA2D__R(0.99) && q2 < GA2D__R(1.01))) return 0;
-    if ((b->awake | b->fixed_rotation | b->in_move | b->sim.field_valid) & ~1) return 0;
-    if (b->polygon.count < 3 || b->polygon.count > GA2D_MAX_POLYGON_VERTICES) return 0;
-    if (ga2d__polygon_remake(&b->polygon, &p) != GA2D_OK || p.count != b->polygon.count) return 0;
-    for (k = 0; k < p.count; ++k)
-        if (memcmp(&p.vertices[k], &b->polygon.vertices[k], sizeof p.vertices[k]) != 0 ||
-            memcmp(&p.normals[k], &b->polygon.normals[k], sizeof p.normals[k]) != 0)
-            return 0;
+    if ((b->awake | b->fixed_rotation | b->sim.field_valid) & ~1) return 0;
+    return 1;
+}
+
+/* A saved shape is one the library could have made: a geometry its body
+   may carry, as ga2d__geometry_check leaves it (a polygon exactly as
+   ga2d_polygon_make gives it), material and flags that are so.  (Free
+   slots: only their link is used.) */
+static int ga2d__snap_shape_ok(const ga2d_world *t, const ga2d__shape *s, int shape_used)
+{
+    ga2d_geometry g;
+    if (s->type < 0) return s->type == -1 && s->next_free >= -1 && s->next_free < shape_used;
+    if (s->type > GA2D_SHAPE_SEGMENT || s->generation == 0 || s->body < 0 || s->body >= t->body_used ||
+        t->bodies[s->body].type < 0 || s->next < -1 || s->next >= shape_used || (s->in_move & ~1))
+        return 0;
+    if (!ga2d__finite(s->density) || !ga2d__finite(s->friction) || !ga2d__finite(s->restitution) || s->density < 0 ||
+        s->friction < 0 || s->restitution < 0)
+        return 0;
+    if (ga2d__geometry_check(&s->geom, t->bodies[s->body].type, s->density, &g) != GA2D_OK) return 0;
+    if (s->type == GA2D_SHAPE_POLYGON) {
+        const ga2d_polygon *p = &g.as.polygon, *q = &s->geom.as.polygon;
+        int k;
+        if (p->count != q->count) return 0;
+        for (k = 0; k < p->count; ++k)
+            if (memcmp(&p->vertices[k], &q->vertices[k], sizeof p->vertices[k]) != 0 ||
+                memcmp(&p->normals[k], &q->normals[k], sizeof p->normals[k]) != 0)
+                return 0;
+    }
     return 1;
 }
 
@@ -6983,12 +7760,11 @@ static int ga2d__snap_box_ok(ga2d_aabb box)
            ga2d__finite(box.upper.y) && box.lower.x <= box.upper.x && box.lower.y <= box.upper.y;
 }
 
-/* Reads the bodies into t (a new world): slots, the free list, the trees,
-   the moving list and the pair-finding queue.  0: bad snapshot, -1: out
-   of memory. */
+/* Reads the bodies into t (a new world): slots, the free list and the
+   moving list.  0: bad snapshot, -1: out of memory. */
 static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
 {
-    int used = 0, free_head = 0, count = 0, i, live = 0, frees = 0, moves = 0;
+    int used = 0, free_head = 0, count = 0, i, live = 0, frees = 0;
     ga2d__io_int(k, &used);
     ga2d__io_int(k, &free_head);
     ga2d__io_int(k, &count);
@@ -6998,7 +7774,6 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
         return 0;
     if (used == 0) return free_head == -1 && count == 0;
     if (!ga2d__grow(&t->mem, (void **)&t->bodies, &t->body_capacity, used, sizeof *t->bodies) ||
-        !ga2d__grow(&t->mem, (void **)&t->move_buf, &t->move_capacity, used, sizeof *t->move_buf) ||
         !ga2d__grow(&t->mem, (void **)&t->wake_queue, &t->wake_capacity, used, sizeof *t->wake_queue) ||
         !ga2d__grow(&t->mem, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving))
         return -1;
@@ -7012,10 +7787,7 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
         ga2d__body *b = &t->bodies[i];
         ga2d__io_body(k, b);
         if (!k->ok || !ga2d__snap_body_ok(b, used)) return 0;
-        if (b->type >= 0) {
-            ++live;
-            moves += b->type != GA2D_BODY_STATIC;
-        }
+        live += b->type >= 0;
     }
     if (live != count) return 0;
     /* the free list: free slots only, each once (the wake queue, a slot
@@ -7026,23 +7798,91 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
         t->wake_queue[i] = 1;
     }
     if (frees != used - count) return 0;
+    for (i = 0; i < used; ++i) {
+        ga2d__body *b = &t->bodies[i];
+        b->island = i;
+        b->move_index = -1;
+        b->contact_head = b->contact_tail = -1;
+        if (b->type < 0) continue;
+        if (b->type != GA2D_BODY_STATIC && b->awake) ga2d__moving_add(t, i);
+    }
+    return 1;
+}
+
+/* Each live body's shape list: its own live shapes, each once, head to
+   tail, its count; and every live shape on one.  The wake queue, one
+   entry per body, is free to count them meanwhile (0 on success). */
+static int ga2d__snap_lists_ok(ga2d_world *t)
+{
+    int i, seen = 0;
+    for (i = 0; i < t->body_used; ++i) {
+        const ga2d__body *b = &t->bodies[i];
+        int s, n = 0, last = -1;
+        if (b->type < 0) continue;
+        if (b->shape_head < -1 || b->shape_head >= t->shape_used || b->shape_count < 0) return 0;
+        for (s = b->shape_head; s >= 0; s = t->shapes[s].next) {
+            if (t->shapes[s].type < 0 || t->shapes[s].body != i || ++n > b->shape_count) return 0;
+            last = s;
+        }
+        if (n != b->shape_count || last != b->shape_tail) return 0;
+        seen += n;
+    }
+    return seen == t->shape_count;
+}
+
+/* Reads the shapes into t after its bodies: slots, the free list, the
+   bodies' lists, the trees and the pair-finding queue.  0: bad snapshot,
+   -1: out of memory. */
+static int ga2d__snap_read_shapes(ga2d_world *t, ga2d__codec *k)
+{
+    int used = 0, free_head = 0, count = 0, i, live = 0, frees = 0, moves = 0, *seen;
+    ga2d__io_int(k, &used);
+    ga2d__io_int(k, &free_head);
+    ga2d__io_int(k, &count);
+    if (!k->ok || used < 0 || used > GA2D__MAX_BODIES || count < 0 || count > used || free_head < -1 ||
+        free_head >= used || (size_t)used > (k->n - k->at) / (2 * sizeof(int) + sizeof(uint32_t)))
+        return 0;
+    if (used == 0) return free_head == -1 && count == 0 && ga2d__snap_lists_ok(t);
+    if (!ga2d__grow(&t->mem, (void **)&t->shapes, &t->shape_capacity, used, sizeof *t->shapes) ||
+        !ga2d__grow(&t->mem, (void **)&t->move_buf, &t->move_capacity, used, sizeof *t->move_buf))
+        return -1;
+    memset(t->shapes, 0, (size_t)used * sizeof *t->shapes);
+    t->shape_used = used;
+    t->shape_count = count;
+    t->shape_free = free_head;
+    for (i = 0; i < used; ++i) {
+        ga2d__shape *sh = &t->shapes[i];
+        ga2d__io_shape(k, sh);
+        if (!k->ok || !ga2d__snap_shape_ok(t, sh, used)) return 0;
+        if (sh->type >= 0) {
+            ++live;
+            moves += t->bodies[sh->body].type != GA2D_BODY_STATIC;
+        }
+    }
+    if (live != count || !ga2d__snap_lists_ok(t)) return 0;
+    /* the free list: free slots only, each once (the queue, a slot each,
+       holds which were met) */
+    seen = t->move_buf;
+    memset(seen, 0, (size_t)used * sizeof *seen);
+    for (i = free_head; i >= 0; i = t->shapes[i].next_free) {
+        if (t->shapes[i].type != -1 || seen[i] || ++frees > used - count) return 0;
+        seen[i] = 1;
+    }
+    if (frees != used - count) return 0;
     if (!ga2d__tree_reserve(&t->mem, &t->trees[0], count - moves) ||
         !ga2d__tree_reserve(&t->mem, &t->trees[1], moves))
         return -1;
     for (i = 0; i < used; ++i) {
-        ga2d__body *b = &t->bodies[i];
+        ga2d__shape *sh = &t->shapes[i];
         ga2d_aabb box;
-        int queued = b->in_move;
-        b->island = i;
-        b->move_index = -1;
-        b->contact_head = b->contact_tail = -1;
-        b->in_move = 0;
-        if (b->type < 0) continue;
+        int queued = sh->in_move;
+        sh->in_move = 0;
+        sh->proxy = -1;
+        if (sh->type < 0) continue;
         ga2d__io_vec(k, &box.lower);
         ga2d__io_vec(k, &box.upper);
         if (!k->ok || !ga2d__snap_box_ok(box)) return 0;
-        b->proxy = ga2d__tree_create(&t->trees[b->type != GA2D_BODY_STATIC], box, i);
-        if (b->type != GA2D_BODY_STATIC && b->awake) ga2d__moving_add(t, i);
+        sh->proxy = ga2d__tree_create(ga2d__tree_of(t, sh), box, i);
         if (queued) ga2d__buffer_move(t, i);
     }
     return 1;
@@ -7091,7 +7931,9 @@ static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__codec *k)
         memset(&c, 0, sizeof c);
         ga2d__io_contact(k, &c);
         if (!k->ok) return 0;
-        if (c.a < 0 || c.b >= t->body_used || c.a >= c.b || t->bodies[c.a].type < 0 || t->bodies[c.b].type < 0) return 0;
+        if (c.shape_a < 0 || c.shape_b >= t->shape_used || c.shape_a >= c.shape_b || t->shapes[c.shape_a].type < 0 ||
+            t->shapes[c.shape_b].type < 0 || !ga2d__pair_wanted(t, c.shape_a, c.shape_b))
+            return 0;
         if ((i > 0 && c.serial <= last) || c.serial >= serial) return 0;
         if (c.touching != (c.manifold.count > 0)) return 0;
         if (c.touching && !ga2d__snap_held_ok(&c.held, c.manifold.count)) return 0;
@@ -7099,8 +7941,8 @@ static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__codec *k)
             c.friction < 0 || c.restitution < 0)
             return 0;
         if (!ga2d__pairs_reserve(t)) return -1;
-        if (ga2d__pairs_find(t, ga2d__pair_key(c.a, c.b)) >= 0) return 0; /* a pair twice */
-        if (!ga2d__create_contact(t, c.a, c.b)) return -1;
+        if (ga2d__pairs_find(t, ga2d__pair_key(c.shape_a, c.shape_b)) >= 0) return 0; /* a pair twice */
+        if (!ga2d__create_contact(t, c.shape_a, c.shape_b)) return -1;
         ct = &t->contacts[t->contact_used - 1];
         ct->manifold = c.manifold;
         ct->touching = c.touching;
@@ -7159,6 +8001,7 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
     ga2d__io_u32(&r, &t->tag);
     ok = r.ok && t->time == t->time && ga2d__finite(t->step.dt) && t->step.dt > 0;
     if (ok) ok = ga2d__snap_read_bodies(t, &r);
+    if (ok == 1) ok = ga2d__snap_read_shapes(t, &r);
     if (ok == 1) ok = ga2d__snap_read_contacts(t, &r);
     if (ok == 1 && r.at != r.n) ok = 0;
     --t->depth;
@@ -7219,19 +8062,46 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *cw, const ga2d_debug_draw
     return GA2D_OK;
 }
 
-/* Every live body in slot order, then the touching contacts' points.  A
-   world destroyed from a callback gets no further callback: each call is
-   made only while no destruction is pending. */
+/* One shape of a body placed by x. */
+static void ga2d__draw_shape(const ga2d_world *w, const ga2d_debug_draw *d, int slot, const ga2d__shape *sh, ga2d_transform x)
+{
+    const ga2d_geometry *g = &sh->geom;
+    uint32_t color = ga2d__state_color(&w->bodies[slot]);
+    switch (g->type) {
+    case GA2D_SHAPE_POLYGON:
+        if (d->polygon) d->polygon(ga2d__id_of(w, slot), &g->as.polygon, x, color, d->context);
+        break;
+    case GA2D_SHAPE_CIRCLE:
+        if (d->circle)
+            d->circle(ga2d__id_of(w, slot), ga2d_transform_apply(x, g->as.circle.center), g->as.circle.radius,
+                      ga2d_rotate(x.q, ga2d_vec_make(1, 0)), color, d->context);
+        break;
+    case GA2D_SHAPE_CAPSULE:
+        if (d->capsule)
+            d->capsule(ga2d__id_of(w, slot), ga2d_transform_apply(x, g->as.capsule.center1),
+                       ga2d_transform_apply(x, g->as.capsule.center2), g->as.capsule.radius, color, d->context);
+        break;
+    default:
+        if (d->segment)
+            d->segment(ga2d_transform_apply(x, g->as.segment.point1), ga2d_transform_apply(x, g->as.segment.point2), color, d->context);
+        break;
+    }
+}
+
+/* Every live body in slot order, its shapes in their order, then the
+   touching contacts' points.  A world destroyed from a callback gets no
+   further callback: each call is made only while no destruction is
+   pending. */
 static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
 {
-    int s, ci, k;
+    int s, ci, k, j;
     for (s = 0; s < w->body_used && !w->destroy_pending; ++s) {
         const ga2d__body *b = &w->bodies[s];
         if (b->type < 0) continue;
-        if (d->draw_bodies && d->polygon && !w->destroy_pending)
-            d->polygon(ga2d__id_of(w, s), &b->polygon, ga2d__body_xf(b), ga2d__state_color(b), d->context);
-        if (d->draw_aabbs && d->aabb && !w->destroy_pending)
-            d->aabb(ga2d__fat_box(w, b), GA2D_COLOR_AABB, d->context);
+        for (j = b->shape_head; j >= 0 && d->draw_bodies && !w->destroy_pending; j = w->shapes[j].next)
+            ga2d__draw_shape(w, d, s, &w->shapes[j], ga2d__body_xf(b));
+        for (j = b->shape_head; j >= 0 && d->draw_aabbs && d->aabb && !w->destroy_pending; j = w->shapes[j].next)
+            d->aabb(ga2d__fat_box(w, &w->shapes[j]), GA2D_COLOR_AABB, d->context);
         if (d->draw_centers && d->point && !w->destroy_pending)
             d->point(b->sim.center, GA2D__R(0.05) * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
     }
