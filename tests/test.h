@@ -61,6 +61,7 @@ void suite_extremes(void);
 void suite_hostile(void);
 void suite_shape_mass(void);
 void suite_shape_collide(void);
+void suite_shape_world(void);
 
 #ifdef __cplusplus
 }

@@ -89,6 +89,7 @@ int main(int argc, char **argv)
     suite_shape_collide();
     suite_contacts();
     suite_solver();
+    suite_shape_world();
     suite_determinism();
     suite_snapshot();
     suite_containment();
