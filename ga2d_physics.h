@@ -121,11 +121,18 @@
      ga2d_world_def wd = ga2d_default_world_def();   // gravity (0,-10), 4 substeps
      ga2d_world *world = ga2d_world_create(&wd);     // NULL on failure
 
-     ga2d_body_def bd = ga2d_default_body_def();     // static 1 m box
+     ga2d_body_def bd = ga2d_default_body_def();     // static, no shape
      bd.type = GA2D_BODY_DYNAMIC;
      bd.position = ga2d_vec_make(0, 4);
-     bd.polygon = ga2d_polygon_box(0.5f, 0.25f);
+     bd.polygon = ga2d_polygon_box(0.5f, 0.25f);     // its first shape
      ga2d_body_id box = ga2d_body_create(world, &bd); // null id on failure
+
+     ga2d_body_def bd2 = ga2d_default_body_def();    // a ball: shapes by hand
+     bd2.type = GA2D_BODY_DYNAMIC;
+     ga2d_body_id ball = ga2d_body_create(world, &bd2);
+     ga2d_shape_def sd = ga2d_default_shape_def();   // density, friction, filter
+     ga2d_circle disc = {{0, 0}, 0.25f};
+     ga2d_shape_create_circle(world, ball, &sd, &disc);
 
      for (int i = 0; i < 60; ++i) ga2d_world_step(world, 1.0f / 60);
      ga2d_vec p = ga2d_body_position(world, box);    // the body origin
@@ -667,9 +674,6 @@ typedef void ga2d_force_fn(ga2d_world *world, void *context);
 #ifndef GA2D_DEFAULT_FRICTION
 #define GA2D_DEFAULT_FRICTION 0.6             /* Coulomb coefficient */
 #endif
-#ifndef GA2D_DEFAULT_BOX_HALF_EXTENT
-#define GA2D_DEFAULT_BOX_HALF_EXTENT 0.5      /* m: the default body's box */
-#endif
 /* Caps on motion, as Box2D's: a body faster than this, or turning more
    per substep, is tunnelling anyway; the step caps it and counts it in
    counters.speed_caps. */
@@ -733,7 +737,9 @@ typedef struct ga2d_body_def {
     ga2d_rotor rotor;           /* orientation; zero means identity */
     ga2d_vec velocity;          /* of the centre of mass, m/s */
     ga2d_real angular_velocity; /* w of Omega = w e12, rad/s */
-    ga2d_polygon polygon;       /* in the body frame; default a 1 m box */
+    ga2d_polygon polygon;       /* in the body frame: its first shape, made with
+                                   the def's density, friction, restitution and
+                                   filter; count 0 (the default): no shape */
     ga2d_real density;          /* kg/m^2; default 1 */
     ga2d_real friction;         /* default 0.6 */
     ga2d_real restitution;      /* default 0 */
@@ -4107,7 +4113,6 @@ GA2D_API ga2d_body_def ga2d_default_body_def(void)
     memset(&d, 0, sizeof d);
     d.type = GA2D_BODY_STATIC;
     d.rotor = ga2d_rotor_identity();
-    d.polygon = ga2d_polygon_box(GA2D__R(GA2D_DEFAULT_BOX_HALF_EXTENT), GA2D__R(GA2D_DEFAULT_BOX_HALF_EXTENT));
     d.density = GA2D__R(GA2D_DEFAULT_DENSITY);
     d.friction = GA2D__R(GA2D_DEFAULT_FRICTION);
     d.gravity_scale = 1;

@@ -73,6 +73,7 @@ static int drop(ga2d_integrator integrator, svgw *rec, double height[BOXES][REBO
 
     /* the boxes, 2 m apart, their bottom faces at y = H0 */
     bd = ga2d_default_body_def(); /* a 1 m box */
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     bd.type = GA2D_BODY_DYNAMIC;
     for (i = 0; i < BOXES; ++i) {
         bd.position = ga2d_vec_make((ga2d_real)(2 * i - 2), (ga2d_real)(H0 + 0.5));

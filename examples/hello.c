@@ -14,6 +14,7 @@ int main(void)
     ga2d_body_create(world, &ground);
 
     ga2d_body_def bd = ga2d_default_body_def(); /* a 1 m box */
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     bd.type = GA2D_BODY_DYNAMIC;
     bd.position = ga2d_vec_make(0, 4);
     ga2d_body_id box = ga2d_body_create(world, &bd);

@@ -46,6 +46,7 @@ int main(int argc, char **argv)
     ga2d_world_def wd = ga2d_default_world_def(); /* gravity (0, -10) */
     ga2d_world *world = ga2d_world_create(&wd);
     ga2d_body_def bd = ga2d_default_body_def();
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     ga2d_body_id block[BLOCKS];
     ga2d_vec start[BLOCKS];
     double v1[BLOCKS], v2[BLOCKS];
@@ -69,6 +70,7 @@ int main(int argc, char **argv)
     /* the blocks, turned with the slope and resting on its top face: in the
        slope's frame at (up, 1), half a block above its top face at 0.5 */
     bd = ga2d_default_body_def(); /* a 1 m box */
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     bd.type = GA2D_BODY_DYNAMIC;
     bd.rotor = q;
     for (i = 0; i < BLOCKS; ++i) {

@@ -157,6 +157,7 @@ static void oscillator(void)
 {
     const double seconds = 10;
     ga2d_body_def bd = ga2d_default_body_def();
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     int i, s;
     bd.type = GA2D_BODY_DYNAMIC; /* the default 1 m box, density 1: m = 1 */
     bd.position = ga2d_vec_make(1, 0);
@@ -265,6 +266,7 @@ static void spin(void)
 {
     const double omega = 10, seconds = 10;
     ga2d_body_def bd = ga2d_default_body_def();
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     int i, j, s;
     bd.type = GA2D_BODY_DYNAMIC;
     bd.angular_velocity = (ga2d_real)omega;

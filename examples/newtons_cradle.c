@@ -36,6 +36,7 @@ int main(int argc, char **argv)
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *world = ga2d_world_create(&wd);
     ga2d_body_def bd = ga2d_default_body_def();
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     ga2d_body_id box[BOXES];
     double p0 = 0, e0 = 0, p1 = 0, e1 = 0;
     int i, failed = 0;
@@ -56,6 +57,7 @@ int main(int argc, char **argv)
 
     /* box 0 at x = -2, moving right; boxes 1..4 at x = 0..3, touching */
     bd = ga2d_default_body_def(); /* a 1 m box */
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     bd.type = GA2D_BODY_DYNAMIC;
     bd.friction = 0;
     bd.restitution = 1;

@@ -46,6 +46,7 @@ int main(int argc, char **argv)
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *world = ga2d_world_create(&wd);
     ga2d_body_def bd = ga2d_default_body_def();
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     ga2d_body_id top = ga2d_body_id_null();
     ga2d_vec start, end;
     double stepping_ms = 0, awake_ms = 0, asleep_at = -1, t0, ms;
@@ -66,6 +67,7 @@ int main(int argc, char **argv)
 
     /* row i holds boxes i .. BASE-1, each row half a box in from the last */
     bd = ga2d_default_body_def(); /* a 1 m box */
+    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
     bd.type = GA2D_BODY_DYNAMIC;
     for (i = 0; i < BASE; ++i)
         for (j = i; j < BASE; ++j) {

@@ -129,6 +129,7 @@ static void pairs_match_brute_force(void)
         /* destroy and recreate a few bodies along the way */
         if (step % 20 == 10) {
             ga2d_body_def d = ga2d_default_body_def();
+            d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
             int k = rng_int(&rng, 0, n - 1);
             CHECK_RESULT(ga2d_body_destroy(s.w, s.ids[k]), GA2D_OK);
             d.type = GA2D_BODY_DYNAMIC;
@@ -156,6 +157,7 @@ static void fat_box_contains_body(void)
 {
     ga2d_world *w = ga2d_world_create(NULL);
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_body_id b;
     int step, refits = 0;
     ga2d_aabb last;
@@ -186,6 +188,7 @@ static void begin_and_end_events(void)
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_body_id ground, box;
     int step, began = 0, ended = 0, touching = 0, was = 0;
     wd.gravity = ga2d_vec_make(0, -10);
@@ -235,6 +238,7 @@ static void pair_rules(void)
 {
     ga2d_world *w = ga2d_world_create(NULL);
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_body_id dyn;
     int i;
     for (i = 0; i < 3; ++i) ga2d_body_create(w, &d); /* 3 static boxes at one place */
@@ -259,6 +263,7 @@ static void destroy_and_refilter(void)
 {
     ga2d_world *w = ga2d_world_create(NULL);
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_body_id a, b, c;
     ga2d_filter f;
     d.type = GA2D_BODY_DYNAMIC;
@@ -293,6 +298,7 @@ static void teleport_and_new_static(void)
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_body_id box;
     wd.gravity = ga2d_vec_make(0, 0);
     w = ga2d_world_create(&wd);
@@ -343,6 +349,7 @@ static void step_out_of_memory(void)
         ga2d_world_def wd = ga2d_default_world_def();
         ga2d_world *w;
         ga2d_body_def d = ga2d_default_body_def();
+        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
         int i, stepped = 0, oom = 0;
         f.fail_from = 1000000;
         wd.allocator.alloc = fail_alloc;
@@ -409,6 +416,7 @@ static void debug_draw(void)
 {
     ga2d_world *w = ga2d_world_create(NULL);
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_debug_draw dd = ga2d_default_debug_draw();
     ga2d_contact_data cd[8];
     draw_log log;

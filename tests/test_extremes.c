@@ -47,6 +47,7 @@ static void run_pyramid(double s, double ox, double oy, pyramid_run *out)
 {
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_body_id ids[PYR_COUNT];
     ga2d_vec start[PYR_COUNT];
     ga2d_world *w;
@@ -234,6 +235,7 @@ static double spin(ga2d_rotation_update mode, long steps, double omega)
 {
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_world *w;
     ga2d_body_id id;
     double worst = 0;
@@ -295,6 +297,7 @@ static ga2d_result make_box(double h, ga2d_polygon *out)
 static ga2d_result via_body(double h)
 {
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     d.polygon.count = 4;
     d.polygon.vertices[0] = ga2d_vec_make((ga2d_real)-h, (ga2d_real)-h);
     d.polygon.vertices[1] = ga2d_vec_make((ga2d_real)h, (ga2d_real)-h);

@@ -782,6 +782,7 @@ static void thin_arc_comes_to_rest(void)
             ga2d_world *w = ga2d_world_create(NULL);
             ga2d_body_def ground = box_def(GA2D_BODY_STATIC, 0, -0.5, 5, 0.5);
             ga2d_body_def arc = ga2d_default_body_def();
+            arc.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
             ga2d_body_id id;
             double low_local, lowest = 1e30, late_spin = 0, bound = -2 * GA2D_LINEAR_SLOP;
             int i, k, spinning_asleep = 0;

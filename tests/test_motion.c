@@ -132,6 +132,7 @@ static void large_turn_per_substep(void)
            substep (tested below), kinematic ones follow their velocity */
         ga2d_world *w = make_world(GA2D_INTEGRATOR_SYMPLECTIC_EULER, GA2D_ROTATION_EXACT, 1, 0);
         ga2d_body_def d = ga2d_default_body_def();
+        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
         ga2d_body_id b;
         d.type = GA2D_BODY_KINEMATIC;
         d.angular_velocity = (ga2d_real)(turns[i] * 64); /* dt = 1/64: a turn of turns[i] */
@@ -599,6 +600,7 @@ static void evaluation_counts(void)
     for (integ = 0; integ < GA2D_INTEGRATOR_COUNT; ++integ) {
         ga2d_world *w = make_world((ga2d_integrator)integ, GA2D_ROTATION_EXACT, substeps, -10);
         ga2d_body_def d = ga2d_default_body_def();
+        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
         counter_ctx cc = {0};
         ga2d_world_counters k;
         int per = integ == GA2D_INTEGRATOR_RK4 ? 4 : 1, i;

@@ -1056,6 +1056,7 @@ static void two_points_share_the_load(void)
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_body_id id;
     ga2d_contact_data c[2];
     const double h = DT, load = 1.0 * G * h, tol = 1e-4 * load;

@@ -141,6 +141,7 @@ static int run(int n, run_result *r)
     ga2d_world *w;
     ga2d_body_id *ids = (ga2d_body_id *)malloc((size_t)n * sizeof *ids);
     ga2d_body_def bd = ga2d_default_body_def();
+    bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     const int max_steps = n > LARGE_N ? LARGE_SETTLE_STEPS : MAX_SETTLE_STEPS;
     double t0 = now_ms();
     int i, s;

@@ -278,6 +278,7 @@ static ga2d_world *sr__closed_form_world(int kind, ga2d_world_def wd, sr_field *
             return NULL;
         }
         bd = ga2d_default_body_def();
+        bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
         bd.position = sr__vec(0, 0.5 + SR_BOUNCE_H0);
         bd.restitution = (ga2d_real)SR_BOUNCE_E;
     } else if (kind == SR_OSCILLATOR) {

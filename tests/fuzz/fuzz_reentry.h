@@ -488,6 +488,7 @@ static void fr_other_world(fr_state *s)
 {
     ga2d_world *o = ga2d_world_create(NULL);
     ga2d_body_def d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     ga2d_debug_draw dd = ga2d_default_debug_draw();
     ga2d_body_id id;
     FUZZ_CHECK(o != NULL);

@@ -78,11 +78,13 @@ static ga2d_world *fs_scene(fz_alloc *a, ga2d_body_id *ids, int *n)
     d.angular_velocity = 2;
     ids[(*n)++] = ga2d_body_create(w, &d);
     d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     d.type = GA2D_BODY_KINEMATIC;
     d.position = ga2d_vec_make(-3, 1);
     d.velocity = ga2d_vec_make((ga2d_real)0.5, 0);
     ids[(*n)++] = ga2d_body_create(w, &d);
     d = ga2d_default_body_def();
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     d.type = GA2D_BODY_DYNAMIC;
     d.position = ga2d_vec_make(5, 5);
     ids[(*n)++] = ga2d_body_create(w, &d);

@@ -230,15 +230,10 @@ static void fw_create(fw_state *s)
         const ga2d_polygon *poly = ga2d_body_polygon(s->w, id);
         double reach = 0, size;
         int i;
-        /* a hand-made def's all-zero polygon is the default box */
-        ga2d_polygon none;
-        int count;
-        memset(&none, 0, sizeof none);
-        count = d.internal_cookie != GA2D_DEF_COOKIE && memcmp(&d.polygon, &none, sizeof none) == 0
-                        ? ga2d_default_body_def().polygon.count
-                        : d.polygon.count;
-        FUZZ_CHECK(poly != NULL && poly->count == count);
-        for (i = 0; i < poly->count; ++i)
+        /* a def without a polygon makes a body without a shape */
+        int count = d.polygon.count;
+        FUZZ_CHECK(count == 0 ? poly == NULL : (poly != NULL && poly->count == count));
+        for (i = 0; poly && i < poly->count; ++i)
             reach = fmax(reach, fabs((double)poly->vertices[i].x) + fabs((double)poly->vertices[i].y));
         size = fabs((double)d.position.x) + fabs((double)d.position.y) + reach;
         if (size < 1e-3 * FZ_REAL_MAX)
@@ -276,6 +271,7 @@ static void fw_field(ga2d_world *w, void *ctx)
     if (s->field_forbidden && s->field_calls % 5 == 1) {
         /* the world is locked: everything else is refused */
         ga2d_body_def d = ga2d_default_body_def();
+        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
         ga2d_body_id any = s->nids ? s->ids[0] : ga2d_body_id_null();
         int count = ga2d_world_get_counters(w).body_count;
         ga2d_debug_draw dd = ga2d_default_debug_draw();
