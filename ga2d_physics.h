@@ -497,7 +497,8 @@ GA2D_API ga2d_polygon ga2d_polygon_box(ga2d_real half_width, ga2d_real half_heig
    shrunk by r, so the shape's outline still spans 2 hw x 2 hh; r = 0 is
    ga2d_polygon_box.  Count 0 on failure; the checked form returns
    INVALID_ARGUMENT (r < 0, a half-extent <= 0 or <= r: make a capsule or
-   a circle), NOT_FINITE or TOO_LARGE. */
+   a circle), NOT_FINITE, TOO_LARGE, or ga2d_polygon_make's answer for a
+   core too thin to be a polygon. */
 GA2D_API ga2d_polygon ga2d_polygon_rounded_box(ga2d_real hw, ga2d_real hh, ga2d_real r);
 GA2D_API ga2d_result ga2d_polygon_rounded_box_checked(ga2d_real hw, ga2d_real hh, ga2d_real r, ga2d_polygon *out);
 /* Regular n-gon of circumradius r centred on the origin, vertex 0 on +x;
@@ -933,6 +934,9 @@ typedef struct ga2d_shape_def {
     ga2d_real restitution;    /* default 0; mixes as the larger */
     ga2d_filter filter;       /* default: category 1, collides with all */
     void *user_data;
+    int is_sensor;            /* detects overlaps (ga2d_world_sensor_events), never
+                                 pushes and adds no mass; default 0 */
+    int enable_sensor_events; /* sensors may see this shape; default 1 */
     int internal_cookie;      /* set by ga2d_default_shape_def(); leave it */
 } ga2d_shape_def;
 GA2D_API ga2d_shape_def ga2d_default_shape_def(void);
@@ -1073,6 +1077,25 @@ GA2D_API int ga2d_world_get_pairs(const ga2d_world *w, ga2d_contact_data *out, i
 /* The same for touching contacts only. */
 GA2D_API int ga2d_world_get_contacts(const ga2d_world *w, ga2d_contact_data *out, int capacity);
 GA2D_API ga2d_contact_events ga2d_world_contact_events(const ga2d_world *w);
+
+/* Sensors: at the end of each step every sensor shape finds the shapes
+   that overlap it (touching counts) on other bodies, that are not
+   sensors, allow sensor events, and pass the filters; what changed is
+   reported here, begun and ended, in sensor then visitor slot order.
+   Events are bookended: every begin gets its end, also when either shape
+   or its body is destroyed (the end comes with the next step's events,
+   and its ids are stale by then).  The arrays are the world's, valid
+   until the next step, as the contact events. */
+typedef struct ga2d_sensor_event { ga2d_shape_id sensor, visitor; } ga2d_sensor_event;
+typedef struct ga2d_sensor_events {
+    const ga2d_sensor_event *begin;
+    int begin_count;
+    const ga2d_sensor_event *end;
+    int end_count;
+} ga2d_sensor_events;
+GA2D_API ga2d_sensor_events ga2d_world_sensor_events(const ga2d_world *w);
+/* Up to `capacity` of a sensor's visitors now; returns how many it has. */
+GA2D_API int ga2d_shape_get_sensor_overlaps(const ga2d_world *w, ga2d_shape_id sensor, ga2d_shape_id *out, int capacity);
 /* Up to `capacity` of one body's touching contacts; returns how many. */
 GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_contact_data *out, int capacity);
 
@@ -1769,6 +1792,12 @@ GA2D_API ga2d_result ga2d_polygon_rounded_box_checked(ga2d_real hw, ga2d_real hh
     poly.normals[2] = ga2d_vec_make(0, 1);
     poly.normals[3] = ga2d_vec_make(-1, 0);
     poly.radius = r;
+    if (r > 0) {
+        /* a core too thin for ga2d_polygon_make could not become a shape */
+        ga2d_polygon check;
+        ga2d_result res = ga2d_polygon_make(poly.vertices, 4, &check);
+        if (res != GA2D_OK) return res;
+    }
     *out = poly;
     return GA2D_OK;
 }
@@ -2945,6 +2974,9 @@ typedef struct ga2d__shape {
     ga2d_real density, friction, restitution;
     ga2d_filter filter;
     void *user_data;
+    int is_sensor, sensor_events;
+    int *visitors;               /* a sensor's: the shapes overlapping it, ascending */
+    int visitor_count, visitor_capacity;
     ga2d_geometry geom;
 } ga2d__shape;
 
@@ -3011,6 +3043,12 @@ struct ga2d_world {
     int body_capacity, body_used, body_count, free_head;
     ga2d__shape *shapes;
     int shape_capacity, shape_used, shape_count, shape_free;
+    int sensor_count;            /* live sensor shapes: none, and sensing costs nothing */
+    ga2d_sensor_event *sensor_begin, *sensor_end;
+    int sensor_begin_count, sensor_end_count, sensor_begin_capacity, sensor_end_capacity;
+    int sensor_end_pending;      /* ends from destruction since the last step */
+    int *sensor_scratch;         /* a sensor's candidates this step */
+    int sensor_scratch_count, sensor_scratch_capacity;
     int *moving;                 /* slots of kinematic and dynamic bodies */
     int moving_count, moving_capacity;
     double time, eval_time;
@@ -3311,6 +3349,16 @@ static ga2d_shape_id ga2d__shape_id_of(const ga2d_world *w, int k)
     return id;
 }
 
+/* The live shape an id names, or NULL (as ga2d__lookup for bodies). */
+static ga2d__shape *ga2d__shape_lookup(const ga2d_world *w, ga2d_shape_id id)
+{
+    ga2d__shape *sh;
+    if (!w || id.index1 == 0 || id.index1 > (uint32_t)w->shape_used) return NULL;
+    sh = &w->shapes[id.index1 - 1];
+    if (sh->type < 0 || (sh->generation ^ w->tag) != id.generation) return NULL;
+    return sh;
+}
+
 static void ga2d__contact_data(const ga2d_world *w, const ga2d__contact *c, ga2d_contact_data *out)
 {
     out->body_a = ga2d__id_of(w, c->a);
@@ -3433,7 +3481,7 @@ static int ga2d__pair_wanted(const ga2d_world *w, int i, int j)
 {
     const ga2d__shape *si = &w->shapes[i], *sj = &w->shapes[j];
     const ga2d__body *a = &w->bodies[si->body], *b = &w->bodies[sj->body];
-    if (si->body == sj->body) return 0;
+    if (si->body == sj->body || si->is_sensor || sj->is_sensor) return 0;
     if (a->type != GA2D_BODY_DYNAMIC && b->type != GA2D_BODY_DYNAMIC) return 0;
     return ga2d_should_collide(si->filter, sj->filter);
 }
@@ -3911,7 +3959,14 @@ static void ga2d__destroy_now(ga2d_world *w)
     w->destroy_pending = 1;
     w = &dead;
     GA2D__FREE_ARRAY(a, w->bodies, w->body_capacity);
+    {
+        int k;
+        for (k = 0; k < w->shape_used; ++k) GA2D__FREE_ARRAY(a, w->shapes[k].visitors, w->shapes[k].visitor_capacity);
+    }
     GA2D__FREE_ARRAY(a, w->shapes, w->shape_capacity);
+    GA2D__FREE_ARRAY(a, w->sensor_begin, w->sensor_begin_capacity);
+    GA2D__FREE_ARRAY(a, w->sensor_end, w->sensor_end_capacity);
+    GA2D__FREE_ARRAY(a, w->sensor_scratch, w->sensor_scratch_capacity);
     GA2D__FREE_ARRAY(a, w->moving, w->moving_capacity);
     ga2d__tree_release(a, &w->trees[0]);
     ga2d__tree_release(a, &w->trees[1]);
@@ -4347,7 +4402,7 @@ static void ga2d__update_mass(ga2d_world *w, int slot, ga2d_vec origin)
     ga2d_vec c0 = ga2d_vec_make(0, 0), C, center, moment = ga2d_vec_make(0, 0);
     for (k = b->shape_head; k >= 0; k = w->shapes[k].next) {
         const ga2d__shape *sh = &w->shapes[k];
-        ga2d_mass m = ga2d__shape_mass(sh, dynamic ? sh->density : 1);
+        ga2d_mass m = ga2d__shape_mass(sh, sh->is_sensor ? 0 : dynamic ? sh->density : 1);
         if (k == b->shape_head) c0 = m.center;
         M += m.mass;
         if (k != b->shape_head) moment = ga2d_vec_add(moment, ga2d_vec_scale(ga2d_vec_sub(m.center, c0), m.mass));
@@ -4356,7 +4411,7 @@ static void ga2d__update_mass(ga2d_world *w, int slot, ga2d_vec origin)
     if (!(M > 0) && b->shape_count > 1) C = c0;
     for (k = b->shape_head; k >= 0 && dynamic; k = w->shapes[k].next) {
         const ga2d__shape *sh = &w->shapes[k];
-        ga2d_mass m = ga2d__shape_mass(sh, sh->density);
+        ga2d_mass m = ga2d__shape_mass(sh, sh->is_sensor ? 0 : sh->density);
         I += b->shape_count > 1 ? m.inertia + m.mass * ga2d_vec_length_sq(ga2d_vec_sub(m.center, C)) : m.inertia;
     }
     b->sim.local_center = C;
@@ -4423,6 +4478,9 @@ static int ga2d__shape_add(ga2d_world *w, int slot, const ga2d_shape_def *def, c
     sh->restitution = def->restitution;
     sh->filter = def->filter;
     sh->user_data = def->user_data;
+    sh->is_sensor = def->is_sensor != 0;
+    sh->sensor_events = def->enable_sensor_events != 0;
+    w->sensor_count += sh->is_sensor;
     if (b->shape_tail >= 0) w->shapes[b->shape_tail].next = k;
     else b->shape_head = k;
     b->shape_tail = k;
@@ -4528,6 +4586,141 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
     return id;
 }
 
+/* ---------------------------------------------------------------- sensors */
+/* Appends a sensor event; on failure the step (or the next one, for a
+   destruction) reports OUT_OF_MEMORY. */
+static void ga2d__push_sensor_event(ga2d_world *w, int end, ga2d_shape_id sensor, ga2d_shape_id visitor)
+{
+    ga2d_sensor_event **arr = end ? &w->sensor_end : &w->sensor_begin;
+    int *count = end ? &w->sensor_end_count : &w->sensor_begin_count;
+    int *cap = end ? &w->sensor_end_capacity : &w->sensor_begin_capacity;
+    if (!ga2d__grow(&w->mem, (void **)arr, cap, *count + 1, sizeof **arr)) {
+        w->step.error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    (*arr)[*count].sensor = sensor;
+    (*arr)[*count].visitor = visitor;
+    ++*count;
+}
+
+/* A shape about to go: a sensor ends its overlaps, a visitor leaves every
+   sensor that holds it; the ends wait for the next step's events. */
+static void ga2d__sensor_forget(ga2d_world *w, int k)
+{
+    ga2d__shape *sh = &w->shapes[k];
+    int i, j;
+    if (w->sensor_count == 0) return;
+    ga2d__enter(w);
+    if (sh->is_sensor) {
+        for (i = 0; i < sh->visitor_count; ++i) {
+            ga2d__push_sensor_event(w, 1, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, sh->visitors[i]));
+            ++w->sensor_end_pending;
+        }
+        GA2D__FREE_ARRAY(&w->mem, sh->visitors, sh->visitor_capacity);
+        sh->visitors = NULL;
+        sh->visitor_count = sh->visitor_capacity = 0;
+        --w->sensor_count;
+    } else {
+        for (i = 0; i < w->shape_used; ++i) {
+            ga2d__shape *se = &w->shapes[i];
+            if (se->type < 0 || !se->is_sensor) continue;
+            for (j = 0; j < se->visitor_count && se->visitors[j] != k; ++j) continue;
+            if (j == se->visitor_count) continue;
+            ga2d__push_sensor_event(w, 1, ga2d__shape_id_of(w, i), ga2d__shape_id_of(w, k));
+            ++w->sensor_end_pending;
+            memmove(&se->visitors[j], &se->visitors[j + 1], (size_t)(se->visitor_count - j - 1) * sizeof *se->visitors);
+            --se->visitor_count;
+        }
+    }
+    ga2d__leave(w);
+}
+
+/* Collects a sensor's candidates (the tree query's callback). */
+static void ga2d__sensor_found(void *ctx, int other)
+{
+    ga2d_world *w = (ga2d_world *)ctx;
+    if (!ga2d__grow(&w->mem, (void **)&w->sensor_scratch, &w->sensor_scratch_capacity, w->sensor_scratch_count + 1,
+                    sizeof *w->sensor_scratch)) {
+        w->step.error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    w->sensor_scratch[w->sensor_scratch_count++] = other;
+}
+
+/* Whether a visitor overlaps a sensor now (touching counts). */
+static int ga2d__sensor_sees(const ga2d_world *w, const ga2d__shape *se, int v)
+{
+    const ga2d__shape *vi = &w->shapes[v];
+    ga2d_manifold m;
+    if (vi->type < 0 || vi->is_sensor || !vi->sensor_events || vi->body == se->body || !ga2d_should_collide(se->filter, vi->filter))
+        return 0;
+    return ga2d__collide_geometries(&se->geom, ga2d__body_xf(&w->bodies[se->body]), &vi->geom,
+                                    ga2d__body_xf(&w->bodies[vi->body]), w->slop, 0, &m) > 0;
+}
+
+/* Book-keeping after the step: each sensor, in slot order, finds what
+   overlaps its shape now (a query of both trees with its own box, then an
+   exact test), and the changes against what it held are its events. */
+static void ga2d__update_sensors(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, i, j, n;
+    for (k = 0; k < w->shape_used && w->sensor_count > 0; ++k) {
+        ga2d__shape *se = &w->shapes[k];
+        ga2d_aabb box;
+        if (se->type < 0 || !se->is_sensor) continue;
+        box = ga2d__shape_aabb(se, ga2d__body_xf(&w->bodies[se->body]));
+        w->sensor_scratch_count = 0;
+        ga2d__tree_query(&w->trees[0], box, ga2d__sensor_found, w);
+        ga2d__tree_query(&w->trees[1], box, ga2d__sensor_found, w);
+        if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
+        for (i = 0, n = 0; i < w->sensor_scratch_count; ++i)
+            if (ga2d__sensor_sees(w, se, w->sensor_scratch[i])) w->sensor_scratch[n++] = w->sensor_scratch[i];
+        if (n > 1) qsort(w->sensor_scratch, (size_t)n, sizeof *w->sensor_scratch, ga2d__cmp_int);
+        if (!ga2d__grow(&w->mem, (void **)&se->visitors, &se->visitor_capacity, n, sizeof *se->visitors)) {
+            c->error = GA2D_ERR_OUT_OF_MEMORY;
+            return;
+        }
+        /* the two ascending lists, merged: what is only new began, what is only old ended */
+        for (i = 0, j = 0; i < n || j < se->visitor_count;) {
+            int now = i < n ? w->sensor_scratch[i] : -1, was = j < se->visitor_count ? se->visitors[j] : -1;
+            if (was < 0 || (now >= 0 && now < was)) {
+                ga2d__push_sensor_event(w, 0, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, now));
+                ++i;
+            } else if (now < 0 || was < now) {
+                ga2d__push_sensor_event(w, 1, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, was));
+                ++j;
+            } else {
+                ++i;
+                ++j;
+            }
+        }
+        if (n > 0) memcpy(se->visitors, w->sensor_scratch, (size_t)n * sizeof *se->visitors);
+        se->visitor_count = n;
+    }
+}
+
+GA2D_API ga2d_sensor_events ga2d_world_sensor_events(const ga2d_world *w)
+{
+    ga2d_sensor_events e;
+    memset(&e, 0, sizeof e);
+    if (!w) return e;
+    e.begin = w->sensor_begin;
+    e.begin_count = w->sensor_begin_count;
+    e.end = w->sensor_end;
+    e.end_count = w->sensor_end_count - w->sensor_end_pending;
+    return e;
+}
+
+GA2D_API int ga2d_shape_get_sensor_overlaps(const ga2d_world *w, ga2d_shape_id sensor, ga2d_shape_id *out, int capacity)
+{
+    const ga2d__shape *se = ga2d__shape_lookup(w, sensor);
+    int i;
+    if (!se || !se->is_sensor) return 0;
+    for (i = 0; out && i < se->visitor_count && i < capacity; ++i) out[i] = ga2d__shape_id_of(w, se->visitors[i]);
+    return se->visitor_count;
+}
+
 /* A shape's proxy and queue entry go, and its slot is freed (its
    contacts are gone already).  The queue entry goes with it: the slot,
    reused before the next step, queues again, and the buffer is sized for
@@ -4537,6 +4730,7 @@ static void ga2d__shape_free(ga2d_world *w, int k)
     ga2d__shape *sh = &w->shapes[k];
     ga2d__body *b = &w->bodies[sh->body];
     int prev = -1, j;
+    ga2d__sensor_forget(w, k);
     ga2d__tree_destroy(ga2d__tree_of(w, sh), sh->proxy);
     if (sh->in_move)
         for (j = 0; j < w->move_count; ++j)
@@ -4587,15 +4781,6 @@ GA2D_API ga2d_shape_id ga2d_shape_id_null(void) { ga2d_shape_id id; id.index1 = 
 GA2D_API int ga2d_shape_id_is_null(ga2d_shape_id id) { return id.index1 == 0; }
 GA2D_API int ga2d_shape_id_equal(ga2d_shape_id a, ga2d_shape_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
 
-/* The live shape an id names, or NULL (as ga2d__lookup for bodies). */
-static ga2d__shape *ga2d__shape_lookup(const ga2d_world *w, ga2d_shape_id id)
-{
-    ga2d__shape *sh;
-    if (!w || id.index1 == 0 || id.index1 > (uint32_t)w->shape_used) return NULL;
-    sh = &w->shapes[id.index1 - 1];
-    if (sh->type < 0 || (sh->generation ^ w->tag) != id.generation) return NULL;
-    return sh;
-}
 
 /* Refuses a change while the world is stepping or in a callback. */
 static ga2d_result ga2d__shape_writable(const ga2d_world *w, ga2d_shape_id id, ga2d__shape **out)
@@ -4613,6 +4798,7 @@ GA2D_API ga2d_shape_def ga2d_default_shape_def(void)
     d.density = GA2D__R(GA2D_DEFAULT_DENSITY);
     d.friction = GA2D__R(GA2D_DEFAULT_FRICTION);
     d.filter = ga2d_default_filter();
+    d.enable_sensor_events = 1;
     d.internal_cookie = GA2D_DEF_COOKIE;
     return d;
 }
@@ -4629,6 +4815,8 @@ static void ga2d__resolve_shape_def(const ga2d_shape_def *in, ga2d_shape_def *ou
     GA2D__TAKE(restitution);
     GA2D__TAKE(filter);
     GA2D__TAKE(user_data);
+    GA2D__TAKE(is_sensor);
+    GA2D__TAKE(enable_sensor_events);
 }
 
 GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def,
@@ -7059,6 +7247,17 @@ static void ga2d__finish_bodies(ga2d__step_context *c, int begin, int end)
     }
 }
 
+/* This step's sensor events: none begun; the ends from destruction since
+   the last step come first. */
+static void ga2d__sensor_events_begin(ga2d_world *w)
+{
+    int pending = w->sensor_end_pending;
+    w->sensor_begin_count = 0;
+    if (pending > 0) memmove(w->sensor_end, w->sensor_end + (w->sensor_end_count - pending), (size_t)pending * sizeof *w->sensor_end);
+    w->sensor_end_count = pending;
+    w->sensor_end_pending = 0;
+}
+
 /* The step's context: its times, what it reports, the contact softness.
    Contacts are softer than the substep can resolve at no more than a
    quarter of its rate, and twice as stiff against a body that cannot
@@ -7075,6 +7274,7 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     c->error = GA2D_OK;
     c->error_slot = -1;
     w->begin_count = w->end_count = 0; /* this step's events */
+    ga2d__sensor_events_begin(w);
     hz = w->def.contact_hertz < GA2D__R(0.25) * c->inv_h ? w->def.contact_hertz : GA2D__R(0.25) * c->inv_h;
     c->soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
     c->stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
@@ -7123,6 +7323,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     w->counters.constraint_count = c->constraint_count;
     w->time = c->t0 + (double)dt;
     if (w->def.enable_sleep) ga2d__update_sleep(c);
+    if (w->sensor_count > 0) ga2d__update_sensors(c);
     ++w->counters.step_count;
 }
 
@@ -7317,6 +7518,7 @@ typedef struct ga2d__codec {
     const unsigned char *in; /* loading: the payload */
     size_t n, at;            /* saving: bytes so far; loading: payload size, read so far */
     int loading, ok;         /* ok: 0 once a read ran past the end or met a bad count */
+    size_t visitors_at;      /* loading: where the last sensor's visitors start */
 } ga2d__codec;
 
 /* A codec that saves to out (NULL: measures). */
@@ -7467,6 +7669,28 @@ static void ga2d__io_body(ga2d__codec *k, ga2d__body *b)
     b->user_data = (void *)(uintptr_t)user;
 }
 
+/* A sensor's visitors: their count and slots.  Loading reads them into
+   the codec's scratch (the world being loaded allocates them after). */
+static void ga2d__io_visitors(ga2d__codec *k, ga2d__shape *s)
+{
+    int i, n = s->visitor_count;
+    ga2d__io_int(k, &n);
+    if (k->loading) {
+        /* each takes an int of what is left: a count beyond that is damage */
+        if (n < 0 || (size_t)n > (k->n - k->at) / sizeof(int)) {
+            k->ok = 0;
+            return;
+        }
+        s->visitor_count = n;
+        s->visitors = NULL;
+        s->visitor_capacity = 0;
+        k->visitors_at = k->at; /* read again when the array exists */
+        k->at += (size_t)n * sizeof(int);
+        return;
+    }
+    for (i = 0; i < n; ++i) ga2d__io_int(k, &s->visitors[i]);
+}
+
 /* A shape slot: a free one is its type, link and generation; a live one
    its body and list link, queue flag, material, filter, user data and
    geometry (its proxy is rebuilt). */
@@ -7489,6 +7713,8 @@ static void ga2d__io_shape(ga2d__codec *k, ga2d__shape *s)
     ga2d__io(k, &s->filter.group_index, sizeof s->filter.group_index);
     ga2d__io_u64(k, &user);
     s->user_data = (void *)(uintptr_t)user;
+    ga2d__io_int(k, &s->is_sensor);
+    ga2d__io_int(k, &s->sensor_events);
     g->type = (ga2d_shape_type)s->type;
     switch (s->type) {
     case GA2D_SHAPE_POLYGON: ga2d__io_polygon(k, &g->as.polygon); break;
@@ -7507,6 +7733,7 @@ static void ga2d__io_shape(ga2d__codec *k, ga2d__shape *s)
         break;
     default: k->ok = 0; break;
     }
+    if (s->is_sensor == 1 && k->ok) ga2d__io_visitors(k, s);
 }
 
 static void ga2d__io_manifold(ga2d__codec *k, ga2d_manifold *m)
@@ -7741,7 +7968,7 @@ static int ga2d__snap_shape_ok(const ga2d_world *t, const ga2d__shape *s, int sh
     ga2d_geometry g;
     if (s->type < 0) return s->type == -1 && s->next_free >= -1 && s->next_free < shape_used;
     if (s->type > GA2D_SHAPE_SEGMENT || s->generation == 0 || s->body < 0 || s->body >= t->body_used ||
-        t->bodies[s->body].type < 0 || s->next < -1 || s->next >= shape_used || (s->in_move & ~1))
+        t->bodies[s->body].type < 0 || s->next < -1 || s->next >= shape_used || ((s->in_move | s->is_sensor | s->sensor_events) & ~1))
         return 0;
     if (!ga2d__finite(s->density) || !ga2d__finite(s->friction) || !ga2d__finite(s->restitution) || s->density < 0 ||
         s->friction < 0 || s->restitution < 0)
@@ -7835,6 +8062,24 @@ static int ga2d__snap_lists_ok(ga2d_world *t)
     return seen == t->shape_count;
 }
 
+/* Each sensor's visitors: live shapes it could see, ascending. */
+static int ga2d__snap_visitors_ok(const ga2d_world *t)
+{
+    int i, j;
+    for (i = 0; i < t->shape_used; ++i) {
+        const ga2d__shape *se = &t->shapes[i];
+        if (se->type < 0 || !se->is_sensor) continue;
+        for (j = 0; j < se->visitor_count; ++j) {
+            int v = se->visitors[j];
+            const ga2d__shape *vi;
+            if (v < 0 || v >= t->shape_used || (j > 0 && v <= se->visitors[j - 1])) return 0;
+            vi = &t->shapes[v];
+            if (vi->type < 0 || vi->is_sensor || !vi->sensor_events || vi->body == se->body) return 0;
+        }
+    }
+    return 1;
+}
+
 /* Reads the shapes into t after its bodies: slots, the free list, the
    bodies' lists, the trees and the pair-finding queue.  0: bad snapshot,
    -1: out of memory. */
@@ -7863,8 +8108,16 @@ static int ga2d__snap_read_shapes(ga2d_world *t, ga2d__codec *k)
             ++live;
             moves += t->bodies[sh->body].type != GA2D_BODY_STATIC;
         }
+        if (sh->type >= 0 && sh->is_sensor) {
+            int n = sh->visitor_count;
+            sh->visitor_count = 0;
+            if (!ga2d__grow(&t->mem, (void **)&sh->visitors, &sh->visitor_capacity, n, sizeof *sh->visitors)) return -1;
+            if (n > 0) memcpy(sh->visitors, k->in + k->visitors_at, (size_t)n * sizeof *sh->visitors);
+            sh->visitor_count = n;
+            ++t->sensor_count;
+        }
     }
-    if (live != count || !ga2d__snap_lists_ok(t)) return 0;
+    if (live != count || !ga2d__snap_lists_ok(t) || !ga2d__snap_visitors_ok(t)) return 0;
     /* the free list: free slots only, each once (the queue, a slot each,
        holds which were met) */
     seen = t->move_buf;
