@@ -564,6 +564,8 @@ typedef struct ga2d_world ga2d_world;
 typedef struct ga2d_body_id { uint32_t index1; uint32_t generation; } ga2d_body_id;
 GA2D_API ga2d_body_id ga2d_body_id_null(void);
 GA2D_API int ga2d_body_id_is_null(ga2d_body_id id);
+/* A shape handle, as a body's (see "shapes"). */
+typedef struct ga2d_shape_id { uint32_t index1; uint32_t generation; } ga2d_shape_id;
 GA2D_API int ga2d_body_id_equal(ga2d_body_id a, ga2d_body_id b);
 
 /* Memory for a world.  NULL functions mean malloc/free.  free gets the size
@@ -669,6 +671,9 @@ typedef void ga2d_force_fn(ga2d_world *world, void *context);
 #ifndef GA2D_DEFAULT_RESTITUTION_THRESHOLD
 #define GA2D_DEFAULT_RESTITUTION_THRESHOLD 1.0 /* m/s: slower impacts do not bounce */
 #endif
+#ifndef GA2D_DEFAULT_HIT_EVENT_THRESHOLD
+#define GA2D_DEFAULT_HIT_EVENT_THRESHOLD 1.0   /* m/s: slower approaches are no hit */
+#endif
 #ifndef GA2D_DEFAULT_DENSITY
 #define GA2D_DEFAULT_DENSITY 1.0              /* kg/m^2 */
 #endif
@@ -696,6 +701,15 @@ typedef void ga2d_force_fn(ga2d_world *world, void *context);
    means" resolve their zero in every def. */
 #define GA2D_DEF_COOKIE 0x67613264 /* "ga2d" */
 
+/* Called in each step, before the solver, for every touching contact one
+   of whose shapes has enable_pre_solve_events, with the two shapes (A
+   before B; the normal points from A to B) and the manifold: return 0 and
+   the contact does not push this step (a one-way platform: 0 when the
+   body comes from below, normal.y of the platform's side < 0).  The world
+   is locked: read it, change nothing. */
+struct ga2d_manifold;
+typedef int ga2d_pre_solve_fn(ga2d_shape_id shape_a, ga2d_shape_id shape_b, const struct ga2d_manifold *m, void *context);
+
 typedef struct ga2d_world_def {
     ga2d_vec gravity;                     /* m/s^2; default (0, -10), |g| <= GA2D_MAX_GRAVITY */
     int substeps;                         /* per step; 0 means 4 */
@@ -721,6 +735,9 @@ typedef struct ga2d_world_def {
     int enable_warm_starting;             /* reuse last step's impulses (default 1) */
     int enable_friction;                  /* default 1 */
     int enable_restitution;               /* default 1 */
+    ga2d_pre_solve_fn *pre_solve;         /* NULL: none (see ga2d_pre_solve_fn) */
+    void *pre_solve_context;
+    ga2d_real hit_event_threshold;        /* m/s of approach for a hit event; 0 means 1 */
     int internal_cookie;                  /* set by the default functions; leave it */
 } ga2d_world_def;
 
@@ -923,7 +940,6 @@ GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id
    Shapes of one body never collide with each other.  The body's mass,
    centre and inertia are the exact sum over its shapes (parallel axes),
    refreshed when shapes come and go. */
-typedef struct ga2d_shape_id { uint32_t index1; uint32_t generation; } ga2d_shape_id; /* zero: null */
 GA2D_API ga2d_shape_id ga2d_shape_id_null(void);
 GA2D_API int ga2d_shape_id_is_null(ga2d_shape_id id);
 GA2D_API int ga2d_shape_id_equal(ga2d_shape_id a, ga2d_shape_id b);
@@ -937,6 +953,8 @@ typedef struct ga2d_shape_def {
     int is_sensor;            /* detects overlaps (ga2d_world_sensor_events), never
                                  pushes and adds no mass; default 0 */
     int enable_sensor_events; /* sensors may see this shape; default 1 */
+    int enable_pre_solve_events; /* its contacts go to the world's pre_solve; default 0 */
+    int enable_hit_events;    /* its contacts report hits (ga2d_contact_events); default 0 */
     int internal_cookie;      /* set by ga2d_default_shape_def(); leave it */
 } ga2d_shape_def;
 GA2D_API ga2d_shape_def ga2d_default_shape_def(void);
@@ -1062,11 +1080,23 @@ typedef struct ga2d_contact_data {
    destroy (read them after the step, not from inside it).  An end event carries
    the last manifold that touched.  Destroying a body ends its contacts
    without an event. */
+/* A hit: a contact with hit events whose points came together faster
+   than the world's hit_event_threshold and pushed: where (the fastest
+   point), the normal (A to B) and the approach speed, for sounds and
+   damage. */
+typedef struct ga2d_contact_hit_event {
+    ga2d_shape_id shape_a, shape_b;
+    ga2d_vec point, normal;
+    ga2d_real approach_speed;
+} ga2d_contact_hit_event;
+
 typedef struct ga2d_contact_events {
     const ga2d_contact_data *begin;
     int begin_count;
     const ga2d_contact_data *end;
     int end_count;
+    const ga2d_contact_hit_event *hit;
+    int hit_count;
 } ga2d_contact_events;
 
 /* Broadphase pairs: bodies whose fat AABBs overlap, that may collide (at
@@ -1096,7 +1126,12 @@ typedef struct ga2d_sensor_events {
 GA2D_API ga2d_sensor_events ga2d_world_sensor_events(const ga2d_world *w);
 /* Up to `capacity` of a sensor's visitors now; returns how many it has. */
 GA2D_API int ga2d_shape_get_sensor_overlaps(const ga2d_world *w, ga2d_shape_id sensor, ga2d_shape_id *out, int capacity);
-/* Up to `capacity` of one body's touching contacts; returns how many. */
+/* Up to `capacity` of one body's touching contacts; returns how many.
+   Each is turned to face out of the asked-for body: it is body_a (and
+   shape_a), and the normal points away from it, so a ground check is
+   normal.y < -cos(max slope) without flipping by hand.  (The world's own
+   lists, ga2d_world_get_contacts and the events, keep the A-before-B
+   order.) */
 GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_contact_data *out, int capacity);
 
 /* ------------------------------------------------------------- debug draw */
@@ -2974,7 +3009,7 @@ typedef struct ga2d__shape {
     ga2d_real density, friction, restitution;
     ga2d_filter filter;
     void *user_data;
-    int is_sensor, sensor_events;
+    int is_sensor, sensor_events, pre_solve_events, hit_events;
     int *visitors;               /* a sensor's: the shapes overlapping it, ascending */
     int visitor_count, visitor_capacity;
     ga2d_geometry geom;
@@ -3073,6 +3108,8 @@ struct ga2d_world {
     int pair_capacity;           /* holds contact_count keys: one per contact */
     ga2d_contact_data *begin_events, *end_events;
     int begin_count, end_count, begin_capacity, end_capacity;
+    ga2d_contact_hit_event *hit_events;
+    int hit_count, hit_capacity;
     ga2d_real slop, speculative, aabb_margin; /* scaled by length units */
     ga2d__step_context step;
     int *wake_queue;             /* one entry per body slot */
@@ -3781,18 +3818,37 @@ GA2D_API ga2d_contact_events ga2d_world_contact_events(const ga2d_world *w)
     e.begin_count = w->begin_count;
     e.end = w->end_events;
     e.end_count = w->end_count;
+    e.hit = w->hit_events;
+    e.hit_count = w->hit_count;
     return e;
 }
 
 GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_contact_data *out, int capacity)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
-    int link, n = 0;
+    int link, n = 0, k;
     if (!b) return 0;
     for (link = ga2d__first_edge(w, ga2d__slot(id)); link >= 0; link = ga2d__next_edge(w, link)) {
         const ga2d__contact *c = &w->contacts[link >> 1];
         if (!c->touching) continue;
-        if (out && n < capacity) ga2d__contact_data(w, c, &out[n]);
+        if (out && n < capacity) {
+            ga2d_contact_data *d = &out[n];
+            ga2d__contact_data(w, c, d);
+            if (link & 1) { /* the body is B: the contact turned round */
+                ga2d_body_id tb = d->body_a;
+                ga2d_shape_id ts = d->shape_a;
+                d->body_a = d->body_b;
+                d->body_b = tb;
+                d->shape_a = d->shape_b;
+                d->shape_b = ts;
+                d->manifold.normal = ga2d_vec_neg(d->manifold.normal);
+                for (k = 0; k < d->manifold.count; ++k) {
+                    ga2d_vec ta = d->manifold.points[k].anchor_a;
+                    d->manifold.points[k].anchor_a = d->manifold.points[k].anchor_b;
+                    d->manifold.points[k].anchor_b = ta;
+                }
+            }
+        }
         ++n;
     }
     return n;
@@ -3815,6 +3871,7 @@ GA2D_API ga2d_world_def ga2d_default_world_def(void)
     d.contact_damping_ratio = GA2D__R(GA2D_DEFAULT_CONTACT_DAMPING_RATIO);
     d.contact_push_max_velocity = GA2D__R(GA2D_DEFAULT_CONTACT_PUSH_MAX_VELOCITY);
     d.restitution_threshold = GA2D__R(GA2D_DEFAULT_RESTITUTION_THRESHOLD);
+    d.hit_event_threshold = GA2D__R(GA2D_DEFAULT_HIT_EVENT_THRESHOLD);
     d.enable_sleep = 1;
     d.enable_warm_starting = 1;
     d.enable_friction = 1;
@@ -3866,6 +3923,9 @@ static void ga2d__resolve_world_def(const ga2d_world_def *in, ga2d_world_def *ou
     GA2D__TAKE(enable_warm_starting);
     GA2D__TAKE(enable_friction);
     GA2D__TAKE(enable_restitution);
+    GA2D__TAKE(pre_solve);
+    GA2D__TAKE(pre_solve_context);
+    GA2D__TAKE_NONZERO(hit_event_threshold);
 }
 
 /* |v| s, with |v| taken after scaling by the larger component: finite
@@ -3895,12 +3955,13 @@ static ga2d_result ga2d__world_def_check(const ga2d_world_def *d)
     if (!ga2d__gravity_ok(d->gravity, d->length_units_per_meter > 0 ? d->length_units_per_meter : 1))
         return GA2D_ERR_TOO_LARGE;
     if (!ga2d__finite(d->contact_hertz) || !ga2d__finite(d->contact_damping_ratio) ||
-        !ga2d__finite(d->contact_push_max_velocity) || !ga2d__finite(d->restitution_threshold))
+        !ga2d__finite(d->contact_push_max_velocity) || !ga2d__finite(d->restitution_threshold) ||
+        !ga2d__finite(d->hit_event_threshold))
         return GA2D_ERR_NOT_FINITE;
     if ((int)d->solver < 0 || (int)d->solver >= GA2D_SOLVER_COUNT || d->velocity_iterations < 0 ||
         d->velocity_iterations > 1024 || d->position_iterations < 0 || d->position_iterations > 1024 ||
         d->contact_hertz < 0 || d->contact_damping_ratio < 0 || d->contact_push_max_velocity < 0 ||
-        d->restitution_threshold < 0)
+        d->restitution_threshold < 0 || d->hit_event_threshold < 0)
         return GA2D_ERR_INVALID_ARGUMENT;
     if ((d->allocator.alloc == NULL) != (d->allocator.free == NULL)) return GA2D_ERR_INVALID_ARGUMENT;
     return GA2D_OK;
@@ -3965,6 +4026,7 @@ static void ga2d__destroy_now(ga2d_world *w)
     }
     GA2D__FREE_ARRAY(a, w->shapes, w->shape_capacity);
     GA2D__FREE_ARRAY(a, w->sensor_begin, w->sensor_begin_capacity);
+    GA2D__FREE_ARRAY(a, w->hit_events, w->hit_capacity);
     GA2D__FREE_ARRAY(a, w->sensor_end, w->sensor_end_capacity);
     GA2D__FREE_ARRAY(a, w->sensor_scratch, w->sensor_scratch_capacity);
     GA2D__FREE_ARRAY(a, w->moving, w->moving_capacity);
@@ -4480,6 +4542,8 @@ static int ga2d__shape_add(ga2d_world *w, int slot, const ga2d_shape_def *def, c
     sh->user_data = def->user_data;
     sh->is_sensor = def->is_sensor != 0;
     sh->sensor_events = def->enable_sensor_events != 0;
+    sh->pre_solve_events = def->enable_pre_solve_events != 0;
+    sh->hit_events = def->enable_hit_events != 0;
     w->sensor_count += sh->is_sensor;
     if (b->shape_tail >= 0) w->shapes[b->shape_tail].next = k;
     else b->shape_head = k;
@@ -4817,6 +4881,8 @@ static void ga2d__resolve_shape_def(const ga2d_shape_def *in, ga2d_shape_def *ou
     GA2D__TAKE(user_data);
     GA2D__TAKE(is_sensor);
     GA2D__TAKE(enable_sensor_events);
+    GA2D__TAKE(enable_pre_solve_events);
+    GA2D__TAKE(enable_hit_events);
 }
 
 GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def,
@@ -5358,6 +5424,7 @@ typedef struct ga2d__cpoint {
     ga2d_real separation;        /* at the step's start */
     ga2d_real normal_mass, tangent_mass;
     ga2d_real normal_impulse, tangent_impulse;
+    ga2d_real approach;          /* closing speed along the normal as the step began (hits only) */
 } ga2d__cpoint;
 
 /* A touching contact as the solver sees it for one step: its bodies, the
@@ -5373,6 +5440,7 @@ struct ga2d__contact_constraint {
     int count;
     int lane;                    /* group * GA2D__LANES + lane in the lane solver */
     ga2d_real round_a, round_b;  /* the shapes' radii: their round parts (ga2d__point_now) */
+    int hits;                    /* a shape reports hits: the points' approach speeds are kept */
     ga2d__cpoint p[2];
 };
 
@@ -5596,10 +5664,21 @@ static ga2d_vec ga2d__free_accel(const ga2d_world *w, const ga2d__body *b)
 /* Whether a contact's bodies can move in the solver: an awake dynamic one. */
 static int ga2d__solver_moves(const ga2d__body *b) { return b->type == GA2D_BODY_DYNAMIC && b->awake; }
 
+/* The pre-solve callback's answer for a contact one of whose shapes asks
+   for it (1 otherwise, or once the world is being destroyed from it). */
+static int ga2d__pre_solve(ga2d_world *w, const ga2d__contact *ct)
+{
+    if (!w->shapes[ct->shape_a].pre_solve_events && !w->shapes[ct->shape_b].pre_solve_events) return 1;
+    if (w->destroy_pending) return 1;
+    return w->def.pre_solve(ga2d__shape_id_of(w, ct->shape_a), ga2d__shape_id_of(w, ct->shape_b), &ct->manifold,
+                            w->def.pre_solve_context) != 0;
+}
+
 /* Book-keeping: a constraint for every touching contact with an awake
    dynamic body, in canonical order, not the pool's: body slots ascending,
-   each body's own contacts (those where it is A, the lower slot) oldest
-   first, as its list holds them.  Contacts elsewhere in the world, made
+   each body's own contacts (those where it is A) oldest first, as its
+   list holds them; a contact the pre-solve callback turns down is left
+   out.  Contacts elsewhere in the world, made
    and freed, shuffle the pool but not this order, so a scene's bits do
    not depend on them.  Oldest first matters: a pyramid's contacts, made
    in key order, are then solved bottom up.  Out of memory, the step
@@ -5615,6 +5694,7 @@ static void ga2d__order_constraints(ga2d__step_context *c)
             const ga2d__contact *ct = &w->contacts[link >> 1];
             if ((link & 1) != 0 || !ct->touching) continue;
             if (!ga2d__solver_moves(&w->bodies[ct->a]) && !ga2d__solver_moves(&w->bodies[ct->b])) continue;
+            if (w->def.pre_solve && !ga2d__pre_solve(w, ct)) continue;
             if (!ga2d__grow(&w->mem, (void **)&c->constraints, &c->constraint_capacity, c->constraint_count + 1,
                             sizeof *c->constraints)) {
                 c->error = GA2D_ERR_OUT_OF_MEMORY;
@@ -5651,6 +5731,7 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->count = ct->manifold.count;
         cc->round_a = ga2d__shape_radius(&w->shapes[ct->shape_a]);
         cc->round_b = ga2d__shape_radius(&w->shapes[ct->shape_b]);
+        cc->hits = w->shapes[ct->shape_a].hit_events || w->shapes[ct->shape_b].hit_events;
         /* anchors from the centres, taken from the origin-relative ones so
            that no large coordinates are subtracted */
         ca = ga2d_rotate(a->q, a->local_center);
@@ -5665,6 +5746,7 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
             p->tangent_mass = ga2d__effective_mass(cc, p->ra, p->rb, ga2d__tangent(cc->normal));
             p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
             p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
+            p->approach = cc->hits ? -ga2d_dot(ga2d__relative_velocity(a, b, p->ra, p->rb), cc->normal) : 0;
         }
     }
 }
@@ -7273,7 +7355,7 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     c->t0 = c->t = w->time;
     c->error = GA2D_OK;
     c->error_slot = -1;
-    w->begin_count = w->end_count = 0; /* this step's events */
+    w->begin_count = w->end_count = w->hit_count = 0; /* this step's events */
     ga2d__sensor_events_begin(w);
     hz = w->def.contact_hertz < GA2D__R(0.25) * c->inv_h ? w->def.contact_hertz : GA2D__R(0.25) * c->inv_h;
     c->soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
@@ -7282,6 +7364,39 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     w->counters.force_evaluations = 0;
     w->counters.rotation_updates = 0;
     w->counters.speed_caps = 0;
+}
+
+/* Book-keeping after the impulses are stored: each constraint that
+   reports hits and whose fastest approaching point pushed, faster than
+   the threshold, is a hit event. */
+static void ga2d__hit_events(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    ga2d_real threshold = w->def.hit_event_threshold * w->def.length_units_per_meter;
+    int i, k;
+    for (i = 0; i < c->constraint_count; ++i) {
+        const ga2d__contact_constraint *cc = &c->constraints[i];
+        const ga2d__contact *ct = &w->contacts[cc->contact];
+        int best = -1;
+        if (!cc->hits) continue;
+        for (k = 0; k < cc->count && k < ct->manifold.count; ++k)
+            if (cc->p[k].approach > threshold && ct->manifold.points[k].normal_impulse > 0 &&
+                (best < 0 || cc->p[k].approach > cc->p[best].approach))
+                best = k;
+        if (best < 0) continue;
+        if (!ga2d__grow(&w->mem, (void **)&w->hit_events, &w->hit_capacity, w->hit_count + 1, sizeof *w->hit_events)) {
+            c->error = GA2D_ERR_OUT_OF_MEMORY;
+            return;
+        }
+        {
+            ga2d_contact_hit_event *e = &w->hit_events[w->hit_count++];
+            e->shape_a = ga2d__shape_id_of(w, ct->shape_a);
+            e->shape_b = ga2d__shape_id_of(w, ct->shape_b);
+            e->point = ct->manifold.points[best].point;
+            e->normal = ct->manifold.normal;
+            e->approach_speed = cc->p[best].approach;
+        }
+    }
 }
 
 /* The step, stage by stage (a stage run with ga2d__run works over a range
@@ -7319,6 +7434,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     /* impulses kept for the next step, bodies finished, sleep */
     ga2d__run(c, ga2d__store_impulses, c->group_count);
     c->group_count = 0;
+    ga2d__hit_events(c);
     ga2d__run(c, ga2d__finish_bodies, w->moving_count);
     w->counters.constraint_count = c->constraint_count;
     w->time = c->t0 + (double)dt;
@@ -7592,6 +7708,7 @@ static void ga2d__io_def(ga2d__codec *k, ga2d_world_def *d)
     ga2d__io_int(k, &d->enable_warm_starting);
     ga2d__io_int(k, &d->enable_friction);
     ga2d__io_int(k, &d->enable_restitution);
+    ga2d__io_real(k, &d->hit_event_threshold);
     ga2d__io_int(k, &d->internal_cookie);
 }
 
@@ -7715,6 +7832,8 @@ static void ga2d__io_shape(ga2d__codec *k, ga2d__shape *s)
     s->user_data = (void *)(uintptr_t)user;
     ga2d__io_int(k, &s->is_sensor);
     ga2d__io_int(k, &s->sensor_events);
+    ga2d__io_int(k, &s->pre_solve_events);
+    ga2d__io_int(k, &s->hit_events);
     g->type = (ga2d_shape_type)s->type;
     switch (s->type) {
     case GA2D_SHAPE_POLYGON: ga2d__io_polygon(k, &g->as.polygon); break;
@@ -7968,7 +8087,7 @@ static int ga2d__snap_shape_ok(const ga2d_world *t, const ga2d__shape *s, int sh
     ga2d_geometry g;
     if (s->type < 0) return s->type == -1 && s->next_free >= -1 && s->next_free < shape_used;
     if (s->type > GA2D_SHAPE_SEGMENT || s->generation == 0 || s->body < 0 || s->body >= t->body_used ||
-        t->bodies[s->body].type < 0 || s->next < -1 || s->next >= shape_used || ((s->in_move | s->is_sensor | s->sensor_events) & ~1))
+        t->bodies[s->body].type < 0 || s->next < -1 || s->next >= shape_used || ((s->in_move | s->is_sensor | s->sensor_events | s->pre_solve_events | s->hit_events) & ~1))
         return 0;
     if (!ga2d__finite(s->density) || !ga2d__finite(s->friction) || !ga2d__finite(s->restitution) || s->density < 0 ||
         s->friction < 0 || s->restitution < 0)
@@ -8240,6 +8359,8 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
     d.allocator = w->def.allocator;
     d.force_callback = w->def.force_callback;
     d.force_context = w->def.force_context;
+    d.pre_solve = w->def.pre_solve;
+    d.pre_solve_context = w->def.pre_solve_context;
     if (d.internal_cookie != GA2D_DEF_COOKIE || ga2d__world_def_check(&d) != GA2D_OK || d.substeps == 0 ||
         d.length_units_per_meter == 0)
         return GA2D_ERR_BAD_SNAPSHOT;
