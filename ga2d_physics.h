@@ -955,6 +955,9 @@ typedef struct ga2d_shape_def {
     int enable_sensor_events; /* sensors may see this shape; default 1 */
     int enable_pre_solve_events; /* its contacts go to the world's pre_solve; default 0 */
     int enable_hit_events;    /* its contacts report hits (ga2d_contact_events); default 0 */
+    ga2d_real tangent_speed;  /* m/s: a conveyor belt: its surface moves this fast
+                                 clockwise round its outline (a ground's top: to
+                                 +x), and friction carries what touches it; default 0 */
     int internal_cookie;      /* set by ga2d_default_shape_def(); leave it */
 } ga2d_shape_def;
 GA2D_API ga2d_shape_def ga2d_default_shape_def(void);
@@ -3010,6 +3013,7 @@ typedef struct ga2d__shape {
     ga2d_filter filter;
     void *user_data;
     int is_sensor, sensor_events, pre_solve_events, hit_events;
+    ga2d_real tangent_speed;
     int *visitors;               /* a sensor's: the shapes overlapping it, ascending */
     int visitor_count, visitor_capacity;
     ga2d_geometry geom;
@@ -4544,6 +4548,7 @@ static int ga2d__shape_add(ga2d_world *w, int slot, const ga2d_shape_def *def, c
     sh->sensor_events = def->enable_sensor_events != 0;
     sh->pre_solve_events = def->enable_pre_solve_events != 0;
     sh->hit_events = def->enable_hit_events != 0;
+    sh->tangent_speed = def->tangent_speed;
     w->sensor_count += sh->is_sensor;
     if (b->shape_tail >= 0) w->shapes[b->shape_tail].next = k;
     else b->shape_head = k;
@@ -4883,6 +4888,7 @@ static void ga2d__resolve_shape_def(const ga2d_shape_def *in, ga2d_shape_def *ou
     GA2D__TAKE(enable_sensor_events);
     GA2D__TAKE(enable_pre_solve_events);
     GA2D__TAKE(enable_hit_events);
+    GA2D__TAKE(tangent_speed);
 }
 
 GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def,
@@ -4897,7 +4903,8 @@ GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body,
     if (!w || !def || !g || !out) return GA2D_ERR_INVALID_ARGUMENT;
     if ((r = ga2d__writable(w, body, &b)) != GA2D_OK) return r;
     ga2d__resolve_shape_def(def, &d);
-    if (!ga2d__finite(d.density) || !ga2d__finite(d.friction) || !ga2d__finite(d.restitution)) return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__finite(d.density) || !ga2d__finite(d.friction) || !ga2d__finite(d.restitution) || !ga2d__finite(d.tangent_speed))
+        return GA2D_ERR_NOT_FINITE;
     if (d.density < 0 || d.friction < 0 || d.restitution < 0) return GA2D_ERR_INVALID_ARGUMENT;
     if ((r = ga2d__geometry_check(g, b->type, d.density, &clean)) != GA2D_OK) return r;
     ga2d__enter(w);
@@ -5441,6 +5448,7 @@ struct ga2d__contact_constraint {
     int lane;                    /* group * GA2D__LANES + lane in the lane solver */
     ga2d_real round_a, round_b;  /* the shapes' radii: their round parts (ga2d__point_now) */
     int hits;                    /* a shape reports hits: the points' approach speeds are kept */
+    ga2d_real tangent_speed;     /* the surfaces' sliding along (ny, -nx): friction's target */
     ga2d__cpoint p[2];
 };
 
@@ -5581,6 +5589,8 @@ struct ga2d__group {
     int round;              /* a lane has a round shape: rax.. are core anchors, o.. their radii along n */
     ga2d__w oax, oay, obx, oby;
     ga2d__w tw;             /* +-1/2 where one side is round: the point slides with it (ga2d__point_now) */
+    int conveyor;           /* a lane has a tangent speed (tspeed) */
+    ga2d__w tspeed;
 };
 
 /* A soft constraint seen by an implicit step (ga2d__make_soft). */
@@ -5732,6 +5742,10 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->round_a = ga2d__shape_radius(&w->shapes[ct->shape_a]);
         cc->round_b = ga2d__shape_radius(&w->shapes[ct->shape_b]);
         cc->hits = w->shapes[ct->shape_a].hit_events || w->shapes[ct->shape_b].hit_events;
+        /* A's surface slides along t = (ny, -nx) at its speed, B's (whose
+           outward normal is -n) along -t: B relative to A, s_a + s_b less */
+        cc->tangent_speed = (w->shapes[ct->shape_a].tangent_speed + w->shapes[ct->shape_b].tangent_speed) *
+                            w->def.length_units_per_meter;
         /* anchors from the centres, taken from the origin-relative ones so
            that no large coordinates are subtracted */
         ca = ga2d_rotate(a->q, a->local_center);
@@ -6211,6 +6225,7 @@ static void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int 
         }
         for (k = 0; friction && k < 2; ++k) {
             ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty), dt, cap, total;
+            if (g->conveyor) vt = ga2d__wsub(vt, g->tspeed);
             if (fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
             dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
             cap = ga2d__wmul(g->friction, g->nimp[k]);
@@ -6262,6 +6277,8 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->oay, l) = oa.y;
     GA2D__LANE(g->obx, l) = ob.x;
     GA2D__LANE(g->oby, l) = ob.y;
+    GA2D__LANE(g->tspeed, l) = c->tangent_speed;
+    if (c->tangent_speed != 0) g->conveyor = 1;
     GA2D__LANE(g->tw, l) = (c->round_a != 0) == (c->round_b != 0) ? 0 : (c->round_b != 0 ? GA2D__R(0.5) : GA2D__R(-0.5));
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
@@ -6300,6 +6317,7 @@ static void ga2d__group_open(ga2d__group *g)
     g->count = 0;
     g->skip = 0;
     g->round = 0;
+    g->conveyor = 0;
 }
 
 /* The first group from gi on with a free lane (or group_count): full
@@ -7834,6 +7852,7 @@ static void ga2d__io_shape(ga2d__codec *k, ga2d__shape *s)
     ga2d__io_int(k, &s->sensor_events);
     ga2d__io_int(k, &s->pre_solve_events);
     ga2d__io_int(k, &s->hit_events);
+    ga2d__io_real(k, &s->tangent_speed);
     g->type = (ga2d_shape_type)s->type;
     switch (s->type) {
     case GA2D_SHAPE_POLYGON: ga2d__io_polygon(k, &g->as.polygon); break;
@@ -8089,7 +8108,8 @@ static int ga2d__snap_shape_ok(const ga2d_world *t, const ga2d__shape *s, int sh
     if (s->type > GA2D_SHAPE_SEGMENT || s->generation == 0 || s->body < 0 || s->body >= t->body_used ||
         t->bodies[s->body].type < 0 || s->next < -1 || s->next >= shape_used || ((s->in_move | s->is_sensor | s->sensor_events | s->pre_solve_events | s->hit_events) & ~1))
         return 0;
-    if (!ga2d__finite(s->density) || !ga2d__finite(s->friction) || !ga2d__finite(s->restitution) || s->density < 0 ||
+    if (!ga2d__finite(s->density) || !ga2d__finite(s->friction) || !ga2d__finite(s->restitution) ||
+        !ga2d__finite(s->tangent_speed) || s->density < 0 ||
         s->friction < 0 || s->restitution < 0)
         return 0;
     if (ga2d__geometry_check(&s->geom, t->bodies[s->body].type, s->density, &g) != GA2D_OK) return 0;
