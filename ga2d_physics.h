@@ -432,6 +432,11 @@ typedef struct ga2d_polygon {
 typedef struct ga2d_circle { ga2d_vec center; ga2d_real radius; } ga2d_circle;
 typedef struct ga2d_capsule { ga2d_vec center1, center2; ga2d_real radius; } ga2d_capsule;
 typedef struct ga2d_segment { ga2d_vec point1, point2; } ga2d_segment;
+/* A segment of a chain: its neighbours' far ends (ghost1 before point1,
+   ghost2 after point2) let a body slide across the joins without catching.
+   One-sided: it pushes only toward its left, the side its normal
+   (point2 - point1) e12 points to. */
+typedef struct ga2d_chain_segment { ga2d_vec ghost1; ga2d_segment segment; ga2d_vec ghost2; } ga2d_chain_segment;
 
 typedef enum ga2d_shape_type {
     GA2D_SHAPE_CIRCLE,
@@ -451,6 +456,7 @@ typedef struct ga2d_geometry {
         ga2d_capsule capsule;
         ga2d_polygon polygon;
         ga2d_segment segment;
+        ga2d_chain_segment chain_segment;
     } as;
 } ga2d_geometry;
 
@@ -997,6 +1003,37 @@ GA2D_API ga2d_aabb ga2d_shape_fat_aabb(const ga2d_world *w, ga2d_shape_id id);
 /* Up to `capacity` of a body's shapes, in creation order; returns how many it has. */
 GA2D_API int ga2d_body_get_shapes(const ga2d_world *w, ga2d_body_id id, ga2d_shape_id *out, int capacity);
 
+/* Terrain: a chain of one-sided segments (ga2d_chain_segment) through
+   `points`, each knowing its neighbours, so bodies slide across the joins
+   without catching.  A segment pushes only toward its left: a ground chain
+   runs left to right; a loop wound counter-clockwise holds bodies inside
+   it, one wound clockwise keeps them out.  An open chain's ends are
+   rounded over as a lone segment's are.  On static and kinematic bodies
+   only. */
+typedef struct ga2d_chain_id { uint32_t index1; uint32_t generation; } ga2d_chain_id; /* zero: null */
+typedef struct ga2d_chain_def {
+    const ga2d_vec *points;   /* in the body's frame; copied */
+    int count;                /* at least 2 (3 for a loop) */
+    int is_loop;              /* the last point joins the first */
+    ga2d_real friction;       /* default 0.6 */
+    ga2d_real restitution;    /* default 0 */
+    ga2d_filter filter;
+    void *user_data;          /* each segment's */
+    int internal_cookie;      /* set by ga2d_default_chain_def(); leave it */
+} ga2d_chain_def;
+GA2D_API ga2d_chain_def ga2d_default_chain_def(void);
+/* The null id on failure, world unchanged; the checked form says why:
+   INVALID_ARGUMENT (NULL, too few points, two consecutive points closer
+   than 64 eps of their size, a dynamic body, negative friction or
+   restitution), NOT_FINITE, TOO_LARGE, STALE_ID, LOCKED, OUT_OF_MEMORY. */
+GA2D_API ga2d_chain_id ga2d_chain_create(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def);
+GA2D_API ga2d_result ga2d_chain_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def, ga2d_chain_id *out);
+/* Destroys the chain's segments (a chain segment cannot be destroyed on
+   its own: ga2d_shape_destroy refuses it). */
+GA2D_API ga2d_result ga2d_chain_destroy(ga2d_world *w, ga2d_chain_id id);
+/* Up to `capacity` of the chain's segments in order; returns how many. */
+GA2D_API int ga2d_chain_get_segments(const ga2d_world *w, ga2d_chain_id id, ga2d_shape_id *out, int capacity);
+
 /* -------------------------------------------------------------- collision */
 /* Tolerances, in metres; a world scales them by its length_units_per_meter.
    Linear slop: the overlap the solver allows to keep contacts steady.
@@ -1045,8 +1082,9 @@ GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, con
                                    ga2d_transform xb, ga2d_manifold *out);
 /* Any two shapes, as ga2d_collide_polygons: one point for a circle
    against anything; up to two for the others.  A capsule or segment whose
-   ends coincide collides as a circle.  Bad input as there, plus a type out
-   of range or a chain segment (INVALID_ARGUMENT; chains live in worlds). */
+   ends coincide collides as a circle; a chain segment only with what is
+   on its left (in front), and with normals its joins allow.  Bad input as
+   there, plus a type out of range (INVALID_ARGUMENT). */
 GA2D_API int ga2d_collide_shapes(const ga2d_geometry *a, ga2d_transform xa, const ga2d_geometry *b, ga2d_transform xb,
                                  ga2d_manifold *out);
 GA2D_API int ga2d_collide_shapes_scaled(const ga2d_geometry *a, ga2d_transform xa, const ga2d_geometry *b,
@@ -2718,6 +2756,12 @@ static int ga2d__collide_circles(ga2d_vec ca, ga2d_real ra, ga2d_vec cb, ga2d_re
     return 1;
 }
 
+/* A segment's or chain segment's segment. */
+static const ga2d_segment *ga2d__segment_of(const ga2d_geometry *g)
+{
+    return g->type == GA2D_SHAPE_CHAIN_SEGMENT ? &g->as.chain_segment.segment : &g->as.segment;
+}
+
 /* A shape as its hull in a frame (x applied unless identity), or as a
    circle (returns 0: centre *c, radius *r) when it has no edges. */
 static int ga2d__geometry_hull(const ga2d_geometry *g, ga2d_transform x, int identity, ga2d__hull *h, ga2d_vec *c,
@@ -2739,8 +2783,8 @@ static int ga2d__geometry_hull(const ga2d_geometry *g, ga2d_transform x, int ide
         radius = g->as.capsule.radius;
         break;
     default: /* segments */
-        p1 = g->as.segment.point1;
-        p2 = g->as.segment.point2;
+        p1 = ga2d__segment_of(g)->point1;
+        p2 = ga2d__segment_of(g)->point2;
         break;
     }
     if (!identity) {
@@ -2753,6 +2797,85 @@ static int ga2d__geometry_hull(const ga2d_geometry *g, ga2d_transform x, int ide
     return 0;
 }
 
+/* Below this sine a normal is a chain segment's own face normal: the
+   rounding of a unit normal (a vertex normal any larger at a straight or
+   valley join is the neighbour's face's to give, and would push sideways). */
+#define GA2D__CHAIN_SIN_TOL (16 * GA2D__EPS)
+
+/* The left (front) normal of a unit direction: d e12. */
+static ga2d_vec ga2d__left(ga2d_vec d) { return ga2d_vec_make(-d.y, d.x); }
+
+/* Whether a chain segment keeps a contact normal u (its frame, from the
+   segment out): it must point to the front; its own face normal is kept;
+   a normal leaning back over an end belongs to that end's vertex, which
+   the neighbour shares.  At a valley (the chain turns left there) the
+   neighbour's face holds whatever lies there; at a hilltop (it turns
+   right) the vertex's normals lie between the two faces' normals, and
+   each segment keeps the half nearer its own; a straight join has no
+   vertex normals at all.  So a body crossing a join meets one face or the
+   other, never an edge that is not there (Catto's ghost vertices). */
+static int ga2d__chain_keeps(const ga2d_chain_segment *cs, ga2d_vec u)
+{
+    ga2d_vec e1, e, n1, n;
+    int back;
+    if (ga2d_vec_normalize(ga2d_vec_sub(cs->segment.point2, cs->segment.point1), &e1) == 0) return 0;
+    n1 = ga2d__left(e1);
+    if (!(ga2d_dot(u, n1) > 0)) return 0;
+    if (GA2D__FABS(ga2d_wedge(n1, u)) <= GA2D__CHAIN_SIN_TOL) return 1;
+    back = ga2d_dot(u, e1) < 0;
+    if (back) ga2d_vec_normalize(ga2d_vec_sub(cs->segment.point1, cs->ghost1), &e);
+    else ga2d_vec_normalize(ga2d_vec_sub(cs->ghost2, cs->segment.point2), &e);
+    n = ga2d__left(e);
+    /* the turn at that end, walking the chain: left (> 0) is a valley */
+    if ((back ? ga2d_wedge(e, e1) : ga2d_wedge(e1, e)) > 0) return 0;
+    /* within the vertex's normals (from n1 round to n, not past n: a
+       straight join has none but n1's), and in n1's half of them */
+    if ((back ? ga2d_wedge(u, n) : ga2d_wedge(n, u)) < 0) return 0;
+    return ga2d_dot(u, n1) >= ga2d_dot(u, n);
+}
+
+/* A chain segment (A, placed by xa) against any shape but a chain's (B):
+   the segment's manifold, kept when B's centre lies in front of it and
+   the normal is one the joins allow (ga2d__chain_keeps). */
+static int ga2d__collide_chain(const ga2d_chain_segment *cs, ga2d_transform xa, const ga2d_geometry *gb, ga2d_transform xb,
+                               ga2d_real slop, ga2d_real margin, ga2d_manifold *m)
+{
+    ga2d__hull A, B;
+    ga2d_vec cb, centre, e1, d_ab = ga2d_vec_sub(xb.p, xa.p);
+    ga2d_real rb = 0;
+    int hb, n, j;
+    memset(m, 0, sizeof *m);
+    if (!ga2d__segment_hull(cs->segment.point1, cs->segment.point2, 0, &A)) return 0;
+    hb = ga2d__geometry_hull(gb, ga2d_transform_inv_mul(xa, xb), 0, &B, &cb, &rb);
+    centre = cb;
+    if (hb) {
+        centre = ga2d_vec_make(0, 0);
+        for (j = 0; j < B.count; ++j) centre = ga2d_vec_add(centre, ga2d_vec_scale(B.v[j], 1 / (ga2d_real)B.count));
+    }
+    ga2d_vec_normalize(ga2d_vec_sub(cs->segment.point2, cs->segment.point1), &e1);
+    if (ga2d_dot(ga2d__left(e1), ga2d_vec_sub(centre, cs->segment.point1)) < 0) return 0; /* behind: one-sided */
+    n = hb ? ga2d__collide_hulls(&A, &B, xa, d_ab, slop, margin, m) : ga2d__collide_hull_circle(&A, cb, rb, 0, xa, d_ab, margin, m);
+    if (n > 0 && !ga2d__chain_keeps(cs, ga2d_rotate_inv(xa.q, m->normal))) {
+        memset(m, 0, sizeof *m);
+        return 0;
+    }
+    return n;
+}
+
+/* The manifold seen from the other side: B's becomes A's. */
+static void ga2d__flip_manifold(ga2d_manifold *m)
+{
+    int k;
+    m->normal = ga2d_vec_neg(m->normal);
+    for (k = 0; k < m->count; ++k) {
+        ga2d_manifold_point *p = &m->points[k];
+        ga2d_vec t = p->anchor_a;
+        p->anchor_a = p->anchor_b;
+        p->anchor_b = t;
+        p->id ^= (uint32_t)1 << 16;
+    }
+}
+
 /* Any pair of shapes, in A's frame. */
 static int ga2d__collide_geometries(const ga2d_geometry *ga, ga2d_transform xa, const ga2d_geometry *gb, ga2d_transform xb,
                                     ga2d_real slop, ga2d_real margin, ga2d_manifold *m)
@@ -2761,6 +2884,16 @@ static int ga2d__collide_geometries(const ga2d_geometry *ga, ga2d_transform xa, 
     ga2d_vec ca, cb, d_ab = ga2d_vec_sub(xb.p, xa.p);
     ga2d_real ra = 0, rb = 0;
     int ha, hb;
+    if (ga->type == GA2D_SHAPE_CHAIN_SEGMENT && gb->type == GA2D_SHAPE_CHAIN_SEGMENT) {
+        memset(m, 0, sizeof *m);
+        return 0;
+    }
+    if (ga->type == GA2D_SHAPE_CHAIN_SEGMENT) return ga2d__collide_chain(&ga->as.chain_segment, xa, gb, xb, slop, margin, m);
+    if (gb->type == GA2D_SHAPE_CHAIN_SEGMENT) {
+        int n = ga2d__collide_chain(&gb->as.chain_segment, xb, ga, xa, slop, margin, m);
+        ga2d__flip_manifold(m);
+        return n;
+    }
     memset(m, 0, sizeof *m);
     ha = ga2d__geometry_hull(ga, xa, 1, &A, &ca, &ra);
     hb = ga2d__geometry_hull(gb, ga2d_transform_inv_mul(xa, xb), 0, &B, &cb, &rb);
@@ -2837,6 +2970,13 @@ static int ga2d__geometry_input(const ga2d_geometry *g)
         return ga2d__radius_input(g->as.capsule.radius);
     case GA2D_SHAPE_SEGMENT:
         return ga2d__finite_vec(g->as.segment.point1) && ga2d__finite_vec(g->as.segment.point2) ? 0 : -(int)GA2D_ERR_NOT_FINITE;
+    case GA2D_SHAPE_CHAIN_SEGMENT: {
+        const ga2d_chain_segment *c = &g->as.chain_segment;
+        return ga2d__finite_vec(c->ghost1) && ga2d__finite_vec(c->segment.point1) && ga2d__finite_vec(c->segment.point2) &&
+                       ga2d__finite_vec(c->ghost2)
+                   ? 0
+                   : -(int)GA2D_ERR_NOT_FINITE;
+    }
     default: return -(int)GA2D_ERR_INVALID_ARGUMENT;
     }
 }
@@ -2997,6 +3137,16 @@ typedef struct ga2d__body {
     ga2d_real extent;            /* the farthest its shapes reach from the centre */
 } ga2d__body;
 
+/* A chain slot: its body and its segments' shape slots, in order. */
+typedef struct ga2d__chain {
+    int type;                    /* 0 live, -1 free */
+    uint32_t generation;
+    int next_free;
+    int body;
+    int *shapes;
+    int count;
+} ga2d__chain;
+
 /* A shape slot: a body's piece of geometry, in the body's frame, with its
    material and filter; it has the broadphase proxy, and contacts join
    shapes.  Shapes live in a pool (stable index, free list) and on their
@@ -3014,6 +3164,7 @@ typedef struct ga2d__shape {
     void *user_data;
     int is_sensor, sensor_events, pre_solve_events, hit_events;
     ga2d_real tangent_speed;
+    int chain;                   /* a chain segment's chain slot, else -1 */
     int *visitors;               /* a sensor's: the shapes overlapping it, ascending */
     int visitor_count, visitor_capacity;
     ga2d_geometry geom;
@@ -3082,6 +3233,8 @@ struct ga2d_world {
     int body_capacity, body_used, body_count, free_head;
     ga2d__shape *shapes;
     int shape_capacity, shape_used, shape_count, shape_free;
+    ga2d__chain *chains;
+    int chain_capacity, chain_used, chain_count, chain_free;
     int sensor_count;            /* live sensor shapes: none, and sensing costs nothing */
     ga2d_sensor_event *sensor_begin, *sensor_end;
     int sensor_begin_count, sensor_end_count, sensor_begin_capacity, sensor_end_capacity;
@@ -3623,8 +3776,8 @@ static ga2d_aabb ga2d__shape_aabb(const ga2d__shape *s, ga2d_transform x)
         r = g->as.capsule.radius;
         break;
     default:
-        p1 = ga2d_transform_apply(x, g->as.segment.point1);
-        p2 = ga2d_transform_apply(x, g->as.segment.point2);
+        p1 = ga2d_transform_apply(x, ga2d__segment_of(g)->point1);
+        p2 = ga2d_transform_apply(x, ga2d__segment_of(g)->point2);
         break;
     }
     box.lower = ga2d_vec_make(p1.x < p2.x ? p1.x : p2.x, p1.y < p2.y ? p1.y : p2.y);
@@ -3995,6 +4148,7 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     w->tag = ga2d__world_tag(w);
     w->free_head = -1;
     w->shape_free = -1;
+    w->chain_free = -1;
     w->trees[0].root = w->trees[0].free_list = -1;
     w->trees[1].root = w->trees[1].free_list = -1;
     w->contact_free = -1;
@@ -4029,6 +4183,11 @@ static void ga2d__destroy_now(ga2d_world *w)
         for (k = 0; k < w->shape_used; ++k) GA2D__FREE_ARRAY(a, w->shapes[k].visitors, w->shapes[k].visitor_capacity);
     }
     GA2D__FREE_ARRAY(a, w->shapes, w->shape_capacity);
+    {
+        int k;
+        for (k = 0; k < w->chain_used; ++k) GA2D__FREE_ARRAY(a, w->chains[k].shapes, w->chains[k].count);
+    }
+    GA2D__FREE_ARRAY(a, w->chains, w->chain_capacity);
     GA2D__FREE_ARRAY(a, w->sensor_begin, w->sensor_begin_capacity);
     GA2D__FREE_ARRAY(a, w->hit_events, w->hit_capacity);
     GA2D__FREE_ARRAY(a, w->sensor_end, w->sensor_end_capacity);
@@ -4351,6 +4510,17 @@ static ga2d_result ga2d__geometry_check(const ga2d_geometry *g, int body_type, g
                     ? GA2D_OK : GA2D_ERR_INVALID_ARGUMENT;
         memset(&m, 0, sizeof m);
         break;
+    case GA2D_SHAPE_CHAIN_SEGMENT: {
+        const ga2d_chain_segment *cs = &g->as.chain_segment;
+        c.as.chain_segment = *cs;
+        if ((r = ga2d__point_check(cs->ghost1)) == GA2D_OK && (r = ga2d__point_check(cs->segment.point1)) == GA2D_OK &&
+            (r = ga2d__point_check(cs->segment.point2)) == GA2D_OK && (r = ga2d__point_check(cs->ghost2)) == GA2D_OK)
+            r = ga2d__ends_apart(cs->segment.point1, cs->segment.point2) && ga2d__ends_apart(cs->ghost1, cs->segment.point1) &&
+                        ga2d__ends_apart(cs->segment.point2, cs->ghost2) && body_type != GA2D_BODY_DYNAMIC
+                    ? GA2D_OK : GA2D_ERR_INVALID_ARGUMENT;
+        memset(&m, 0, sizeof m);
+        break;
+    }
     default: return GA2D_ERR_INVALID_ARGUMENT;
     }
     if (r != GA2D_OK) return r;
@@ -4421,7 +4591,7 @@ static ga2d_mass ga2d__shape_mass(const ga2d__shape *s, ga2d_real rho)
     case GA2D_SHAPE_POLYGON: ga2d_polygon_mass_checked(&s->geom.as.polygon, rho, &m); break;
     case GA2D_SHAPE_CIRCLE: ga2d_circle_mass_checked(&s->geom.as.circle, rho, &m); break;
     case GA2D_SHAPE_CAPSULE: ga2d_capsule_mass_checked(&s->geom.as.capsule, rho, &m); break;
-    default: m.center = ga2d_vec_scale(ga2d_vec_add(s->geom.as.segment.point1, s->geom.as.segment.point2), GA2D__R(0.5)); break;
+    default: m.center = ga2d_vec_scale(ga2d_vec_add(ga2d__segment_of(&s->geom)->point1, ga2d__segment_of(&s->geom)->point2), GA2D__R(0.5)); break;
     }
     return m;
 }
@@ -4445,8 +4615,8 @@ static ga2d_real ga2d__shape_reach(const ga2d__shape *s, ga2d_vec c)
         e = ga2d_vec_length(ga2d_vec_sub(g->as.capsule.center2, c));
         return (d > e ? d : e) + g->as.capsule.radius;
     default:
-        d = ga2d_vec_length(ga2d_vec_sub(g->as.segment.point1, c));
-        e = ga2d_vec_length(ga2d_vec_sub(g->as.segment.point2, c));
+        d = ga2d_vec_length(ga2d_vec_sub(ga2d__segment_of(g)->point1, c));
+        e = ga2d_vec_length(ga2d_vec_sub(ga2d__segment_of(g)->point2, c));
         return d > e ? d : e;
     }
 }
@@ -4549,6 +4719,7 @@ static int ga2d__shape_add(ga2d_world *w, int slot, const ga2d_shape_def *def, c
     sh->pre_solve_events = def->enable_pre_solve_events != 0;
     sh->hit_events = def->enable_hit_events != 0;
     sh->tangent_speed = def->tangent_speed;
+    sh->chain = -1;
     w->sensor_count += sh->is_sensor;
     if (b->shape_tail >= 0) w->shapes[b->shape_tail].next = k;
     else b->shape_head = k;
@@ -4820,6 +4991,8 @@ static void ga2d__shape_free(ga2d_world *w, int k)
     w->shape_free = k;
 }
 
+static void ga2d__chain_free(ga2d_world *w, int k);
+
 GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
 {
     ga2d__body *b;
@@ -4837,6 +5010,11 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
     }
     ga2d__destroy_body_contacts(w, slot, 0);
     while (b->shape_head >= 0) ga2d__shape_free(w, b->shape_head);
+    {
+        int k;
+        for (k = 0; k < w->chain_used; ++k)
+            if (w->chains[k].type == 0 && w->chains[k].body == slot) ga2d__chain_free(w, k);
+    }
     ga2d__moving_remove(w, slot);
     b->type = -1;
     b->generation = b->generation + 1 ? b->generation + 1 : 1;
@@ -4966,16 +5144,27 @@ GA2D_API ga2d_shape_id ga2d_shape_create_segment(ga2d_world *w, ga2d_body_id bod
     return sg ? ga2d__shape_create(w, body, def, &g) : ga2d_shape_id_null();
 }
 
+static void ga2d__shape_remove(ga2d_world *w, int k);
+
 GA2D_API ga2d_result ga2d_shape_destroy(ga2d_world *w, ga2d_shape_id id, int update_body_mass)
 {
     ga2d__shape *sh;
     ga2d_result r = ga2d__shape_writable(w, id, &sh);
-    int k, slot, link;
+    int slot;
     if (r != GA2D_OK) return r;
-    k = (int)id.index1 - 1;
+    if (sh->type == GA2D_SHAPE_CHAIN_SEGMENT) return GA2D_ERR_INVALID_ARGUMENT; /* ga2d_chain_destroy */
     slot = sh->body;
-    /* its contacts end; what rested on it wakes */
-    link = ga2d__first_edge(w, slot);
+    ga2d__shape_remove(w, (int)id.index1 - 1);
+    if (update_body_mass) ga2d__update_mass(w, slot, ga2d__body_origin(&w->bodies[slot]));
+    ga2d__wake(w, slot);
+    return GA2D_OK;
+}
+
+/* A shape goes: its contacts end, what rested on it wakes, its slot is
+   freed. */
+static void ga2d__shape_remove(ga2d_world *w, int k)
+{
+    int slot = w->shapes[k].body, link = ga2d__first_edge(w, slot);
     while (link >= 0) {
         int ci = link >> 1, next = ga2d__next_edge(w, link);
         const ga2d__contact *ct = &w->contacts[ci];
@@ -4986,9 +5175,6 @@ GA2D_API ga2d_result ga2d_shape_destroy(ga2d_world *w, ga2d_shape_id id, int upd
         link = next;
     }
     ga2d__shape_free(w, k);
-    if (update_body_mass) ga2d__update_mass(w, slot, ga2d__body_origin(&w->bodies[slot]));
-    ga2d__wake(w, slot);
-    return GA2D_OK;
 }
 
 GA2D_API int ga2d_shape_is_valid(const ga2d_world *w, ga2d_shape_id id) { return ga2d__shape_lookup(w, id) != NULL; }
@@ -5100,6 +5286,200 @@ GA2D_API int ga2d_body_get_shapes(const ga2d_world *w, ga2d_body_id id, ga2d_sha
     for (k = b->shape_head; k >= 0; k = w->shapes[k].next, ++n)
         if (out && n < capacity) out[n] = ga2d__shape_id_of(w, k);
     return n;
+}
+
+/* ---------------------------------------------------------------- chains */
+GA2D_API ga2d_chain_def ga2d_default_chain_def(void)
+{
+    ga2d_chain_def d;
+    memset(&d, 0, sizeof d);
+    d.friction = GA2D__R(GA2D_DEFAULT_FRICTION);
+    d.filter = ga2d_default_filter();
+    d.internal_cookie = GA2D_DEF_COOKIE;
+    return d;
+}
+
+/* The one place a chain def's zeros become defaults (see "Defs"). */
+static void ga2d__resolve_chain_def(const ga2d_chain_def *in, ga2d_chain_def *out)
+{
+    ga2d_chain_def dflt = ga2d_default_chain_def();
+    int stamped = in->internal_cookie == GA2D_DEF_COOKIE;
+    memset(out, 0, sizeof *out);
+    out->internal_cookie = GA2D_DEF_COOKIE;
+    GA2D__TAKE(points);
+    GA2D__TAKE(count);
+    GA2D__TAKE(is_loop);
+    GA2D__TAKE(friction);
+    GA2D__TAKE(restitution);
+    GA2D__TAKE(filter);
+    GA2D__TAKE(user_data);
+}
+
+/* A resolved chain def's points and materials against their bounds. */
+static ga2d_result ga2d__chain_def_check(const ga2d_chain_def *d)
+{
+    int i, n;
+    ga2d_result r;
+    if (!d->points || d->count < (d->is_loop ? 3 : 2) || d->count > GA2D__MAX_BODIES) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__finite(d->friction) || !ga2d__finite(d->restitution)) return GA2D_ERR_NOT_FINITE;
+    if (d->friction < 0 || d->restitution < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    for (i = 0; i < d->count; ++i)
+        if ((r = ga2d__point_check(d->points[i])) != GA2D_OK) return r;
+    n = d->is_loop ? d->count : d->count - 1;
+    for (i = 0; i < n; ++i)
+        if (!ga2d__ends_apart(d->points[i], d->points[(i + 1) % d->count])) return GA2D_ERR_INVALID_ARGUMENT;
+    return GA2D_OK;
+}
+
+static ga2d_chain_id ga2d__chain_id_of(const ga2d_world *w, int k)
+{
+    ga2d_chain_id id;
+    id.index1 = (uint32_t)k + 1;
+    id.generation = w->chains[k].generation ^ w->tag;
+    return id;
+}
+
+static ga2d__chain *ga2d__chain_lookup(const ga2d_world *w, ga2d_chain_id id)
+{
+    ga2d__chain *c;
+    if (!w || id.index1 == 0 || id.index1 > (uint32_t)w->chain_used) return NULL;
+    c = &w->chains[id.index1 - 1];
+    if (c->type < 0 || (c->generation ^ w->tag) != id.generation) return NULL;
+    return c;
+}
+
+/* A chain slot's segments are gone: the slot is freed. */
+static void ga2d__chain_free(ga2d_world *w, int k)
+{
+    ga2d__chain *c = &w->chains[k];
+    GA2D__FREE_ARRAY(&w->mem, c->shapes, c->count);
+    c->shapes = NULL;
+    c->count = 0;
+    c->type = -1;
+    c->generation = c->generation + 1 ? c->generation + 1 : 1;
+    c->next_free = w->chain_free;
+    w->chain_free = k;
+    --w->chain_count;
+}
+
+/* Segment i of a chain of n points: its ends and ghosts.  An open chain's
+   end turns down a right angle (its ghost lies behind it), so the end is
+   rounded over as a lone segment's is. */
+static ga2d_chain_segment ga2d__chain_segment_at(const ga2d_chain_def *d, int i)
+{
+    ga2d_chain_segment cs;
+    int n = d->count;
+    const ga2d_vec *p = d->points;
+    cs.segment.point1 = p[i];
+    cs.segment.point2 = p[(i + 1) % n];
+    if (d->is_loop) {
+        cs.ghost1 = p[(i + n - 1) % n];
+        cs.ghost2 = p[(i + 2) % n];
+    } else {
+        ga2d_vec e0 = ga2d_vec_sub(p[1], p[0]), e1 = ga2d_vec_sub(p[n - 1], p[n - 2]);
+        cs.ghost1 = i > 0 ? p[i - 1] : ga2d_vec_sub(p[0], ga2d__left(e0));
+        cs.ghost2 = i + 2 < n ? p[i + 2] : ga2d_vec_sub(p[n - 1], ga2d__left(e1));
+    }
+    return cs;
+}
+
+GA2D_API ga2d_result ga2d_chain_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def, ga2d_chain_id *out)
+{
+    ga2d_chain_def d;
+    ga2d_shape_def sd;
+    ga2d__body *b;
+    ga2d__chain *c;
+    ga2d_result r;
+    int n, i, k, *shapes, moves;
+    if (out) memset(out, 0, sizeof *out);
+    if (!w || !def || !out) return GA2D_ERR_INVALID_ARGUMENT;
+    if ((r = ga2d__writable(w, body, &b)) != GA2D_OK) return r;
+    if (b->type == GA2D_BODY_DYNAMIC) return GA2D_ERR_INVALID_ARGUMENT;
+    ga2d__resolve_chain_def(def, &d);
+    if ((r = ga2d__chain_def_check(&d)) != GA2D_OK) return r;
+    n = d.is_loop ? d.count : d.count - 1;
+    moves = b->type != GA2D_BODY_STATIC;
+    /* every allocation first: the shapes as if none were free, their
+       queue entries, proxies, the chain slot and its list */
+    ga2d__enter(w);
+    k = w->chain_free >= 0 ? w->chain_free : w->chain_used;
+    shapes = NULL;
+    if (!ga2d__grow(&w->mem, (void **)&w->shapes, &w->shape_capacity, w->shape_used + n, sizeof *w->shapes) ||
+        !ga2d__grow(&w->mem, (void **)&w->move_buf, &w->move_capacity, w->shape_used + n, sizeof *w->move_buf) ||
+        !ga2d__tree_reserve(&w->mem, &w->trees[moves], n) ||
+        !ga2d__grow(&w->mem, (void **)&w->chains, &w->chain_capacity, k + 1, sizeof *w->chains) ||
+        !(shapes = (int *)ga2d__alloc(&w->mem, (size_t)n * sizeof *shapes))) {
+        ga2d__leave(w);
+        return GA2D_ERR_OUT_OF_MEMORY;
+    }
+    if (k == w->chain_used) {
+        w->chains[k].generation = 0;
+        ++w->chain_used;
+    } else {
+        w->chain_free = w->chains[k].next_free;
+    }
+    c = &w->chains[k];
+    {
+        uint32_t generation = c->generation + 1;
+        memset(c, 0, sizeof *c);
+        c->generation = generation ? generation : 1;
+    }
+    c->body = ga2d__slot(body);
+    c->shapes = shapes;
+    c->count = n;
+    c->next_free = -1;
+    ++w->chain_count;
+    sd = ga2d_default_shape_def();
+    sd.density = 0;
+    sd.friction = d.friction;
+    sd.restitution = d.restitution;
+    sd.filter = d.filter;
+    sd.user_data = d.user_data;
+    for (i = 0; i < n; ++i) {
+        ga2d_geometry g;
+        memset(&g, 0, sizeof g);
+        g.type = GA2D_SHAPE_CHAIN_SEGMENT;
+        g.as.chain_segment = ga2d__chain_segment_at(&d, i);
+        shapes[i] = ga2d__shape_add(w, c->body, &sd, &g);
+        w->shapes[shapes[i]].chain = k;
+    }
+    ga2d__update_mass(w, c->body, ga2d__body_origin(&w->bodies[c->body]));
+    for (i = 0; i < n; ++i) ga2d__shape_proxy(w, shapes[i]);
+    *out = ga2d__chain_id_of(w, k);
+    ga2d__leave(w);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_chain_id ga2d_chain_create(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def)
+{
+    ga2d_chain_id id;
+    ga2d_chain_create_checked(w, body, def, &id);
+    return id;
+}
+
+GA2D_API ga2d_result ga2d_chain_destroy(ga2d_world *w, ga2d_chain_id id)
+{
+    ga2d__chain *c;
+    int i, slot;
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->lock) return GA2D_ERR_LOCKED;
+    if (!(c = ga2d__chain_lookup(w, id))) return GA2D_ERR_STALE_ID;
+    slot = c->body;
+    ga2d__enter(w);
+    for (i = 0; i < c->count; ++i) ga2d__shape_remove(w, c->shapes[i]);
+    ga2d__chain_free(w, (int)id.index1 - 1);
+    ga2d__update_mass(w, slot, ga2d__body_origin(&w->bodies[slot]));
+    ga2d__leave(w);
+    return GA2D_OK;
+}
+
+GA2D_API int ga2d_chain_get_segments(const ga2d_world *w, ga2d_chain_id id, ga2d_shape_id *out, int capacity)
+{
+    const ga2d__chain *c = ga2d__chain_lookup(w, id);
+    int i;
+    if (!c) return 0;
+    for (i = 0; out && i < c->count && i < capacity; ++i) out[i] = ga2d__shape_id_of(w, c->shapes[i]);
+    return c->count;
 }
 
 GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id) { return ga2d__lookup(w, id) != NULL; }
@@ -7854,6 +8234,7 @@ static void ga2d__io_shape(ga2d__codec *k, ga2d__shape *s)
     ga2d__io_int(k, &s->hit_events);
     ga2d__io_real(k, &s->tangent_speed);
     g->type = (ga2d_shape_type)s->type;
+    if (k->loading) s->chain = -1;
     switch (s->type) {
     case GA2D_SHAPE_POLYGON: ga2d__io_polygon(k, &g->as.polygon); break;
     case GA2D_SHAPE_CIRCLE:
@@ -7868,6 +8249,13 @@ static void ga2d__io_shape(ga2d__codec *k, ga2d__shape *s)
     case GA2D_SHAPE_SEGMENT:
         ga2d__io_vec(k, &g->as.segment.point1);
         ga2d__io_vec(k, &g->as.segment.point2);
+        break;
+    case GA2D_SHAPE_CHAIN_SEGMENT:
+        ga2d__io_vec(k, &g->as.chain_segment.ghost1);
+        ga2d__io_vec(k, &g->as.chain_segment.segment.point1);
+        ga2d__io_vec(k, &g->as.chain_segment.segment.point2);
+        ga2d__io_vec(k, &g->as.chain_segment.ghost2);
+        ga2d__io_int(k, &s->chain);
         break;
     default: k->ok = 0; break;
     }
@@ -8010,6 +8398,23 @@ static void ga2d__snap_payload(const ga2d_world *w, ga2d__codec *k, ga2d__snap_o
             ga2d__io_vec(k, &box.upper);
         }
     }
+    used = w->chain_used;
+    free_head = w->chain_free;
+    count = w->chain_count;
+    ga2d__io_int(k, &used);
+    ga2d__io_int(k, &free_head);
+    ga2d__io_int(k, &count);
+    for (i = 0; i < w->chain_used; ++i) {
+        ga2d__chain c = w->chains[i];
+        int j;
+        ga2d__io_int(k, &c.type);
+        ga2d__io_int(k, &c.next_free);
+        ga2d__io_u32(k, &c.generation);
+        if (c.type < 0) continue;
+        ga2d__io_int(k, &c.body);
+        ga2d__io_int(k, &c.count);
+        for (j = 0; j < c.count; ++j) ga2d__io_int(k, &c.shapes[j]);
+    }
     ga2d__io_u64(k, &serial);
     ga2d__io_int(k, &contacts);
     for (i = 0; i < w->contact_used; ++i) {
@@ -8105,7 +8510,7 @@ static int ga2d__snap_shape_ok(const ga2d_world *t, const ga2d__shape *s, int sh
 {
     ga2d_geometry g;
     if (s->type < 0) return s->type == -1 && s->next_free >= -1 && s->next_free < shape_used;
-    if (s->type > GA2D_SHAPE_SEGMENT || s->generation == 0 || s->body < 0 || s->body >= t->body_used ||
+    if (s->type > GA2D_SHAPE_CHAIN_SEGMENT || s->generation == 0 || s->body < 0 || s->body >= t->body_used ||
         t->bodies[s->body].type < 0 || s->next < -1 || s->next >= shape_used || ((s->in_move | s->is_sensor | s->sensor_events | s->pre_solve_events | s->hit_events) & ~1))
         return 0;
     if (!ga2d__finite(s->density) || !ga2d__finite(s->friction) || !ga2d__finite(s->restitution) ||
@@ -8312,6 +8717,79 @@ static int ga2d__snap_manifold_ok(const ga2d_manifold *m)
     return 1;
 }
 
+/* Reads the chains into t after its shapes: each live chain's segments
+   are live chain segments of its body that name it, each once, and every
+   chain segment is on a live chain.  0: bad snapshot, -1: out of memory. */
+static int ga2d__snap_read_chains(ga2d_world *t, ga2d__codec *k)
+{
+    int used = 0, free_head = 0, count = 0, i, j, live = 0, frees = 0, listed = 0, segments = 0;
+    ga2d__io_int(k, &used);
+    ga2d__io_int(k, &free_head);
+    ga2d__io_int(k, &count);
+    if (!k->ok || used < 0 || used > GA2D__MAX_BODIES || count < 0 || count > used || free_head < -1 ||
+        free_head >= used || (size_t)used > (k->n - k->at) / (2 * sizeof(int) + sizeof(uint32_t)))
+        return 0;
+    if (used > 0 && !ga2d__grow(&t->mem, (void **)&t->chains, &t->chain_capacity, used, sizeof *t->chains)) return -1;
+    if (used > 0) memset(t->chains, 0, (size_t)used * sizeof *t->chains);
+    t->chain_used = used;
+    t->chain_count = count;
+    t->chain_free = free_head;
+    for (i = 0; i < used; ++i) {
+        ga2d__chain *c = &t->chains[i];
+        int n = 0;
+        ga2d__io_int(k, &c->type);
+        ga2d__io_int(k, &c->next_free);
+        ga2d__io_u32(k, &c->generation);
+        if (!k->ok || c->type < -1 || c->type > 0) return 0;
+        if (c->type < 0) {
+            if (c->next_free < -1 || c->next_free >= used) return 0;
+            ++frees;
+            continue;
+        }
+        ga2d__io_int(k, &c->body);
+        ga2d__io_int(k, &n);
+        if (!k->ok || c->generation == 0 || c->body < 0 || c->body >= t->body_used || t->bodies[c->body].type < 0 || n < 1 ||
+            (size_t)n > (k->n - k->at) / sizeof(int))
+            return 0;
+        if (!(c->shapes = (int *)ga2d__alloc(&t->mem, (size_t)n * sizeof *c->shapes))) return -1;
+        c->count = n;
+        for (j = 0; j < n; ++j) {
+            int s = -1;
+            ga2d__io_int(k, &s);
+            if (!k->ok || s < 0 || s >= t->shape_used || t->shapes[s].type != GA2D_SHAPE_CHAIN_SEGMENT ||
+                t->shapes[s].chain != i || t->shapes[s].body != c->body)
+                return 0;
+            c->shapes[j] = s;
+        }
+        ++live;
+        listed += n;
+    }
+    if (live != count || frees != used - count) return 0;
+    for (i = free_head, j = 0; i >= 0; i = t->chains[i].next_free)
+        if (t->chains[i].type != -1 || ++j > frees) return 0;
+    if (j != frees) return 0;
+    /* every chain segment on one chain's list, once: each names a live
+       chain, no list holds a shape twice, and the lists' lengths add up
+       to their number */
+    for (i = 0; i < t->shape_used; ++i) {
+        const ga2d__shape *sh = &t->shapes[i];
+        if (sh->type != GA2D_SHAPE_CHAIN_SEGMENT) continue;
+        if (sh->chain < 0 || sh->chain >= used || t->chains[sh->chain].type != 0) return 0;
+        ++segments;
+    }
+    if (segments != listed) return 0;
+    if (listed > 0) {
+        int *seen = (int *)ga2d__alloc(&t->mem, (size_t)t->shape_used * sizeof *seen), twice = 0;
+        if (!seen) return -1;
+        memset(seen, 0, (size_t)t->shape_used * sizeof *seen);
+        for (i = 0; i < used; ++i)
+            for (j = 0; j < t->chains[i].count; ++j) twice |= seen[t->chains[i].shapes[j]]++;
+        ga2d__free(&t->mem, seen, (size_t)t->shape_used * sizeof *seen);
+        if (twice) return 0;
+    }
+    return 1;
+}
+
 /* Reads the contacts into t, oldest first, so that every body's list comes
    out as it was.  0: bad snapshot, -1: out of memory. */
 static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__codec *k)
@@ -8401,6 +8879,7 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
     ok = r.ok && t->time == t->time && ga2d__finite(t->step.dt) && t->step.dt > 0;
     if (ok) ok = ga2d__snap_read_bodies(t, &r);
     if (ok == 1) ok = ga2d__snap_read_shapes(t, &r);
+    if (ok == 1) ok = ga2d__snap_read_chains(t, &r);
     if (ok == 1) ok = ga2d__snap_read_contacts(t, &r);
     if (ok == 1 && r.at != r.n) ok = 0;
     --t->depth;
@@ -8482,7 +8961,8 @@ static void ga2d__draw_shape(const ga2d_world *w, const ga2d_debug_draw *d, int 
         break;
     default:
         if (d->segment)
-            d->segment(ga2d_transform_apply(x, g->as.segment.point1), ga2d_transform_apply(x, g->as.segment.point2), color, d->context);
+            d->segment(ga2d_transform_apply(x, ga2d__segment_of(g)->point1), ga2d_transform_apply(x, ga2d__segment_of(g)->point2), color,
+                       d->context);
         break;
     }
 }
