@@ -964,6 +964,9 @@ typedef struct ga2d_shape_def {
     ga2d_real tangent_speed;  /* m/s: a conveyor belt: its surface moves this fast
                                  clockwise round its outline (a ground's top: to
                                  +x), and friction carries what touches it; default 0 */
+    ga2d_real rolling_resistance; /* a round shape rolling on it feels a torque of
+                                 at most this times its radius times the normal
+                                 force (the larger of the two shapes'); default 0 */
     int internal_cookie;      /* set by ga2d_default_shape_def(); leave it */
 } ga2d_shape_def;
 GA2D_API ga2d_shape_def ga2d_default_shape_def(void);
@@ -3163,7 +3166,7 @@ typedef struct ga2d__shape {
     ga2d_filter filter;
     void *user_data;
     int is_sensor, sensor_events, pre_solve_events, hit_events;
-    ga2d_real tangent_speed;
+    ga2d_real tangent_speed, rolling_resistance;
     int chain;                   /* a chain segment's chain slot, else -1 */
     int *visitors;               /* a sensor's: the shapes overlapping it, ascending */
     int visitor_count, visitor_capacity;
@@ -4663,7 +4666,7 @@ static void ga2d__update_mass(ga2d_world *w, int slot, ga2d_vec origin)
         b->sim.inv_mass = 1 / b->mass;
         b->inertia = M > 0 ? I : 0;
         b->sim.inv_inertia = b->fixed_rotation || !(b->inertia > 0) ? 0 : 1 / b->inertia;
-        if (b->sim.inv_inertia == 0) b->sim.w = 0;
+        if (b->fixed_rotation) b->sim.w = 0;
     }
     b->extent = 0;
     for (k = b->shape_head; k >= 0; k = w->shapes[k].next) {
@@ -4719,6 +4722,7 @@ static int ga2d__shape_add(ga2d_world *w, int slot, const ga2d_shape_def *def, c
     sh->pre_solve_events = def->enable_pre_solve_events != 0;
     sh->hit_events = def->enable_hit_events != 0;
     sh->tangent_speed = def->tangent_speed;
+    sh->rolling_resistance = def->rolling_resistance;
     sh->chain = -1;
     w->sensor_count += sh->is_sensor;
     if (b->shape_tail >= 0) w->shapes[b->shape_tail].next = k;
@@ -4805,7 +4809,6 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
     if (moves) {
         b->sim.v = def->velocity;
         b->sim.w = (b->fixed_rotation && def->type == GA2D_BODY_DYNAMIC) ? 0 : def->angular_velocity;
-        if (b->sim.inv_inertia == 0 && def->type == GA2D_BODY_DYNAMIC) b->sim.w = 0;
         if (b->awake) ga2d__moving_add(w, slot);
     }
     if (shape >= 0) ga2d__shape_proxy(w, shape);
@@ -5067,6 +5070,7 @@ static void ga2d__resolve_shape_def(const ga2d_shape_def *in, ga2d_shape_def *ou
     GA2D__TAKE(enable_pre_solve_events);
     GA2D__TAKE(enable_hit_events);
     GA2D__TAKE(tangent_speed);
+    GA2D__TAKE(rolling_resistance);
 }
 
 GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def,
@@ -5081,9 +5085,10 @@ GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body,
     if (!w || !def || !g || !out) return GA2D_ERR_INVALID_ARGUMENT;
     if ((r = ga2d__writable(w, body, &b)) != GA2D_OK) return r;
     ga2d__resolve_shape_def(def, &d);
-    if (!ga2d__finite(d.density) || !ga2d__finite(d.friction) || !ga2d__finite(d.restitution) || !ga2d__finite(d.tangent_speed))
+    if (!ga2d__finite(d.density) || !ga2d__finite(d.friction) || !ga2d__finite(d.restitution) || !ga2d__finite(d.tangent_speed) ||
+        !ga2d__finite(d.rolling_resistance))
         return GA2D_ERR_NOT_FINITE;
-    if (d.density < 0 || d.friction < 0 || d.restitution < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    if (d.density < 0 || d.friction < 0 || d.restitution < 0 || d.rolling_resistance < 0) return GA2D_ERR_INVALID_ARGUMENT;
     if ((r = ga2d__geometry_check(g, b->type, d.density, &clean)) != GA2D_OK) return r;
     ga2d__enter(w);
     if (!ga2d__shape_reserve(w, b->type != GA2D_BODY_STATIC)) {
@@ -5829,6 +5834,7 @@ struct ga2d__contact_constraint {
     ga2d_real round_a, round_b;  /* the shapes' radii: their round parts (ga2d__point_now) */
     int hits;                    /* a shape reports hits: the points' approach speeds are kept */
     ga2d_real tangent_speed;     /* the surfaces' sliding along (ny, -nx): friction's target */
+    ga2d_real rolling;           /* the largest torque impulse per unit normal impulse: c r */
     ga2d__cpoint p[2];
 };
 
@@ -5971,6 +5977,8 @@ struct ga2d__group {
     ga2d__w tw;             /* +-1/2 where one side is round: the point slides with it (ga2d__point_now) */
     int conveyor;           /* a lane has a tangent speed (tspeed) */
     ga2d__w tspeed;
+    int rolling;            /* a lane has rolling resistance: rr = c r, rmass = 1/(iA + iB), rimp its impulse */
+    ga2d__w rr, rmass, rimp;
 };
 
 /* A soft constraint seen by an implicit step (ga2d__make_soft). */
@@ -6126,6 +6134,12 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
            outward normal is -n) along -t: B relative to A, s_a + s_b less */
         cc->tangent_speed = (w->shapes[ct->shape_a].tangent_speed + w->shapes[ct->shape_b].tangent_speed) *
                             w->def.length_units_per_meter;
+        {
+            /* rolling resistance: the larger coefficient at the rolling
+               radius (a round side's; none between sharp shapes) */
+            ga2d_real rra = w->shapes[ct->shape_a].rolling_resistance, rrb = w->shapes[ct->shape_b].rolling_resistance;
+            cc->rolling = (rra > rrb ? rra : rrb) * (cc->round_a > cc->round_b ? cc->round_a : cc->round_b);
+        }
         /* anchors from the centres, taken from the origin-relative ones so
            that no large coordinates are subtracted */
         ca = ga2d_rotate(a->q, a->local_center);
@@ -6539,6 +6553,10 @@ static void ga2d__warm_start(ga2d__step_context *c, int begin, int end)
             ga2d__wpoint_now(g, k, &A, &B, &r);
             ga2d__wapply(g, &A, &B, &r, px, py);
         }
+        if (g->rolling) { /* the rolling resistance's, as the points' */
+            A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, g->rimp));
+            B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, g->rimp));
+        }
         ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
         ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
     }
@@ -6614,6 +6632,18 @@ static void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int 
             g->timp[k] = total;
             ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, dt), ga2d__wmul(ty, dt));
         }
+        if (g->rolling) {
+            /* rolling resistance: a torque impulse against the bodies'
+               relative spin, accumulated within +-c r times the normal
+               impulse (the points' sum) */
+            ga2d__w cap = ga2d__wmul(g->rr, ga2d__wadd(g->nimp[0], g->nimp[1]));
+            ga2d__w dl = ga2d__wsub(zero, ga2d__wmul(g->rmass, ga2d__wsub(B.w, A.w)));
+            ga2d__w total = ga2d__wclamp(ga2d__wadd(g->rimp, dl), ga2d__wsub(zero, cap), cap);
+            dl = ga2d__wsub(total, g->rimp);
+            g->rimp = total;
+            A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, dl));
+            B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, dl));
+        }
         ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
         ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
     }
@@ -6659,6 +6689,10 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->oby, l) = ob.y;
     GA2D__LANE(g->tspeed, l) = c->tangent_speed;
     if (c->tangent_speed != 0) g->conveyor = 1;
+    GA2D__LANE(g->rr, l) = c->rolling;
+    GA2D__LANE(g->rmass, l) = c->inv_ia + c->inv_ib > 0 ? 1 / (c->inv_ia + c->inv_ib) : 0;
+    GA2D__LANE(g->rimp, l) = 0;
+    if (c->rolling != 0) g->rolling = 1;
     GA2D__LANE(g->tw, l) = (c->round_a != 0) == (c->round_b != 0) ? 0 : (c->round_b != 0 ? GA2D__R(0.5) : GA2D__R(-0.5));
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
@@ -6698,6 +6732,7 @@ static void ga2d__group_open(ga2d__group *g)
     g->skip = 0;
     g->round = 0;
     g->conveyor = 0;
+    g->rolling = 0;
 }
 
 /* The first group from gi on with a free lane (or group_count): full
@@ -8233,6 +8268,7 @@ static void ga2d__io_shape(ga2d__codec *k, ga2d__shape *s)
     ga2d__io_int(k, &s->pre_solve_events);
     ga2d__io_int(k, &s->hit_events);
     ga2d__io_real(k, &s->tangent_speed);
+    ga2d__io_real(k, &s->rolling_resistance);
     g->type = (ga2d_shape_type)s->type;
     if (k->loading) s->chain = -1;
     switch (s->type) {
@@ -8514,7 +8550,7 @@ static int ga2d__snap_shape_ok(const ga2d_world *t, const ga2d__shape *s, int sh
         t->bodies[s->body].type < 0 || s->next < -1 || s->next >= shape_used || ((s->in_move | s->is_sensor | s->sensor_events | s->pre_solve_events | s->hit_events) & ~1))
         return 0;
     if (!ga2d__finite(s->density) || !ga2d__finite(s->friction) || !ga2d__finite(s->restitution) ||
-        !ga2d__finite(s->tangent_speed) || s->density < 0 ||
+        !ga2d__finite(s->tangent_speed) || !ga2d__finite(s->rolling_resistance) || s->rolling_resistance < 0 || s->density < 0 ||
         s->friction < 0 || s->restitution < 0)
         return 0;
     if (ga2d__geometry_check(&s->geom, t->bodies[s->body].type, s->density, &g) != GA2D_OK) return 0;
