@@ -1,5 +1,6 @@
-/* ga2d_physics.h - v0.8.2 - 2D rigid-body physics of convex polygons,
-   written in the geometric algebra of the plane.   MIT / public domain.
+/* ga2d_physics.h - v0.9.0 - 2D rigid-body physics of circles, capsules,
+   polygons, segments and chains, written in the geometric algebra of the
+   plane.   MIT / public domain.
 
    ==========================================================================
    WHAT IT IS
@@ -9,18 +10,23 @@
 
      - the geometric algebra G(2,0) of the plane: vectors, bivectors, full
        multivectors with geometric / outer / inner products, and rotors;
-     - convex polygons: validated construction, convex hull of a point
-       cloud, boxes and regular polygons, transforms and bounding boxes;
-     - exact mass properties of a polygon (mass, centre of mass, moment of
-       inertia), precise even far from the origin;
+     - shapes: circles, capsules, convex polygons (validated, with a
+       convex hull of a point cloud, boxes and regular polygons) with an
+       optional radius, segments and one-sided chains; bodies of any
+       number of them;
+     - exact mass properties of every shape and of a body as their sum
+       (mass, centre of mass, moment of inertia), precise even far from
+       the origin;
      - a world of static, kinematic and dynamic bodies moving under
        gravity, forces, torques, impulses and a user force field, with a
        choice of integrator and rotor update;
-     - collision detection: SAT contact manifolds (usable alone, without a
-       world) and a broadphase of dynamic AABB trees that keeps the world's
-       contact list, with begin/end events and filtering;
+     - collision detection: manifolds for every pair of shapes (usable
+       alone, without a world) and a broadphase of dynamic AABB trees that
+       keeps the world's contact list, with begin/end and hit events,
+       filtering, sensors and a pre-solve callback;
      - a contact solver (soft step by default; PGS with Baumgarte or NGS
-       selectable) with friction, restitution and islands that sleep.
+       selectable) with friction, rolling, conveyor belts, rolling
+       resistance, restitution and islands that sleep.
 
    ==========================================================================
    HOW TO USE IT
@@ -283,8 +289,8 @@
 #include <stdint.h>
 
 #define GA2D_VERSION_MAJOR 0
-#define GA2D_VERSION_MINOR 8
-#define GA2D_VERSION_PATCH 2
+#define GA2D_VERSION_MINOR 9
+#define GA2D_VERSION_PATCH 0
 
 #ifndef GA2D_MAX_POLYGON_VERTICES
 #define GA2D_MAX_POLYGON_VERTICES 8
@@ -9039,6 +9045,20 @@ static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
 ------------------------------------------------------------------------------
 VERSION HISTORY (newest first)
 ------------------------------------------------------------------------------
+   0.9.0  shapes: bodies of any number of circles, capsules, convex and
+          rounded polygons, segments and one-sided chains, each with its
+          own material, filter and user data; exact mass of each and of
+          the body as their sum; manifolds for every pair (the world-free
+          ga2d_collide_shapes); round shapes roll (a round anchor's radius
+          does not turn with its body, and the shared point slides with
+          the round side); sensors with bookended events; hit events; a
+          pre-solve callback; conveyor belts and rolling resistance;
+          ga2d_body_get_contacts faces out of the asked-for body; the
+          default body def has no polygon (a body gets shapes, or
+          def.polygon as a shortcut); makers that say why they refuse;
+          snapshots version 7 (shapes, sensors' overlaps, chains); inside,
+          the body in parts (its integration state apart); one-polygon
+          worlds step bit for bit as 0.8.2.
    0.8.2  a def zero-initialised by hand is the defaults, switches
           included (its enable_* fields read 0 as off, and friction, sleep,
           warm starting and restitution vanished); the default functions
