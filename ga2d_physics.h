@@ -807,6 +807,11 @@ typedef struct ga2d_world_counters {
     int manifolds_carried;  /* touching manifolds the last step carried
                                along rather than computed anew (pairs that
                                moved by under half a slop) */
+    int shape_count;        /* live shapes */
+    int sensor_tests;       /* overlap tests the sensors made in the last
+                               step (0 in a world without sensors) */
+    int round_contacts;     /* contacts solved in the last step with a
+                               round shape (the solver's round-anchor work) */
 } ga2d_world_counters;
 
 GA2D_API ga2d_world_def ga2d_default_world_def(void);
@@ -4249,6 +4254,7 @@ GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w)
     if (!w) return c;
     c = w->counters;
     c.body_count = w->body_count;
+    c.shape_count = w->shape_count;
     c.moving_body_count = w->moving_count;
     c.pair_count = w->contact_count;
     c.touching_count = ga2d_world_get_contacts(w, NULL, 0);
@@ -4925,6 +4931,7 @@ static void ga2d__update_sensors(ga2d__step_context *c)
         if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
         for (i = 0, n = 0; i < w->sensor_scratch_count; ++i)
             if (ga2d__sensor_sees(w, se, w->sensor_scratch[i])) w->sensor_scratch[n++] = w->sensor_scratch[i];
+        w->counters.sensor_tests += w->sensor_scratch_count;
         if (n > 1) qsort(w->sensor_scratch, (size_t)n, sizeof *w->sensor_scratch, ga2d__cmp_int);
         if (!ga2d__grow(&w->mem, (void **)&se->visitors, &se->visitor_capacity, n, sizeof *se->visitors)) {
             c->error = GA2D_ERR_OUT_OF_MEMORY;
@@ -6136,6 +6143,7 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->round_a = ga2d__shape_radius(&w->shapes[ct->shape_a]);
         cc->round_b = ga2d__shape_radius(&w->shapes[ct->shape_b]);
         cc->hits = w->shapes[ct->shape_a].hit_events || w->shapes[ct->shape_b].hit_events;
+        if (cc->round_a != 0 || cc->round_b != 0) ++w->counters.round_contacts;
         /* A's surface slides along t = (ny, -nx) at its speed, B's (whose
            outward normal is -n) along -t: B relative to A, s_a + s_b less */
         cc->tangent_speed = (w->shapes[ct->shape_a].tangent_speed + w->shapes[ct->shape_b].tangent_speed) *
@@ -7803,6 +7811,8 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     w->counters.force_evaluations = 0;
     w->counters.rotation_updates = 0;
     w->counters.speed_caps = 0;
+    w->counters.sensor_tests = 0;
+    w->counters.round_contacts = 0;
 }
 
 /* Book-keeping after the impulses are stored: each constraint that
@@ -8168,6 +8178,9 @@ static void ga2d__io_counters(ga2d__codec *k, ga2d_world_counters *c)
     ga2d__io_int(k, &c->island_count);
     ga2d__io_int(k, &c->speed_caps);
     ga2d__io_int(k, &c->manifolds_carried);
+    ga2d__io_int(k, &c->shape_count);
+    ga2d__io_int(k, &c->sensor_tests);
+    ga2d__io_int(k, &c->round_contacts);
 }
 
 static void ga2d__io_polygon(ga2d__codec *k, ga2d_polygon *p)
