@@ -5118,48 +5118,38 @@ GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body,
     return GA2D_OK;
 }
 
-/* The typed makers: a geometry each. */
-static ga2d_shape_id ga2d__shape_create(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_geometry *g)
+/* The typed makers: a geometry each, copied into the union's start. */
+static ga2d_shape_id ga2d__shape_create(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, ga2d_shape_type type,
+                                        const void *src, size_t size)
 {
-    ga2d_shape_id id;
-    ga2d_shape_create_checked(w, body, def, g, &id);
+    ga2d_geometry g;
+    ga2d_shape_id id = ga2d_shape_id_null();
+    if (!src) return id;
+    memset(&g, 0, sizeof g);
+    g.type = type;
+    memcpy(&g.as, src, size);
+    ga2d_shape_create_checked(w, body, def, &g, &id);
     return id;
 }
 
 GA2D_API ga2d_shape_id ga2d_shape_create_circle(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_circle *c)
 {
-    ga2d_geometry g;
-    memset(&g, 0, sizeof g);
-    g.type = GA2D_SHAPE_CIRCLE;
-    if (c) g.as.circle = *c;
-    return c ? ga2d__shape_create(w, body, def, &g) : ga2d_shape_id_null();
+    return ga2d__shape_create(w, body, def, GA2D_SHAPE_CIRCLE, c, sizeof *c);
 }
 
 GA2D_API ga2d_shape_id ga2d_shape_create_capsule(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_capsule *c)
 {
-    ga2d_geometry g;
-    memset(&g, 0, sizeof g);
-    g.type = GA2D_SHAPE_CAPSULE;
-    if (c) g.as.capsule = *c;
-    return c ? ga2d__shape_create(w, body, def, &g) : ga2d_shape_id_null();
+    return ga2d__shape_create(w, body, def, GA2D_SHAPE_CAPSULE, c, sizeof *c);
 }
 
 GA2D_API ga2d_shape_id ga2d_shape_create_polygon(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_polygon *p)
 {
-    ga2d_geometry g;
-    memset(&g, 0, sizeof g);
-    g.type = GA2D_SHAPE_POLYGON;
-    if (p) g.as.polygon = *p;
-    return p ? ga2d__shape_create(w, body, def, &g) : ga2d_shape_id_null();
+    return ga2d__shape_create(w, body, def, GA2D_SHAPE_POLYGON, p, sizeof *p);
 }
 
 GA2D_API ga2d_shape_id ga2d_shape_create_segment(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_segment *sg)
 {
-    ga2d_geometry g;
-    memset(&g, 0, sizeof g);
-    g.type = GA2D_SHAPE_SEGMENT;
-    if (sg) g.as.segment = *sg;
-    return sg ? ga2d__shape_create(w, body, def, &g) : ga2d_shape_id_null();
+    return ga2d__shape_create(w, body, def, GA2D_SHAPE_SEGMENT, sg, sizeof *sg);
 }
 
 static void ga2d__shape_remove(ga2d_world *w, int k);
