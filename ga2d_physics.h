@@ -985,12 +985,13 @@ GA2D_API ga2d_shape_def ga2d_default_shape_def(void);
 /* Each returns the null id on failure (then the world is unchanged); the
    _checked forms say why: STALE_ID (the body), LOCKED (from a callback or
    a step), INVALID_ARGUMENT (NULL, a negative density, friction,
-   restitution or radius; a capsule whose ends coincide: make it a
-   circle; a segment of zero length), NOT_FINITE, TOO_LARGE (beyond
-   GA2D_MAX_COORDINATE), the polygon's checks as ga2d_polygon_make's,
-   DEGENERATE (a dynamic body's shapes would give it no mass or inertia),
-   OUT_OF_MEMORY.  A segment has no area: it goes on static and kinematic
-   bodies (INVALID_ARGUMENT on a dynamic one). */
+   restitution or radius, a type out of range), NOT_FINITE, TOO_LARGE
+   (beyond GA2D_MAX_COORDINATE), the polygon's checks as
+   ga2d_polygon_make's, DEGENERATE (a capsule whose ends coincide within
+   64 eps of its size is a circle: make a circle; a segment of zero
+   length; a shape too small to give a dynamic body a mass and inertia
+   whose inverses are finite), OUT_OF_MEMORY.  A segment has no area: it
+   goes on static and kinematic bodies (INVALID_ARGUMENT on a dynamic one). */
 GA2D_API ga2d_shape_id ga2d_shape_create_circle(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_circle *c);
 GA2D_API ga2d_shape_id ga2d_shape_create_capsule(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_capsule *c);
 GA2D_API ga2d_shape_id ga2d_shape_create_polygon(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_polygon *p);
@@ -1037,9 +1038,10 @@ typedef struct ga2d_chain_def {
 } ga2d_chain_def;
 GA2D_API ga2d_chain_def ga2d_default_chain_def(void);
 /* The null id on failure, world unchanged; the checked form says why:
-   INVALID_ARGUMENT (NULL, too few points, two consecutive points closer
-   than 64 eps of their size, a dynamic body, negative friction or
-   restitution), NOT_FINITE, TOO_LARGE, STALE_ID, LOCKED, OUT_OF_MEMORY. */
+   TOO_FEW_POINTS (under 2, or 3 for a loop), REPEATED_POINTS (two
+   consecutive points within 64 eps of their size), INVALID_ARGUMENT (NULL,
+   a dynamic body, negative friction or restitution), NOT_FINITE,
+   TOO_LARGE, STALE_ID, LOCKED, OUT_OF_MEMORY. */
 GA2D_API ga2d_chain_id ga2d_chain_create(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def);
 GA2D_API ga2d_result ga2d_chain_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def, ga2d_chain_id *out);
 /* Destroys the chain's segments (a chain segment cannot be destroyed on
@@ -2507,6 +2509,26 @@ static void ga2d__put_point(ga2d_manifold *m, ga2d_transform xa, ga2d_vec d_ab, 
     mp->id = id;
 }
 
+/* A two-point hull's faces do not bound it along its own line: the
+   separation along that line's two directions (how far the other hull
+   lies past either end), or -MAX for a polygon.  Collinear capsules end
+   to end are apart along it and along no face normal. */
+static ga2d_real ga2d__end_separation(const ga2d__hull *p1, const ga2d__hull *p2)
+{
+    ga2d_vec e = ga2d_vec_make(-p1->n[0].y, p1->n[0].x); /* v0 -> v1 */
+    ga2d_real lo = GA2D__MAX, hi = -GA2D__MAX, a0, a1, t;
+    int j;
+    if (p1->count != 2) return -GA2D__MAX;
+    a0 = ga2d_dot(e, p1->v[0]);
+    a1 = ga2d_dot(e, p1->v[1]);
+    for (j = 0; j < p2->count; ++j) {
+        t = ga2d_dot(e, p2->v[j]);
+        lo = t < lo ? t : lo;
+        hi = t > hi ? t : hi;
+    }
+    return lo - a1 > a0 - hi ? lo - a1 : a0 - hi;
+}
+
 /* The manifold of two hulls in A's frame (B's brought into it by
    xa^-1 xb, which subtracts the two positions once, exactly when they are
    close, so nothing below depends on the distance from the origin).
@@ -2528,7 +2550,7 @@ static int ga2d__collide_hulls(const ga2d__hull *hA, const ga2d__hull *hB, ga2d_
     const ga2d__hull *ref, *inc;
     ga2d_vec n, t, r1, r2, v21, v22;
     ga2d_real sep_a, sep_b, sep, rsum = hA->radius + hB->radius;
-    int edge_a, edge_b, flip, i11, i12, i21, i22;
+    int edge_a, edge_b, flip, i11, i12, i21, i22, apart;
 
     sep_a = ga2d__max_separation(hA, hB, &edge_a);
     m->normal = ga2d_rotate(xa.q, hA->n[edge_a]);
@@ -2536,6 +2558,13 @@ static int ga2d__collide_hulls(const ga2d__hull *hA, const ga2d__hull *hB, ga2d_
     sep_b = ga2d__max_separation(hB, hA, &edge_b);
     if (sep_b - rsum > margin) return 0;
 
+    {
+        /* a two-point hull apart along its own line: as far apart as that */
+        ga2d_real ends = ga2d__end_separation(hA, hB), ends_b = ga2d__end_separation(hB, hA);
+        ends = ends > ends_b ? ends : ends_b;
+        if (ends - rsum > margin) return 0;
+        apart = ends > GA2D__R(0.1) * slop;
+    }
     flip = sep_b > sep_a + GA2D__R(0.1) * slop;
     ref = flip ? hB : hA;
     inc = flip ? hA : hB;
@@ -2550,7 +2579,7 @@ static int ga2d__collide_hulls(const ga2d__hull *hA, const ga2d__hull *hB, ga2d_
     v21 = inc->v[i21];
     v22 = inc->v[i22];
 
-    if (sep > GA2D__R(0.1) * slop) {
+    if (apart || sep > GA2D__R(0.1) * slop) {
         /* Apart: the closest features are found exactly, as the nearest
            approach of B's vertices to A's edges (ca) and of A's vertices
            to B's edges (cb); the distance is the smaller.  A face whose
@@ -4514,15 +4543,15 @@ static ga2d_result ga2d__geometry_check(const ga2d_geometry *g, int body_type, g
         c.as.capsule = g->as.capsule;
         if ((r = ga2d__point_check(c.as.capsule.center1)) == GA2D_OK && (r = ga2d__point_check(c.as.capsule.center2)) == GA2D_OK &&
             (r = ga2d__radius_check(c.as.capsule.radius)) == GA2D_OK) {
-            r = ga2d__ends_apart(c.as.capsule.center1, c.as.capsule.center2) ? GA2D_OK : GA2D_ERR_INVALID_ARGUMENT;
+            r = ga2d__ends_apart(c.as.capsule.center1, c.as.capsule.center2) ? GA2D_OK : GA2D_ERR_DEGENERATE;
             if (r == GA2D_OK) r = ga2d_capsule_mass_checked(&c.as.capsule, density, &m);
         }
         break;
     case GA2D_SHAPE_SEGMENT:
         c.as.segment = g->as.segment;
         if ((r = ga2d__point_check(c.as.segment.point1)) == GA2D_OK && (r = ga2d__point_check(c.as.segment.point2)) == GA2D_OK)
-            r = ga2d__ends_apart(c.as.segment.point1, c.as.segment.point2) && body_type != GA2D_BODY_DYNAMIC
-                    ? GA2D_OK : GA2D_ERR_INVALID_ARGUMENT;
+            r = body_type == GA2D_BODY_DYNAMIC ? GA2D_ERR_INVALID_ARGUMENT
+                : ga2d__ends_apart(c.as.segment.point1, c.as.segment.point2) ? GA2D_OK : GA2D_ERR_DEGENERATE;
         memset(&m, 0, sizeof m);
         break;
     case GA2D_SHAPE_CHAIN_SEGMENT: {
@@ -4530,9 +4559,10 @@ static ga2d_result ga2d__geometry_check(const ga2d_geometry *g, int body_type, g
         c.as.chain_segment = *cs;
         if ((r = ga2d__point_check(cs->ghost1)) == GA2D_OK && (r = ga2d__point_check(cs->segment.point1)) == GA2D_OK &&
             (r = ga2d__point_check(cs->segment.point2)) == GA2D_OK && (r = ga2d__point_check(cs->ghost2)) == GA2D_OK)
-            r = ga2d__ends_apart(cs->segment.point1, cs->segment.point2) && ga2d__ends_apart(cs->ghost1, cs->segment.point1) &&
-                        ga2d__ends_apart(cs->segment.point2, cs->ghost2) && body_type != GA2D_BODY_DYNAMIC
-                    ? GA2D_OK : GA2D_ERR_INVALID_ARGUMENT;
+            r = body_type == GA2D_BODY_DYNAMIC ? GA2D_ERR_INVALID_ARGUMENT
+                : ga2d__ends_apart(cs->segment.point1, cs->segment.point2) && ga2d__ends_apart(cs->ghost1, cs->segment.point1) &&
+                        ga2d__ends_apart(cs->segment.point2, cs->ghost2)
+                    ? GA2D_OK : GA2D_ERR_REPEATED_POINTS;
         memset(&m, 0, sizeof m);
         break;
     }
@@ -5328,14 +5358,15 @@ static ga2d_result ga2d__chain_def_check(const ga2d_chain_def *d)
 {
     int i, n;
     ga2d_result r;
-    if (!d->points || d->count < (d->is_loop ? 3 : 2) || d->count > GA2D__MAX_BODIES) return GA2D_ERR_INVALID_ARGUMENT;
+    if (!d->points || d->count < 0 || d->count > GA2D__MAX_BODIES) return GA2D_ERR_INVALID_ARGUMENT;
+    if (d->count < (d->is_loop ? 3 : 2)) return GA2D_ERR_TOO_FEW_POINTS;
     if (!ga2d__finite(d->friction) || !ga2d__finite(d->restitution)) return GA2D_ERR_NOT_FINITE;
     if (d->friction < 0 || d->restitution < 0) return GA2D_ERR_INVALID_ARGUMENT;
     for (i = 0; i < d->count; ++i)
         if ((r = ga2d__point_check(d->points[i])) != GA2D_OK) return r;
     n = d->is_loop ? d->count : d->count - 1;
     for (i = 0; i < n; ++i)
-        if (!ga2d__ends_apart(d->points[i], d->points[(i + 1) % d->count])) return GA2D_ERR_INVALID_ARGUMENT;
+        if (!ga2d__ends_apart(d->points[i], d->points[(i + 1) % d->count])) return GA2D_ERR_REPEATED_POINTS;
     return GA2D_OK;
 }
 
