@@ -6006,8 +6006,8 @@ struct ga2d__group {
     ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
-    int round;              /* a lane has a round shape: rax.. are core anchors, o.. their radii along n */
-    ga2d__w oax, oay, obx, oby;
+    int round;              /* a lane has a round shape: rax.. are core anchors, o.. what lies along n (ga2d__round_offset) */
+    ga2d__w oax[2], oay[2], obx[2], oby[2];
     ga2d__w tw;             /* +-1/2 where one side is round: the point slides with it (ga2d__point_now) */
     int conveyor;           /* a lane has a tangent speed (tspeed) */
     ga2d__w tspeed;
@@ -6232,12 +6232,22 @@ static void ga2d__refresh_turns(ga2d__step_context *c, int begin, int end)
    radius along the normal: only the core point turns with the body (a
    rolling disc's contact stays at its bottom, where carrying it round
    would lift it by r (1 - cos) and let the disc sink). */
+static GA2D__HOT ga2d_vec ga2d__round_offset(const ga2d__contact_constraint *c, const ga2d__cpoint *p, int side)
+{
+    /* the point lies midway between the surfaces: s/2 out of A's surface
+       along n, and s/2 out of B's along -n; a surface lies its radius out
+       of its core.  A sharp side's point turns with it whole. */
+    ga2d_real rho = side ? c->round_b : c->round_a;
+    if (rho == 0) return ga2d_vec_make(0, 0);
+    return ga2d_vec_scale(c->normal, side ? -(rho + p->separation / 2) : rho + p->separation / 2);
+}
+
 static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__contact_constraint *c, const ga2d__body_sim *a, const ga2d__body_sim *b,
                                  const ga2d__cpoint *p, ga2d_vec *ra, ga2d_vec *rb)
 {
     ga2d_vec ra1, rb1;
     if (c->round_a != 0 || c->round_b != 0) {
-        ga2d_vec oa = ga2d_vec_scale(c->normal, c->round_a), ob = ga2d_vec_scale(c->normal, -c->round_b);
+        ga2d_vec oa = ga2d__round_offset(c, p, 0), ob = ga2d__round_offset(c, p, 1);
         ra1 = ga2d_vec_add(ga2d_rotate(a->dq, ga2d_vec_sub(p->ra, oa)), oa);
         rb1 = ga2d_vec_add(ga2d_rotate(b->dq, ga2d_vec_sub(p->rb, ob)), ob);
     } else {
@@ -6448,10 +6458,10 @@ static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2
     ga2d__w rb1y = ga2d__wadd(ga2d__wmul(B->qs, g->rbx[k]), ga2d__wmul(B->qc, g->rby[k]));
     ga2d__w dx = ga2d__wadd(g->dx, ga2d__wsub(B->dpx, A->dpx)), dy = ga2d__wadd(g->dy, ga2d__wsub(B->dpy, A->dpy));
     if (g->round) { /* the radii along n, which do not turn (ga2d__point_now) */
-        ra1x = ga2d__wadd(ra1x, g->oax);
-        ra1y = ga2d__wadd(ra1y, g->oay);
-        rb1x = ga2d__wadd(rb1x, g->obx);
-        rb1y = ga2d__wadd(rb1y, g->oby);
+        ra1x = ga2d__wadd(ra1x, g->oax[k]);
+        ra1y = ga2d__wadd(ra1y, g->oay[k]);
+        rb1x = ga2d__wadd(rb1x, g->obx[k]);
+        rb1y = ga2d__wadd(rb1y, g->oby[k]);
     }
     ga2d__w ex = ga2d__wsub(ga2d__wadd(dx, rb1x), ra1x), ey = ga2d__wsub(ga2d__wadd(dy, rb1y), ra1y);
     ga2d__w half = ga2d__wsplat(GA2D__R(0.5));
@@ -6699,7 +6709,6 @@ static void ga2d__solve_baumgarte(ga2d__step_context *c, int begin, int end)
 static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constraint *c, ga2d_vec d, const ga2d__soft *sf,
                              const ga2d__contact_constraint *none)
 {
-    ga2d_vec oa, ob;
     int k;
     GA2D__LANE(g->nx, l) = c->normal.x;
     GA2D__LANE(g->ny, l) = c->normal.y;
@@ -6714,14 +6723,7 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->soft_mass, l) = sf->mass_scale;
     GA2D__LANE(g->soft_impulse, l) = sf->impulse_scale;
     GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
-    /* round shapes: core anchors that turn, radii along n that do not */
-    oa = ga2d_vec_scale(c->normal, c->round_a);
-    ob = ga2d_vec_scale(c->normal, -c->round_b);
     if (c->round_a != 0 || c->round_b != 0) g->round = 1;
-    GA2D__LANE(g->oax, l) = oa.x;
-    GA2D__LANE(g->oay, l) = oa.y;
-    GA2D__LANE(g->obx, l) = ob.x;
-    GA2D__LANE(g->oby, l) = ob.y;
     GA2D__LANE(g->tspeed, l) = c->tangent_speed;
     if (c->tangent_speed != 0) g->conveyor = 1;
     GA2D__LANE(g->rr, l) = c->rolling;
@@ -6731,7 +6733,13 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->tw, l) = (c->round_a != 0) == (c->round_b != 0) ? 0 : (c->round_b != 0 ? GA2D__R(0.5) : GA2D__R(-0.5));
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
+        /* round shapes: core anchors that turn, and what lies along n that does not */
+        ga2d_vec oa = ga2d__round_offset(c, p, 0), ob = ga2d__round_offset(c, p, 1);
         ga2d_vec ca = c->round_a != 0 ? ga2d_vec_sub(p->ra, oa) : p->ra, cb = c->round_b != 0 ? ga2d_vec_sub(p->rb, ob) : p->rb;
+        GA2D__LANE(g->oax[k], l) = oa.x;
+        GA2D__LANE(g->oay[k], l) = oa.y;
+        GA2D__LANE(g->obx[k], l) = ob.x;
+        GA2D__LANE(g->oby[k], l) = ob.y;
         GA2D__LANE(g->rax[k], l) = ca.x;
         GA2D__LANE(g->ray[k], l) = ca.y;
         GA2D__LANE(g->rbx[k], l) = cb.x;
