@@ -1,24 +1,31 @@
 /* sdl_demo.c - an interactive window onto ga2d_physics.h, drawn with SDL2.
 
-   Five scenes on the number keys; drag a body with the left mouse button (a
+   Ten scenes on the number keys; drag a body with the left mouse button (a
    soft spring pulls it to the cursor); throw a 1 m box with the right button
    (press where it starts, drag to aim, release to throw); switch substeps,
    solver and sleep while it runs and watch the time per step change.
 
      1-5  scene: pyramid, stack of 10, Newton's cradle, incline, bounce
+     6-0  shapes: a ball rolls beside a sliding box (6), a pile of circles,
+          capsules, boxes and rounded polygons poured into a bin (7), a
+          half-pipe of one loop chain (8), a sensor zone counting what
+          passes (9), a one-way platform by pre-solve, with hit events (0)
      R    reset the scene          P  pause        C  contact points
      S    substeps 1/2/4/8         V  solver: soft step / PGS+Baumgarte / PGS+NGS
      Z    sleep on/off             Esc quit
 
    Everything on screen goes through the library's debug draw
-   (ga2d_world_draw with the GA2D_COLOR_* state colours); text is a 5x7
-   bitmap font drawn as filled rectangles, so only SDL2 itself is needed.
+   (ga2d_world_draw with the GA2D_COLOR_* state colours): polygons (rounded
+   ones with their arcs), circles with a radius line that shows them roll,
+   capsules, and segments (chains); the sensor zone is drawn see-through
+   and what it holds in blue.  Text is a 5x7 bitmap font drawn as filled
+   rectangles, so only SDL2 itself is needed.
 
    Build (needs Debian's libsdl2-dev, SDL 2.0.18 or newer):
      gcc -std=c99 -O2 -I. examples/sdl_demo.c $(sdl2-config --cflags --libs) -lm
 
    Options, for scripted runs (e.g. under Xvfb):
-     --scene N          start in scene N (1-5)
+     --scene N          start in scene N (1-10; 10 is key 0)
      --frames N         run N frames, one fixed step each, then quit
      --screenshot FILE  save the last frame as a BMP (default 120 frames)
      --drag-test        grab the top body at frame 20 and pull it 5 m aside, 1.5 m up
@@ -192,8 +199,12 @@ typedef struct label { ga2d_vec at; char text[32]; } label;
 
 static const int SUBSTEP_CHOICES[] = {1, 2, 4, 8};
 static const char *const SOLVER_NAMES[GA2D_SOLVER_COUNT] = {"SOFT STEP", "PGS+BAUMGARTE", "PGS+NGS"};
-static const char *const SCENE_NAMES[6] = {"", "PYRAMID (BASE 20)", "STACK OF 10", "NEWTON'S CRADLE",
-                                           "INCLINE: THREE FRICTIONS", "BOUNCE: THREE RESTITUTIONS"};
+#define SCENES 10
+static const char *const SCENE_NAMES[SCENES + 1] = {"", "PYRAMID (BASE 20)", "STACK OF 10", "NEWTON'S CRADLE",
+                                                    "INCLINE: THREE FRICTIONS", "BOUNCE: THREE RESTITUTIONS",
+                                                    "ROLL: BALL AND BOX ON 20 DEGREES", "PILE OF SHAPES",
+                                                    "TERRAIN: ONE LOOP CHAIN", "SENSOR ZONE",
+                                                    "ONE-WAY PLATFORM, HIT EVENTS"};
 
 typedef struct app {
     SDL_Renderer *ren;
@@ -227,6 +238,19 @@ typedef struct app {
     /* ms per ga2d_world_step: the last TIMING_WINDOW steps */
     double step_ms[TIMING_WINDOW];
     int step_ms_count, step_ms_next;
+
+    /* the shape scenes (6-10): a status line, steps since the scene began,
+       things poured or thrown so far, the sensor zone and what it holds,
+       the platform, and the events counted */
+    char status[128];
+    int scene_steps, spawned;
+    unsigned rng;
+    ga2d_body_id zone;
+    ga2d_shape_id zone_shape, platform;
+    ga2d_body_id inside[64];
+    int inside_count, entered, left, hits;
+    double last_hit;
+    int last_hit_on_platform;
 } app;
 
 static void remember(app *a, ga2d_body_id id)
@@ -264,6 +288,282 @@ static void add_ground(app *a, ga2d_real friction)
     add_box(a, GA2D_BODY_STATIC, 0, -1, 100, 1, 0, friction, 0);
 }
 
+/* ------------------------------------------------------------ shape scenes */
+#define BIN_HALF_W 6.0   /* scene 7: the bin's inside half-width */
+#define POUR_TOTAL 150   /* scene 7: bodies poured */
+#define ZONE_BOTTOM 3.0  /* scene 9: the sensor zone, y = 3 .. 5 */
+#define ZONE_TOP 5.0
+#define PLATFORM_TOP 3.1 /* scene 10: the one-way platform's top */
+#define INSIDE_COLOR 0x4C8CE5u
+
+/* In [0, 1): a 32-bit LCG, so a scene pours the same pile every time. */
+static double app_random(app *a)
+{
+    a->rng = a->rng * 1664525u + 1013904223u;
+    return (double)(a->rng >> 8) / 16777216.0;
+}
+
+/* A body with no shape yet (the default def has none) at (x, y), turned by
+   angle, moving at v. */
+static ga2d_body_id add_body(app *a, ga2d_body_type type, double x, double y, double angle, ga2d_vec v)
+{
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_body_id id;
+    bd.type = type;
+    bd.position = ga2d_vec_make((ga2d_real)x, (ga2d_real)y);
+    bd.rotor = ga2d_rotor_from_angle((ga2d_real)angle);
+    bd.velocity = v;
+    id = ga2d_body_create(a->world, &bd);
+    if (type == GA2D_BODY_DYNAMIC) remember(a, id);
+    return id;
+}
+
+static ga2d_shape_id add_circle(app *a, ga2d_body_id body, double r, const ga2d_shape_def *sd)
+{
+    ga2d_circle c;
+    c.center = ga2d_vec_make(0, 0);
+    c.radius = (ga2d_real)r;
+    return ga2d_shape_create_circle(a->world, body, sd, &c);
+}
+
+/* A ball of radius r at (x, y) moving at v, with the shape def sd. */
+static ga2d_shape_id add_ball(app *a, double x, double y, double r, ga2d_vec v, const ga2d_shape_def *sd)
+{
+    return add_circle(a, add_body(a, GA2D_BODY_DYNAMIC, x, y, 0, v), r, sd);
+}
+
+/* Scene 7: one body of the pile, of kind k (circle, capsule, box, rounded
+   box, rounded hexagon), dropped across the top of the bin. */
+static void pour_one(app *a, int k, int column)
+{
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    double x = -BIN_HALF_W + (column + 0.5) * (2 * BIN_HALF_W / 6) + 0.4 * (app_random(a) - 0.5);
+    double y = 13 + 0.3 * app_random(a);
+    double angle = PI_D * app_random(a);
+    double size = app_random(a);
+    ga2d_body_id id = add_body(a, GA2D_BODY_DYNAMIC, x, y, angle, ga2d_vec_make(0, 0));
+    if (k == 0) add_circle(a, id, 0.25 + 0.2 * size, &sd);
+    else if (k == 1) {
+        ga2d_capsule c;
+        double half = 0.25 + 0.3 * size;
+        c.center1 = ga2d_vec_make((ga2d_real)-half, 0);
+        c.center2 = ga2d_vec_make((ga2d_real)half, 0);
+        c.radius = (ga2d_real)(0.18 + 0.07 * size);
+        ga2d_shape_create_capsule(a->world, id, &sd, &c);
+    } else {
+        ga2d_polygon p;
+        if (k == 2) p = ga2d_polygon_box((ga2d_real)(0.3 + 0.2 * size), (ga2d_real)(0.25 + 0.15 * size));
+        else if (k == 3) p = ga2d_polygon_rounded_box((ga2d_real)(0.35 + 0.2 * size), (ga2d_real)(0.25 + 0.1 * size), 0.1f);
+        else {
+            p = ga2d_polygon_regular(6, (ga2d_real)(0.25 + 0.15 * size));
+            p.radius = 0.08f;
+        }
+        ga2d_shape_create_polygon(a->world, id, &sd, &p);
+    }
+}
+
+/* Scene 8: the half-pipe's outline (terrain.c's), counter-clockwise, so
+   that the loop holds bodies inside it: a quarter pipe, 20 m flat, a
+   cosine hill 1 m high, a cosine bowl 1.5 m deep, a second quarter pipe,
+   the ceiling. */
+static int halfpipe(ga2d_vec *pts, int cap)
+{
+    int n = 0, i;
+    double x;
+#define HP_ADD(px, py) do { if (n < cap) pts[n++] = ga2d_vec_make((ga2d_real)(px), (ga2d_real)(py)); } while (0)
+    for (i = 0; i < 18; ++i) HP_ADD(-20 + 3 * cos(PI_D + i * PI_D / 36), 3 + 3 * sin(PI_D + i * PI_D / 36));
+    for (x = -20; x < -1e-9; x += 0.5) HP_ADD(x, 0);
+    for (i = 0; i < 128; ++i) HP_ADD(i / 16.0, (1 - cos(2 * PI_D * i / 128)) / 2);
+    for (x = 8; x < 10 - 1e-9; x += 0.5) HP_ADD(x, 0);
+    for (i = 0; i < 160; ++i) HP_ADD(10 + i / 16.0, -1.5 * (1 - cos(2 * PI_D * i / 160)) / 2);
+    for (x = 20; x < 22 - 1e-9; x += 0.5) HP_ADD(x, 0);
+    for (i = 0; i <= 18; ++i) HP_ADD(22 + 3 * cos(1.5 * PI_D + i * PI_D / 36), 3 + 3 * sin(1.5 * PI_D + i * PI_D / 36));
+    HP_ADD(25, 5);
+    HP_ADD(-23, 5);
+#undef HP_ADD
+    return n;
+}
+
+/* Scene 10's pre-solve callback (the world def's, for every scene; only the
+   platform's shape asks for it): a contact with the platform pushes only
+   a body above it (the normal from the platform points up at it) that is
+   not rising through it.  The world is locked: this only reads it. */
+static int one_way_platform(ga2d_shape_id shape_a, ga2d_shape_id shape_b, const ga2d_manifold *m, void *ctx)
+{
+    const app *a = (const app *)ctx;
+    double up;
+    ga2d_shape_id other;
+    if (ga2d_shape_id_equal(shape_a, a->platform)) {
+        up = (double)m->normal.y;
+        other = shape_b;
+    } else if (ga2d_shape_id_equal(shape_b, a->platform)) {
+        up = -(double)m->normal.y;
+        other = shape_a;
+    } else
+        return 1;
+    return up > 0.5 && (double)ga2d_body_velocity(a->world, ga2d_shape_body(a->world, other)).y < 0.5;
+}
+
+/* Builds scenes 6-10 (load_scene has made the world). */
+static void load_shape_scene(app *a, int scene)
+{
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    switch (scene) {
+    case 6: { /* roll.c: friction 1 on the slope, so the bodies' own are mu^2 */
+        const double th = 20 * PI_D / 180;
+        const ga2d_rotor q = ga2d_rotor_from_angle((ga2d_real)-th);
+        const ga2d_vec c = ga2d_vec_make(0, 4);
+        ga2d_polygon p = ga2d_polygon_box(10, 0.5f), unit = ga2d_polygon_box(0.5f, 0.5f);
+        ga2d_vec at;
+        ga2d_body_id slope;
+        add_ground(a, 0.6f);
+        slope = add_body(a, GA2D_BODY_STATIC, (double)c.x, (double)c.y, -th, ga2d_vec_make(0, 0));
+        sd.friction = 1;
+        ga2d_shape_create_polygon(a->world, slope, &sd, &p);
+        at = ga2d_vec_add(c, ga2d_rotate(q, ga2d_vec_make(-8, 1))); /* the box, 0.3 */
+        sd.friction = 0.09f;
+        ga2d_shape_create_polygon(a->world, add_body(a, GA2D_BODY_DYNAMIC, (double)at.x, (double)at.y, -th, ga2d_vec_make(0, 0)),
+                                  &sd, &unit);
+        add_label(a, at.x, at.y + (ga2d_real)1.5, "BOX MU 0.3: SLIDES");
+        at = ga2d_vec_add(c, ga2d_rotate(q, ga2d_vec_make(-4, 1))); /* the ball, 0.6 */
+        sd.friction = 0.36f;
+        add_circle(a, add_body(a, GA2D_BODY_DYNAMIC, (double)at.x, (double)at.y, -th, ga2d_vec_make(0, 0)), 0.5, &sd);
+        add_label(a, at.x + 1, at.y + (ga2d_real)1.5, "BALL MU 0.6: ROLLS");
+        a->cam = camera_fit(-11, -1.5, 16, 9);
+        break;
+    }
+    case 7: /* pile.c: a bin, filled by scene_before_step */
+        add_box(a, GA2D_BODY_STATIC, 0, -0.5f, (ga2d_real)(BIN_HALF_W + 1), 0.5f, 0, 0.6f, 0);
+        add_box(a, GA2D_BODY_STATIC, (ga2d_real)(-BIN_HALF_W - 0.5), 5.5f, 0.5f, 5.5f, 0, 0.6f, 0);
+        add_box(a, GA2D_BODY_STATIC, (ga2d_real)(BIN_HALF_W + 0.5), 5.5f, 0.5f, 5.5f, 0, 0.6f, 0);
+        a->cam = camera_fit(-10, -1.5, 10, 14.5);
+        break;
+    case 8: { /* terrain.c: a frictionless box and a rolling ball, not meeting */
+        static ga2d_vec pts[512];
+        ga2d_chain_def cd = ga2d_default_chain_def();
+        ga2d_polygon unit = ga2d_polygon_box(0.5f, 0.5f);
+        ga2d_body_id ground = add_body(a, GA2D_BODY_STATIC, 0, 0, 0, ga2d_vec_make(0, 0));
+        cd.points = pts;
+        cd.count = halfpipe(pts, 512);
+        cd.is_loop = 1;
+        ga2d_chain_create(a->world, ground, &cd);
+        sd.friction = 0;
+        sd.filter.category_bits = 2;
+        sd.filter.mask_bits = 1;
+        ga2d_shape_create_polygon(a->world, add_body(a, GA2D_BODY_DYNAMIC, -18, 0.5, 0, ga2d_vec_make(5, 0)), &sd, &unit);
+        sd.friction = 0.6f;
+        sd.filter.category_bits = 4;
+        {
+            ga2d_body_id ball = add_body(a, GA2D_BODY_DYNAMIC, -15, 0.5, 0, ga2d_vec_make(5, 0));
+            add_circle(a, ball, 0.5, &sd);
+            ga2d_body_set_angular_velocity(a->world, ball, -10); /* rolling: w r = v */
+        }
+        add_label(a, -9, 3, "ONE LOOP CHAIN, 375 POINTS");
+        a->cam = camera_fit(-24, -2, 26, 6);
+        break;
+    }
+    case 9: { /* sensor.c: a static body whose one shape is an is_sensor box */
+        ga2d_polygon zone = ga2d_polygon_box(6, (ga2d_real)((ZONE_TOP - ZONE_BOTTOM) / 2));
+        ga2d_polygon unit = ga2d_polygon_box(0.3f, 0.3f);
+        add_box(a, GA2D_BODY_STATIC, 0, -0.5f, 8, 0.5f, 0, 0.6f, 0);
+        a->zone = add_body(a, GA2D_BODY_STATIC, 0, (ZONE_TOP + ZONE_BOTTOM) / 2, 0, ga2d_vec_make(0, 0));
+        sd.is_sensor = 1;
+        a->zone_shape = ga2d_shape_create_polygon(a->world, a->zone, &sd, &zone);
+        sd = ga2d_default_shape_def();
+        sd.enable_sensor_events = 0; /* a box the sensor never sees */
+        ga2d_shape_create_polygon(a->world, add_body(a, GA2D_BODY_DYNAMIC, -3, ZONE_TOP + 1, 0, ga2d_vec_make(0, 0)), &sd, &unit);
+        add_label(a, -3, 1.4f, "UNSEEN BOX");
+        a->cam = camera_fit(-9, -1.5, 9, 11);
+        break;
+    }
+    default: { /* 10, platform.c: a one-way platform, balls thrown up by scene_before_step */
+        ga2d_polygon slab = ga2d_polygon_box(4, 0.1f);
+        add_box(a, GA2D_BODY_STATIC, 0, -0.5f, 7, 0.5f, 0, 0.6f, 0);
+        sd.enable_pre_solve_events = 1;
+        a->platform = ga2d_shape_create_polygon(
+            a->world, add_body(a, GA2D_BODY_STATIC, 0, PLATFORM_TOP - 0.1, 0, ga2d_vec_make(0, 0)), &sd, &slab);
+        a->cam = camera_fit(-8, -1.5, 8, 8);
+        break;
+    }
+    }
+}
+
+/* Scenes 7, 9 and 10 add bodies as they run: the pile's rows of six every
+   0.15 s, a ball over the sensor every 0.5 s, a ball thrown up under the
+   platform every 0.6 s. */
+static void scene_before_step(app *a)
+{
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    int k = a->scene_steps++;
+    if (a->scene == 7 && k % 9 == 0 && a->spawned < POUR_TOTAL) {
+        int i;
+        for (i = 0; i < 6 && a->spawned < POUR_TOTAL; ++i, ++a->spawned) pour_one(a, a->spawned % 5, i);
+    } else if (a->scene == 9 && k % 30 == 0 && a->spawned < 40) {
+        add_ball(a, -5.5 + 11 * app_random(a), ZONE_TOP + 1 + 3 * app_random(a), 0.25, ga2d_vec_make(0, 0), &sd);
+        ++a->spawned;
+    } else if (a->scene == 10 && k % 36 == 0 && a->spawned < 40) {
+        static const double v0[4] = {6, 9, 10, 11};
+        sd.enable_hit_events = 1;
+        add_ball(a, -3.5 + (a->spawned % 8), 0.25, 0.25,
+                 ga2d_vec_make((ga2d_real)(app_random(a) - 0.5), (ga2d_real)v0[a->spawned % 4]), &sd);
+        ++a->spawned;
+    }
+}
+
+/* After the step: the events and the status line. */
+static void scene_after_step(app *a)
+{
+    double t = a->scene_steps * STEP_DT;
+    int i;
+    a->status[0] = '\0';
+    if (a->scene == 6 && a->body_count >= 2) { /* on the slope: v against a t */
+        double vb = (double)ga2d_vec_length(ga2d_body_velocity(a->world, a->bodies[0]));
+        double vr = (double)ga2d_vec_length(ga2d_body_velocity(a->world, a->bodies[1]));
+        const double s = sin(20 * PI_D / 180), c = cos(20 * PI_D / 180);
+        if (ga2d_body_center(a->world, a->bodies[1]).x < 8)
+            snprintf(a->status, sizeof a->status, "T %.2f S   BALL V %.3f (2/3 G SIN T %.3f)   BOX V %.3f (G(SIN - 0.3 COS) T %.3f)",
+                     t, vr, 2.0 / 3.0 * 10 * s * t, vb, 10 * (s - 0.3 * c) * t);
+    } else if (a->scene == 7) {
+        int asleep = 0;
+        for (i = 0; i < a->body_count; ++i) asleep += !ga2d_body_is_awake(a->world, a->bodies[i]);
+        snprintf(a->status, sizeof a->status, "POURED %d OF %d   ASLEEP %d", a->spawned, POUR_TOTAL, asleep);
+    } else if (a->scene == 8 && a->body_count >= 2) {
+        snprintf(a->status, sizeof a->status, "BOX (NO FRICTION) V %.3f M/S   BALL (ROLLING) V %.3f M/S",
+                 (double)ga2d_vec_length(ga2d_body_velocity(a->world, a->bodies[0])),
+                 (double)ga2d_vec_length(ga2d_body_velocity(a->world, a->bodies[1])));
+    } else if (a->scene == 9) {
+        ga2d_sensor_events ev = ga2d_world_sensor_events(a->world);
+        ga2d_shape_id held[64];
+        int n = ga2d_shape_get_sensor_overlaps(a->world, a->zone_shape, held, 64);
+        a->entered += ev.begin_count;
+        a->left += ev.end_count;
+        a->inside_count = n < 64 ? n : 64;
+        for (i = 0; i < a->inside_count; ++i) a->inside[i] = ga2d_shape_body(a->world, held[i]);
+        snprintf(a->status, sizeof a->status, "SENSOR: IN THE ZONE %d   BEGIN EVENTS %d   END EVENTS %d", n, a->entered,
+                 a->left);
+    } else if (a->scene == 10) {
+        ga2d_contact_events ev = ga2d_world_contact_events(a->world);
+        for (i = 0; i < ev.hit_count; ++i) {
+            ++a->hits;
+            a->last_hit = (double)ev.hit[i].approach_speed;
+            a->last_hit_on_platform = ga2d_shape_id_equal(ev.hit[i].shape_a, a->platform) ||
+                                      ga2d_shape_id_equal(ev.hit[i].shape_b, a->platform);
+        }
+        if (a->hits > 0)
+            snprintf(a->status, sizeof a->status, "HIT EVENTS %d   LAST: %.2f M/S ON THE %s", a->hits, a->last_hit,
+                     a->last_hit_on_platform ? "PLATFORM" : "GROUND");
+    }
+}
+
+/* The colour a body is drawn in: blue while the sensor holds it. */
+static uint32_t body_color(const app *a, ga2d_body_id id, uint32_t color)
+{
+    int i;
+    for (i = 0; a->scene == 9 && i < a->inside_count; ++i)
+        if (ga2d_body_id_equal(id, a->inside[i])) return INSIDE_COLOR;
+    return color;
+}
+
 static void load_scene(app *a, int scene)
 {
     ga2d_world_def wd = ga2d_default_world_def();
@@ -272,6 +572,8 @@ static void load_scene(app *a, int scene)
     wd.substeps = SUBSTEP_CHOICES[a->substep_index];
     wd.solver = a->solver;
     wd.enable_sleep = a->sleep_on;
+    wd.pre_solve = one_way_platform; /* asked only about the platform's contacts (scene 10) */
+    wd.pre_solve_context = a;
     a->world = ga2d_world_create(&wd);
     if (!a->world) {
         fprintf(stderr, "sdl_demo: ga2d_world_create failed\n");
@@ -281,6 +583,11 @@ static void load_scene(app *a, int scene)
     a->body_count = a->label_count = 0;
     a->dragging = a->aiming = 0;
     a->step_ms_count = a->step_ms_next = 0;
+    a->status[0] = '\0';
+    a->scene_steps = a->spawned = a->inside_count = a->entered = a->left = a->hits = 0;
+    a->rng = 12345u;
+    a->zone = ga2d_body_id_null();
+    a->zone_shape = a->platform = ga2d_shape_id_null();
 
     switch (scene) {
     case 1: /* Box2D's pyramid: row i holds boxes j = i..19 */
@@ -327,7 +634,7 @@ static void load_scene(app *a, int scene)
         a->cam = camera_fit(-19, -1.5, 19, 8.5);
         break;
     }
-    default: /* 5: three boxes dropped side by side */
+    case 5: /* three boxes dropped side by side */
     {
         const ga2d_real e[3] = {0.3f, 0.6f, 0.9f};
         const char *const names[3] = {"E 0.3", "E 0.6", "E 0.9"};
@@ -337,27 +644,61 @@ static void load_scene(app *a, int scene)
             add_label(a, (ga2d_real)(-4 + 4 * i), 9.6f, names[i]);
         }
         a->cam = camera_fit(-8, -1.5, 8, 10.5);
-        a->scene = 5;
         break;
     }
+    default: load_shape_scene(a, scene); break;
     }
 }
 
 /* ------------------------------------------------------------------ picking */
 typedef struct pick_query { const app *a; ga2d_vec p; ga2d_body_id hit; } pick_query;
 
-/* Called by ga2d_world_draw for every body in drawing order, so the last
-   dynamic body whose polygon holds the point is the one drawn on top. */
+/* The distance from p to the segment a-b. */
+static double segment_distance(ga2d_vec p, ga2d_vec a, ga2d_vec b)
+{
+    ga2d_vec ab = ga2d_vec_sub(b, a), ap = ga2d_vec_sub(p, a);
+    double len2 = (double)ga2d_vec_length_sq(ab), t = len2 > 0 ? (double)ga2d_dot(ap, ab) / len2 : 0;
+    if (t < 0) t = 0;
+    if (t > 1) t = 1;
+    return (double)ga2d_vec_length(ga2d_vec_sub(ap, ga2d_vec_scale(ab, (ga2d_real)t)));
+}
+
+/* Called by ga2d_world_draw for every shape in drawing order, so the last
+   dynamic body whose shape holds the point is the one drawn on top.  A
+   polygon holds it when it is inside, or within the polygon's radius of
+   an edge. */
 static void pick_polygon(ga2d_body_id id, const ga2d_polygon *poly, ga2d_transform x, uint32_t color, void *ctx)
 {
     pick_query *q = (pick_query *)ctx;
     ga2d_vec local = ga2d_transform_apply_inv(x, q->p);
-    int i;
+    int i, inside = 1;
+    double nearest = 1e30;
     (void)color;
     if (ga2d_body_get_type(q->a->world, id) != GA2D_BODY_DYNAMIC) return;
-    for (i = 0; i < poly->count; ++i)
-        if (ga2d_dot(poly->normals[i], ga2d_vec_sub(local, poly->vertices[i])) > 0) return;
-    q->hit = id;
+    for (i = 0; i < poly->count; ++i) {
+        double d = segment_distance(local, poly->vertices[i], poly->vertices[(i + 1) % poly->count]);
+        if (ga2d_dot(poly->normals[i], ga2d_vec_sub(local, poly->vertices[i])) > 0) inside = 0;
+        if (d < nearest) nearest = d;
+    }
+    if (inside || nearest <= (double)poly->radius) q->hit = id;
+}
+
+static void pick_circle(ga2d_body_id id, ga2d_vec center, ga2d_real radius, ga2d_vec axis, uint32_t color, void *ctx)
+{
+    pick_query *q = (pick_query *)ctx;
+    (void)axis;
+    (void)color;
+    if (ga2d_body_get_type(q->a->world, id) == GA2D_BODY_DYNAMIC &&
+        ga2d_vec_length(ga2d_vec_sub(q->p, center)) <= radius)
+        q->hit = id;
+}
+
+static void pick_capsule(ga2d_body_id id, ga2d_vec c1, ga2d_vec c2, ga2d_real radius, uint32_t color, void *ctx)
+{
+    pick_query *q = (pick_query *)ctx;
+    (void)color;
+    if (ga2d_body_get_type(q->a->world, id) == GA2D_BODY_DYNAMIC && segment_distance(q->p, c1, c2) <= (double)radius)
+        q->hit = id;
 }
 
 static ga2d_body_id pick_body(const app *a, ga2d_vec p)
@@ -368,6 +709,8 @@ static ga2d_body_id pick_body(const app *a, ga2d_vec p)
     q.p = p;
     q.hit = ga2d_body_id_null();
     dd.polygon = pick_polygon;
+    dd.circle = pick_circle;
+    dd.capsule = pick_capsule;
     dd.context = &q;
     ga2d_world_draw(a->world, &dd);
     return q.hit;
@@ -470,10 +813,12 @@ static void cull_fallen(app *a)
 static void step_world(app *a)
 {
     Uint64 t0, t1;
+    scene_before_step(a);
     apply_drag(a);
     t0 = SDL_GetPerformanceCounter();
     ga2d_world_step(a->world, (ga2d_real)STEP_DT);
     t1 = SDL_GetPerformanceCounter();
+    scene_after_step(a);
     a->step_ms[a->step_ms_next] = 1000.0 * (double)(t1 - t0) / (double)SDL_GetPerformanceFrequency();
     a->step_ms_next = (a->step_ms_next + 1) % TIMING_WINDOW;
     if (a->step_ms_count < TIMING_WINDOW) ++a->step_ms_count;
@@ -499,19 +844,26 @@ static SDL_Color rgb(uint32_t c, double k)
     return s;
 }
 
-/* A body: a filled fan of triangles (the polygon is convex) in a darker
-   shade of its state colour, then its outline in the colour itself. */
-static void draw_polygon(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform x, uint32_t color, void *ctx)
+/* Round outlines as convex polygons: a circle in ROUND_POINTS points, a
+   rounded polygon's corner in CORNER_POINTS. */
+#define ROUND_POINTS 32
+#define CORNER_POINTS 6
+#define MAX_OUTLINE (GA2D_MAX_POLYGON_VERTICES * CORNER_POINTS + ROUND_POINTS + 2)
+
+/* A convex outline (world points, counter-clockwise): a filled fan of
+   triangles in a darker shade of its colour (see-through at alpha < 255),
+   then its edge in the colour itself, or in white while dragged. */
+static void draw_convex(const app *a, const ga2d_vec *pts, int n, uint32_t color, int grabbed, Uint8 alpha)
 {
-    const app *a = (const app *)ctx;
-    SDL_Vertex v[GA2D_MAX_POLYGON_VERTICES];
-    SDL_FPoint line[GA2D_MAX_POLYGON_VERTICES + 1];
-    int idx[3 * GA2D_MAX_POLYGON_VERTICES];
-    int i, n = p->count, ni = 0, grabbed = a->dragging && ga2d_body_id_equal(id, a->grab);
+    SDL_Vertex v[MAX_OUTLINE];
+    SDL_FPoint line[MAX_OUTLINE + 1];
+    int idx[3 * MAX_OUTLINE];
+    int i, ni = 0;
     SDL_Color fill = rgb(color, 0.55), edge = grabbed ? rgb(0xFFFFFFu, 1) : rgb(color, 1);
-    if (n < 3 || n > GA2D_MAX_POLYGON_VERTICES) return;
+    if (n < 3 || n > MAX_OUTLINE) return;
+    fill.a = alpha;
     for (i = 0; i < n; ++i) {
-        v[i].position = line[i] = to_screen(&a->cam, ga2d_transform_apply(x, p->vertices[i]));
+        v[i].position = line[i] = to_screen(&a->cam, pts[i]);
         v[i].color = fill;
         v[i].tex_coord.x = v[i].tex_coord.y = 0;
     }
@@ -521,9 +873,84 @@ static void draw_polygon(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform 
         idx[ni++] = i;
         idx[ni++] = i + 1;
     }
+    if (alpha < 255) SDL_SetRenderDrawBlendMode(a->ren, SDL_BLENDMODE_BLEND);
     SDL_RenderGeometry(a->ren, NULL, v, n, idx, ni);
+    SDL_SetRenderDrawBlendMode(a->ren, SDL_BLENDMODE_NONE);
     SDL_SetRenderDrawColor(a->ren, edge.r, edge.g, edge.b, 255);
     SDL_RenderDrawLinesF(a->ren, line, n + 1);
+}
+
+/* Appends to pts the arc of radius r about c from angle a0, turning
+   counter-clockwise by da, in m points (both ends included). */
+static int arc_points(ga2d_vec *pts, int n, ga2d_vec c, double r, double a0, double da, int m)
+{
+    int i;
+    for (i = 0; i < m && n < MAX_OUTLINE; ++i) {
+        double t = a0 + da * i / (m - 1);
+        pts[n++] = ga2d_vec_make((ga2d_real)((double)c.x + r * cos(t)), (ga2d_real)((double)c.y + r * sin(t)));
+    }
+    return n;
+}
+
+static int is_grabbed(const app *a, ga2d_body_id id) { return a->dragging && ga2d_body_id_equal(id, a->grab); }
+
+/* A polygon; a rounded one (radius > 0) with an arc at each corner, from
+   the normal of the edge before it to the normal of the edge after it.
+   The sensor zone is see-through. */
+static void draw_polygon(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform x, uint32_t color, void *ctx)
+{
+    const app *a = (const app *)ctx;
+    ga2d_vec pts[MAX_OUTLINE];
+    int i, n = 0;
+    double r = (double)p->radius;
+    if (p->count < 3 || p->count > GA2D_MAX_POLYGON_VERTICES) return;
+    for (i = 0; i < p->count; ++i) {
+        ga2d_vec v = ga2d_transform_apply(x, p->vertices[i]);
+        if (r > 0) {
+            ga2d_vec n0 = ga2d_rotate(x.q, p->normals[(i + p->count - 1) % p->count]), n1 = ga2d_rotate(x.q, p->normals[i]);
+            double a0 = atan2((double)n0.y, (double)n0.x), da = atan2((double)n1.y, (double)n1.x) - a0;
+            while (da < 0) da += 2 * PI_D;
+            n = arc_points(pts, n, v, r, a0, da, CORNER_POINTS);
+        } else
+            pts[n++] = v;
+    }
+    draw_convex(a, pts, n, body_color(a, id, color), is_grabbed(a, id), ga2d_body_id_equal(id, a->zone) ? 60 : 255);
+}
+
+/* A circle, and a line from its centre along the body's x axis (it shows
+   the circle turn as it rolls). */
+static void draw_circle(ga2d_body_id id, ga2d_vec center, ga2d_real radius, ga2d_vec axis, uint32_t color, void *ctx)
+{
+    const app *a = (const app *)ctx;
+    ga2d_vec pts[ROUND_POINTS];
+    SDL_FPoint c = to_screen(&a->cam, center), e = to_screen(&a->cam, ga2d_vec_add(center, ga2d_vec_scale(axis, radius)));
+    SDL_Color edge = rgb(body_color(a, id, color), 1);
+    int n = arc_points(pts, 0, center, (double)radius, 0, 2 * PI_D * (ROUND_POINTS - 1) / ROUND_POINTS, ROUND_POINTS);
+    draw_convex(a, pts, n, body_color(a, id, color), is_grabbed(a, id), 255);
+    SDL_SetRenderDrawColor(a->ren, edge.r, edge.g, edge.b, 255);
+    SDL_RenderDrawLineF(a->ren, c.x, c.y, e.x, e.y);
+}
+
+/* A capsule: half a circle round each end, joined by the two sides. */
+static void draw_capsule(ga2d_body_id id, ga2d_vec c1, ga2d_vec c2, ga2d_real radius, uint32_t color, void *ctx)
+{
+    const app *a = (const app *)ctx;
+    ga2d_vec pts[ROUND_POINTS + 2];
+    double base = atan2((double)(c2.y - c1.y), (double)(c2.x - c1.x));
+    int n = arc_points(pts, 0, c2, (double)radius, base - PI_D / 2, PI_D, ROUND_POINTS / 2 + 1);
+    n = arc_points(pts, n, c1, (double)radius, base + PI_D / 2, PI_D, ROUND_POINTS / 2 + 1);
+    draw_convex(a, pts, n, body_color(a, id, color), is_grabbed(a, id), 255);
+}
+
+/* A segment (the chain's): a line two pixels wide. */
+static void draw_segment(ga2d_vec p, ga2d_vec q, uint32_t color, void *ctx)
+{
+    const app *a = (const app *)ctx;
+    SDL_FPoint s = to_screen(&a->cam, p), e = to_screen(&a->cam, q);
+    SDL_Color c = rgb(color, 1);
+    SDL_SetRenderDrawColor(a->ren, c.r, c.g, c.b, 255);
+    SDL_RenderDrawLineF(a->ren, s.x, s.y, e.x, e.y);
+    SDL_RenderDrawLineF(a->ren, s.x, s.y + 1, e.x, e.y + 1);
 }
 
 /* A contact point: a small square and its normal, 0.3 m long. */
@@ -566,6 +993,9 @@ static void draw_frame(app *a)
     SDL_RenderClear(r);
 
     dd.polygon = draw_polygon;
+    dd.circle = draw_circle;
+    dd.capsule = draw_capsule;
+    dd.segment = draw_segment;
     dd.contact = draw_contact;
     dd.draw_contacts = a->show_contacts;
     dd.context = a;
@@ -613,8 +1043,9 @@ static void draw_frame(app *a)
              SUBSTEP_CHOICES[a->substep_index], SOLVER_NAMES[a->solver], a->sleep_on ? "ON" : "OFF",
              a->show_contacts ? "ON" : "OFF");
     draw_text(r, 10, 32, 2, line, white);
+    if (a->status[0]) draw_text_shadowed(r, 10, HUD_TOP + 4, 2, a->status, yellow);
     draw_text(r, 10, WINDOW_H - HUD_BOTTOM + 8, 2,
-              "1-5 SCENE  R RESET  LEFT DRAG: PULL  RIGHT DRAG: THROW A BOX  P PAUSE  ESC QUIT", dim);
+              "1-9, 0 SCENE  R RESET  LEFT DRAG: PULL  RIGHT DRAG: THROW A BOX  P PAUSE  ESC QUIT", dim);
 }
 
 /* Saves what the renderer drew (before SDL_RenderPresent) as a BMP. */
@@ -634,7 +1065,8 @@ static int save_screenshot(SDL_Renderer *r, const char *path)
 /* ------------------------------------------------------------------- input */
 static void on_key(app *a, SDL_Keycode k, int *running)
 {
-    if (k >= SDLK_1 && k <= SDLK_5) load_scene(a, (int)(k - SDLK_0));
+    if (k >= SDLK_1 && k <= SDLK_9) load_scene(a, (int)(k - SDLK_0));
+    if (k == SDLK_0) load_scene(a, 10);
     switch (k) {
     case SDLK_ESCAPE: *running = 0; break;
     case SDLK_r: load_scene(a, a->scene); break;
@@ -723,7 +1155,7 @@ static void fake_mouse(app *a, Uint32 type, Uint8 button, ga2d_vec world, int *r
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: sdl_demo [--scene 1-5] [--frames N] [--screenshot FILE.bmp] [--drag-test]\n"
+    fprintf(stderr, "usage: sdl_demo [--scene 1-10] [--frames N] [--screenshot FILE.bmp] [--drag-test]\n"
                     "                [--throw-test] [--substeps 1|2|4|8] [--solver soft|baumgarte|ngs]\n"
                     "                [--no-sleep] [--contacts]\n");
     return 2;
@@ -763,7 +1195,7 @@ int main(int argc, char *argv[])
             else return usage();
         } else return usage();
     }
-    if (scene < 1 || scene > 5) return usage();
+    if (scene < 1 || scene > SCENES) return usage();
     if (screenshot && frames <= 0) frames = 120;
     if ((drag_test || throw_test) && frames <= 0) frames = 180;
 
@@ -804,6 +1236,10 @@ int main(int argc, char *argv[])
             if (!ga2d_body_id_is_null(top)) {
                 drag_from = ga2d_transform_apply(ga2d_body_transform(a.world, top), ga2d_vec_make(0.3f, 0.3f));
                 fake_mouse(&a, SDL_MOUSEBUTTONDOWN, SDL_BUTTON_LEFT, drag_from, &running);
+                if (!a.dragging) { /* a shape smaller than a 1 m box: at its centre */
+                    drag_from = ga2d_body_center(a.world, top);
+                    fake_mouse(&a, SDL_MOUSEBUTTONDOWN, SDL_BUTTON_LEFT, drag_from, &running);
+                }
                 if (!a.dragging) fprintf(stderr, "sdl_demo: --drag-test: the pick missed the top body\n");
             }
         }
