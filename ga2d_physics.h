@@ -3200,8 +3200,10 @@ typedef struct ga2d__shape {
     int next_free;
     int body;                    /* its body's slot */
     int next;                    /* the next shape of its body, or -1 */
-    int proxy;                   /* leaf in trees[body type != static] */
+    int proxy;                   /* leaf in trees[tree] */
+    int tree;                    /* 1 on a moving body, 0 on a static one */
     int in_move;                 /* queued for pair finding */
+    ga2d_real radius;            /* its round part's (ga2d__shape_radius), kept for the solver */
     ga2d_real density, friction, restitution;
     ga2d_filter filter;
     void *user_data;
@@ -3740,10 +3742,7 @@ static GA2D__HOT ga2d_vec ga2d__body_origin(const ga2d__body *b) { return ga2d_v
 static GA2D__HOT ga2d_transform ga2d__body_xf(const ga2d__body *b) { return ga2d_transform_make(ga2d__body_origin(b), b->sim.q); }
 
 /* The tree a shape's proxy lives in: static bodies' or moving ones'. */
-static ga2d__tree *ga2d__tree_of(const ga2d_world *w, const ga2d__shape *s)
-{
-    return (ga2d__tree *)&w->trees[w->bodies[s->body].type != GA2D_BODY_STATIC];
-}
+static ga2d__tree *ga2d__tree_of(const ga2d_world *w, const ga2d__shape *s) { return (ga2d__tree *)&w->trees[s->tree]; }
 
 /* A shape's fat box, as its tree holds it. */
 static ga2d_aabb ga2d__fat_box(const ga2d_world *w, const ga2d__shape *s) { return ga2d__tree_of(w, s)->nodes[s->proxy].box; }
@@ -4751,6 +4750,8 @@ static int ga2d__shape_add(ga2d_world *w, int slot, const ga2d_shape_def *def, c
     sh->type = (int)g->type;
     sh->geom = *g;
     sh->body = slot;
+    sh->tree = b->type != GA2D_BODY_STATIC;
+    sh->radius = ga2d__shape_radius(sh);
     sh->next = -1;
     sh->next_free = -1;
     sh->proxy = -1;
@@ -6006,6 +6007,7 @@ struct ga2d__group {
     ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
+    int extras;             /* the fields below are written (ga2d__lane_extras) */
     int round;              /* a lane has a round shape: rax.. are core anchors, o.. what lies along n (ga2d__round_offset) */
     ga2d__w oax[2], oay[2], obx[2], oby[2];
     ga2d__w tw;             /* +-1/2 where one side is round: the point slides with it (ga2d__point_now) */
@@ -6161,8 +6163,8 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->inv_ib = ga2d__solver_moves(bb) ? b->inv_inertia : 0;
         cc->to_static = cc->inv_ma == 0 || cc->inv_mb == 0;
         cc->count = ct->manifold.count;
-        cc->round_a = ga2d__shape_radius(&w->shapes[ct->shape_a]);
-        cc->round_b = ga2d__shape_radius(&w->shapes[ct->shape_b]);
+        cc->round_a = w->shapes[ct->shape_a].radius;
+        cc->round_b = w->shapes[ct->shape_b].radius;
         cc->hits = w->shapes[ct->shape_a].hit_events || w->shapes[ct->shape_b].hit_events;
         if (cc->round_a != 0 || cc->round_b != 0) ++w->counters.round_contacts;
         /* A's surface slides along t = (ny, -nx) at its speed, B's (whose
@@ -6703,6 +6705,46 @@ static void ga2d__solve_baumgarte(ga2d__step_context *c, int begin, int end)
     ga2d__solve_contacts(c, begin, end, GA2D__BIAS_BAUMGARTE);
 }
 
+/* Lane l's fields for round shapes, conveyors and rolling resistance.
+   The first lane of a group that needs them zeroes them in the lanes
+   before it (their group is flagged from then on, so every later lane
+   writes its own); a group without them never writes them. */
+static void ga2d__lane_extras(ga2d__group *g, int l, const ga2d__contact_constraint *c, const ga2d__contact_constraint *none)
+{
+    int k, j;
+    if (!g->extras) {
+        for (j = 0; j < l; ++j) {
+            for (k = 0; k < 2; ++k)
+                GA2D__LANE(g->oax[k], j) = GA2D__LANE(g->oay[k], j) = GA2D__LANE(g->obx[k], j) = GA2D__LANE(g->oby[k], j) = 0;
+            GA2D__LANE(g->tspeed, j) = GA2D__LANE(g->rr, j) = GA2D__LANE(g->rmass, j) = GA2D__LANE(g->rimp, j) = 0;
+            GA2D__LANE(g->tw, j) = 0;
+        }
+        g->extras = 1;
+    }
+    if (c->round_a != 0 || c->round_b != 0) g->round = 1;
+    if (c->tangent_speed != 0) g->conveyor = 1;
+    if (c->rolling != 0) g->rolling = 1;
+    GA2D__LANE(g->tspeed, l) = c->tangent_speed;
+    GA2D__LANE(g->rr, l) = c->rolling;
+    GA2D__LANE(g->rmass, l) = c->rolling != 0 && c->inv_ia + c->inv_ib > 0 ? 1 / (c->inv_ia + c->inv_ib) : 0;
+    GA2D__LANE(g->rimp, l) = 0;
+    GA2D__LANE(g->tw, l) = (c->round_a != 0) == (c->round_b != 0) ? 0 : (c->round_b != 0 ? GA2D__R(0.5) : GA2D__R(-0.5));
+    for (k = 0; k < 2; ++k) {
+        /* round shapes: core anchors that turn, and what lies along n that does not */
+        const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
+        ga2d_vec oa = ga2d__round_offset(c, p, 0), ob = ga2d__round_offset(c, p, 1);
+        ga2d_vec ca = c->round_a != 0 ? ga2d_vec_sub(p->ra, oa) : p->ra, cb = c->round_b != 0 ? ga2d_vec_sub(p->rb, ob) : p->rb;
+        GA2D__LANE(g->oax[k], l) = oa.x;
+        GA2D__LANE(g->oay[k], l) = oa.y;
+        GA2D__LANE(g->obx[k], l) = ob.x;
+        GA2D__LANE(g->oby[k], l) = ob.y;
+        GA2D__LANE(g->rax[k], l) = ca.x;
+        GA2D__LANE(g->ray[k], l) = ca.y;
+        GA2D__LANE(g->rbx[k], l) = cb.x;
+        GA2D__LANE(g->rby[k], l) = cb.y;
+    }
+}
+
 /* Lane l of group g holds constraint c (d: B's centre less A's), every
    field written: a point c lacks takes `none`'s (all zero), and so does an
    empty lane (c = none), so their masses are zero. */
@@ -6723,27 +6765,18 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->soft_mass, l) = sf->mass_scale;
     GA2D__LANE(g->soft_impulse, l) = sf->impulse_scale;
     GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
-    if (c->round_a != 0 || c->round_b != 0) g->round = 1;
-    GA2D__LANE(g->tspeed, l) = c->tangent_speed;
-    if (c->tangent_speed != 0) g->conveyor = 1;
-    GA2D__LANE(g->rr, l) = c->rolling;
-    GA2D__LANE(g->rmass, l) = c->inv_ia + c->inv_ib > 0 ? 1 / (c->inv_ia + c->inv_ib) : 0;
-    GA2D__LANE(g->rimp, l) = 0;
-    if (c->rolling != 0) g->rolling = 1;
-    GA2D__LANE(g->tw, l) = (c->round_a != 0) == (c->round_b != 0) ? 0 : (c->round_b != 0 ? GA2D__R(0.5) : GA2D__R(-0.5));
+    /* what only round shapes, conveyors and rolling resistance use: a
+       polygon world writes none of it (ga2d__lane_extras) */
+    if (c->round_a != 0 || c->round_b != 0 || c->tangent_speed != 0 || c->rolling != 0 || g->extras)
+        ga2d__lane_extras(g, l, c, none);
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
-        /* round shapes: core anchors that turn, and what lies along n that does not */
-        ga2d_vec oa = ga2d__round_offset(c, p, 0), ob = ga2d__round_offset(c, p, 1);
-        ga2d_vec ca = c->round_a != 0 ? ga2d_vec_sub(p->ra, oa) : p->ra, cb = c->round_b != 0 ? ga2d_vec_sub(p->rb, ob) : p->rb;
-        GA2D__LANE(g->oax[k], l) = oa.x;
-        GA2D__LANE(g->oay[k], l) = oa.y;
-        GA2D__LANE(g->obx[k], l) = ob.x;
-        GA2D__LANE(g->oby[k], l) = ob.y;
-        GA2D__LANE(g->rax[k], l) = ca.x;
-        GA2D__LANE(g->ray[k], l) = ca.y;
-        GA2D__LANE(g->rbx[k], l) = cb.x;
-        GA2D__LANE(g->rby[k], l) = cb.y;
+        if (c->round_a == 0 && c->round_b == 0) {
+            GA2D__LANE(g->rax[k], l) = p->ra.x;
+            GA2D__LANE(g->ray[k], l) = p->ra.y;
+            GA2D__LANE(g->rbx[k], l) = p->rb.x;
+            GA2D__LANE(g->rby[k], l) = p->rb.y;
+        }
         GA2D__LANE(g->adjust[k], l) =
             p->separation - ((d.x + (p->rb.x - p->ra.x)) * c->normal.x + (d.y + (p->rb.y - p->ra.y)) * c->normal.y);
         GA2D__LANE(g->has[k], l) = k < c->count ? 1 : 0;
@@ -6773,9 +6806,7 @@ static void ga2d__group_open(ga2d__group *g)
 {
     g->count = 0;
     g->skip = 0;
-    g->round = 0;
-    g->conveyor = 0;
-    g->rolling = 0;
+    g->extras = g->round = g->conveyor = g->rolling = 0;
 }
 
 /* The first group from gi on with a free lane (or group_count): full
@@ -8765,6 +8796,8 @@ static int ga2d__snap_read_shapes(ga2d_world *t, ga2d__codec *k)
         sh->in_move = 0;
         sh->proxy = -1;
         if (sh->type < 0) continue;
+        sh->tree = t->bodies[sh->body].type != GA2D_BODY_STATIC;
+        sh->radius = ga2d__shape_radius(sh);
         ga2d__io_vec(k, &box.lower);
         ga2d__io_vec(k, &box.upper);
         if (!k->ok || !ga2d__snap_box_ok(box)) return 0;
