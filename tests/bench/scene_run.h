@@ -9,7 +9,8 @@
    Timing: only ga2d_world_step is timed, and the first SR_WARMUP steps of a
    run are left out (the first steps build every pair and contact at once).
    A scenes.h scene times each step on its own, since the driver has work
-   between steps (turning the tumbler, reading contacts) that must not be
+   between steps (turning the tumbler, reading contacts, making and
+   destroying the bodies of rain and mixed_pile) that must not be
    counted; a step there costs far more than the clock.  The closed-form
    scenes step one body, where a step can cost less than reading the clock
    twice, so they are timed as whole loops with nothing else in them, over
@@ -105,17 +106,74 @@ static ga2d_body_def sr__body_def(const bench_body *b, int fixed_rotation)
              : b->type == BENCH_KINEMATIC ? GA2D_BODY_KINEMATIC
                                           : GA2D_BODY_STATIC;
     d.position = sr__vec(b->x, b->y);
-    d.polygon = ga2d_polygon_box((ga2d_real)b->hx, (ga2d_real)b->hy);
+    if (b->angle != 0) d.rotor = ga2d_rotor_from_angle((ga2d_real)b->angle);
+    if (b->shape_count == 0) d.polygon = ga2d_polygon_box((ga2d_real)b->hx, (ga2d_real)b->hy);
     d.velocity = sr__vec(b->vx, b->vy);
     d.angular_velocity = (ga2d_real)b->w;
     d.density = (ga2d_real)b->density;
     d.friction = (ga2d_real)b->friction;
+    d.linear_damping = (ga2d_real)b->linear_damping;
     d.is_awake = !b->asleep;
     d.fixed_rotation = fixed_rotation && d.type == GA2D_BODY_DYNAMIC;
     return d;
 }
 
-/* Sum of m v over the dynamic bodies, in double. */
+/* Shape sh on body id; 0 when ga2d refuses it.  Built with
+   BENCH_BOXES_ONLY (for a header from before shapes: the box scenes
+   only, see ab_header.sh), every shape is refused. */
+static int sr__add_shape(ga2d_world *w, ga2d_body_id id, const bench_shape *sh)
+{
+#ifdef BENCH_BOXES_ONLY
+    (void)w;
+    (void)id;
+    (void)sh;
+    return 0;
+#else
+    ga2d_shape_def d = ga2d_default_shape_def();
+    ga2d_shape_id made = ga2d_shape_id_null();
+    d.density = (ga2d_real)sh->density;
+    d.friction = (ga2d_real)sh->friction;
+    d.filter.category_bits = sh->category;
+    d.filter.mask_bits = sh->mask;
+    d.filter.group_index = sh->group;
+    if (sh->kind == BENCH_SHAPE_CIRCLE) {
+        ga2d_circle c;
+        c.center = sr__vec(sh->x1, sh->y1);
+        c.radius = (ga2d_real)sh->radius;
+        made = ga2d_shape_create_circle(w, id, &d, &c);
+    } else if (sh->kind == BENCH_SHAPE_CAPSULE) {
+        ga2d_capsule c;
+        c.center1 = sr__vec(sh->x1, sh->y1);
+        c.center2 = sr__vec(sh->x2, sh->y2);
+        c.radius = (ga2d_real)sh->radius;
+        made = ga2d_shape_create_capsule(w, id, &d, &c);
+    } else if (sh->kind == BENCH_SHAPE_POLYGON) {
+        ga2d_vec pts[BENCH_MAX_VERTICES];
+        ga2d_polygon p;
+        int i;
+        for (i = 0; i < sh->count && i < BENCH_MAX_VERTICES; ++i) pts[i] = sr__vec(sh->px[i], sh->py[i]);
+        if (ga2d_polygon_make(pts, sh->count, &p) != GA2D_OK) return 0;
+        p.radius = (ga2d_real)sh->radius;
+        made = ga2d_shape_create_polygon(w, id, &d, &p);
+    }
+    return !ga2d_shape_id_is_null(made);
+#endif
+}
+
+/* Body i of s in w: its box, or a body with its own shapes; the null id
+   when ga2d refuses it. */
+static ga2d_body_id sr__make_body(ga2d_world *w, const bench_scene *s, int i, int fixed_rotation)
+{
+    const bench_body *b = &s->bodies[i];
+    ga2d_body_def d = sr__body_def(b, fixed_rotation);
+    ga2d_body_id id = ga2d_body_create(w, &d);
+    int k;
+    for (k = 0; k < b->shape_count && !ga2d_body_id_is_null(id); ++k)
+        if (!sr__add_shape(w, id, &s->shapes[b->shape_first + k])) id = ga2d_body_id_null();
+    return id;
+}
+
+/* Sum of m v over the dynamic bodies alive, in double. */
 static void sr__momentum(const ga2d_world *w, const bench_scene *s, const ga2d_body_id *ids, double p[2])
 {
     int i;
@@ -123,12 +181,25 @@ static void sr__momentum(const ga2d_world *w, const bench_scene *s, const ga2d_b
     for (i = 0; i < s->count; ++i) {
         ga2d_vec v;
         double m;
-        if (s->bodies[i].type != BENCH_DYNAMIC) continue;
+        if (s->bodies[i].type != BENCH_DYNAMIC || ga2d_body_id_is_null(ids[i])) continue;
         v = ga2d_body_velocity(w, ids[i]);
         m = (double)ga2d_body_mass_data(w, ids[i]).mass;
         p[0] += m * (double)v.x;
         p[1] += m * (double)v.y;
     }
+}
+
+/* 1 when body b (alive as id) is bounded and its centre is through its
+   floor: below lo_y, between lo_x and hi_x (or not finite). */
+static int sr__through(const ga2d_world *w, const bench_body *b, ga2d_body_id id)
+{
+    ga2d_vec c;
+    double x, y;
+    if (!b->bounded || b->type != BENCH_DYNAMIC) return 0;
+    c = ga2d_body_center(w, id);
+    x = (double)c.x;
+    y = (double)c.y;
+    return !(y >= b->lo_y || x < b->lo_x || x > b->hi_x);
 }
 
 /* The deepest penetration among the touching contacts, m (0 if none).
@@ -154,40 +225,71 @@ static double sr__deepest(const ga2d_world *w, ga2d_contact_data **buf, int *cap
     return deepest;
 }
 
+/* A body's death: the step before which it goes, and its index. */
+typedef struct sr__death { int step, index; } sr__death;
+
+static int sr__cmp_death(const void *a, const void *b)
+{
+    const sr__death *x = (const sr__death *)a, *y = (const sr__death *)b;
+    if (x->step != y->step) return (x->step > y->step) - (x->step < y->step);
+    return (x->index > y->index) - (x->index < y->index);
+}
+
 /* One run of scene s in a world made from wd (the caller sets gravity and
    sleep, see sr_scene_def): every dynamic body fixed_rotation if asked;
    the tumbler's kinematic walls given, before every step, the velocity
-   that turns them about the pivot from where they are.  Returns out->ok. */
+   that turns them about the pivot from where they are; bodies destroyed
+   and made before the steps the scene says (deaths first, in order of
+   index; then births, in order), none of it timed.  Returns out->ok. */
 SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotation, sr_result *out)
 {
     ga2d_world *w = ga2d_world_create(&wd);
-    ga2d_body_id *ids = (ga2d_body_id *)malloc((size_t)s->count * sizeof *ids);
+    ga2d_body_id *ids = (ga2d_body_id *)malloc((size_t)(s->count > 0 ? s->count : 1) * sizeof *ids);
+    sr__death *deaths = (sr__death *)malloc((size_t)(s->count > 0 ? s->count : 1) * sizeof *deaths);
     ga2d_contact_data *contacts = NULL;
     const ga2d_real dt = (ga2d_real)s->dt;
-    double p0[2], total = 0, deepest = 0;
+    double p0[2] = {0, 0}, total = 0, deepest = 0;
     ga2d_vec start = ga2d_vec_make(0, 0);
-    int i, k, capacity = 0, ok = w != NULL && ids != NULL;
+    int i, k, capacity = 0, born = 0, dead = 0, dying = 0, through = 0, ok = w != NULL && ids != NULL && deaths != NULL;
     memset(out, 0, sizeof *out);
     for (i = 0; ok && i < s->count; ++i) {
-        ga2d_body_def d = sr__body_def(&s->bodies[i], fixed_rotation);
-        ids[i] = ga2d_body_create(w, &d);
-        ok = !ga2d_body_id_is_null(ids[i]);
+        ids[i] = ga2d_body_id_null();
+        if (s->bodies[i].death > 0) {
+            deaths[dying].step = s->bodies[i].death;
+            deaths[dying++].index = i;
+        }
+        ok = i == 0 || s->bodies[i].birth >= s->bodies[i - 1].birth; /* listed in order of birth */
     }
-    if (ok) {
-        start = ga2d_body_center(w, ids[s->probe]);
-        sr__momentum(w, s, ids, p0);
+    if (ok) qsort(deaths, (size_t)dying, sizeof *deaths, sr__cmp_death);
+    for (; ok && born < s->count && s->bodies[born].birth <= 0; ++born) {
+        ids[born] = sr__make_body(w, s, born, fixed_rotation);
+        ok = !ga2d_body_id_is_null(ids[born]);
     }
+    if (ok && s->figure == BENCH_FIG_DRIFT) start = ga2d_body_center(w, ids[s->probe]);
+    if (ok && s->figure == BENCH_FIG_MOMENTUM) sr__momentum(w, s, ids, p0);
     for (k = 0; ok && k < s->steps; ++k) {
         double t0;
         ga2d_result r;
-        for (i = 0; i < s->count; ++i)
-            if (s->bodies[i].type == BENCH_KINEMATIC) {
+        for (; ok && dead < dying && deaths[dead].step <= k; ++dead) {
+            ga2d_body_id *id = &ids[deaths[dead].index];
+            if (ga2d_body_id_is_null(*id)) continue;
+            through += sr__through(w, &s->bodies[deaths[dead].index], *id);
+            ok = ga2d_body_destroy(w, *id) == GA2D_OK;
+            *id = ga2d_body_id_null();
+        }
+        for (; ok && born < s->count && s->bodies[born].birth <= k; ++born) {
+            ids[born] = sr__make_body(w, s, born, fixed_rotation);
+            ok = !ga2d_body_id_is_null(ids[born]);
+        }
+        for (i = 0; i < born; ++i)
+            if (s->bodies[i].type == BENCH_KINEMATIC && !ga2d_body_id_is_null(ids[i])) {
                 ga2d_vec c = ga2d_body_center(w, ids[i]);
                 double vx, vy;
                 bench_scene_kinematic_velocity(s, (double)c.x, (double)c.y, &vx, &vy);
                 ga2d_body_set_velocity(w, ids[i], sr__vec(vx, vy));
                 ga2d_body_set_angular_velocity(w, ids[i], (ga2d_real)s->pivot_w);
             }
+        if (!ok) break;
         t0 = sr_now_ms();
         r = ga2d_world_step(w, dt);
         if (k >= SR_WARMUP) total += sr_now_ms() - t0;
@@ -206,6 +308,10 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
             double p[2];
             sr__momentum(w, s, ids, p);
             out->figure = hypot(p[0] - p0[0], p[1] - p0[1]) / hypot(p0[0], p0[1]);
+        } else if (s->figure == BENCH_FIG_THROUGH) {
+            for (i = 0; i < born; ++i)
+                if (!ga2d_body_id_is_null(ids[i])) through += sr__through(w, &s->bodies[i], ids[i]);
+            out->figure = through;
         } else {
             out->figure = deepest;
         }
@@ -213,6 +319,7 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
     }
     out->ok = ok;
     free(contacts);
+    free(deaths);
     free(ids);
     if (w) ga2d_world_destroy(w);
     return ok;
@@ -260,8 +367,9 @@ static void sr__spring(ga2d_world *w, void *ctx)
    gets its body. */
 static ga2d_world *sr__closed_form_world(int kind, ga2d_world_def wd, sr_field *f)
 {
-    ga2d_body_def bd = ga2d_default_body_def(); /* a 1 m box, density 1: m = 1 */
+    ga2d_body_def bd = ga2d_default_body_def();
     ga2d_world *w;
+    bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5); /* a 1 m box, density 1: m = 1 */
     wd.gravity = sr__vec(0, kind == SR_BOUNCE || kind == SR_PROJECTILE ? -SR_G : 0);
     if (kind == SR_OSCILLATOR) {
         f->k = (ga2d_real)(4 * SR_PI * SR_PI);
