@@ -1,7 +1,7 @@
 /* bench_collision.c - broadphase and narrowphase alone (a benchmark, not a test).
 
    Broadphase: the header's dynamic AABB tree (ga2d__tree_*, driven the way
-   ga2d__update_pairs drives it: fat boxes moved only when a body leaves
+   the step's broadphase stages drive it: fat boxes moved only when a body leaves
    them, a move buffer, queries of the moved proxies against the moving tree
    and, for moving bodies, the static tree, a hashed pair set, ended pairs
    found by re-testing every pair's fat boxes) against a sort-and-sweep
