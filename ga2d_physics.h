@@ -3108,6 +3108,7 @@ typedef struct ga2d__contact {
     ga2d__held held;         /* the manifold in A's frame, while touching */
     uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
     int shape_a, shape_b;    /* shape slots, shape_a < shape_b */
+    int extras;              /* a shape is round, a conveyor, rolls with resistance or reports hits */
 } ga2d__contact;
 
 /* What the narrowphase stage found of a contact, for the book-keeping
@@ -3281,6 +3282,7 @@ struct ga2d_world {
     ga2d__chain *chains;
     int chain_capacity, chain_used, chain_count, chain_free;
     int sensor_count;            /* live sensor shapes: none, and sensing costs nothing */
+    int hit_shapes;              /* live shapes with hit events: none, and no pass looks for hits */
     ga2d_sensor_event *sensor_begin, *sensor_end;
     int sensor_begin_count, sensor_end_count, sensor_begin_capacity, sensor_end_capacity;
     int sensor_end_pending;      /* ends from destruction since the last step */
@@ -3554,6 +3556,8 @@ static int ga2d__create_contact(ga2d_world *w, int sa, int sb)
     c->serial = w->contact_serial++;
     c->friction = GA2D__SQRT(pa->friction * pb->friction);
     c->restitution = pa->restitution > pb->restitution ? pa->restitution : pb->restitution;
+    c->extras = pa->radius != 0 || pb->radius != 0 || pa->tangent_speed != 0 || pb->tangent_speed != 0 ||
+                pa->rolling_resistance != 0 || pb->rolling_resistance != 0 || pa->hit_events || pb->hit_events;
     ga2d__link_contact(w, ci, 0);
     ga2d__link_contact(w, ci, 1);
     ga2d__pairs_put(w->pair_keys, w->pair_vals, w->pair_capacity, ga2d__pair_key(sa, sb), ci);
@@ -4764,6 +4768,7 @@ static int ga2d__shape_add(ga2d_world *w, int slot, const ga2d_shape_def *def, c
     sh->sensor_events = def->enable_sensor_events != 0;
     sh->pre_solve_events = def->enable_pre_solve_events != 0;
     sh->hit_events = def->enable_hit_events != 0;
+    w->hit_shapes += sh->hit_events;
     sh->tangent_speed = def->tangent_speed;
     sh->rolling_resistance = def->rolling_resistance;
     sh->chain = -1;
@@ -5031,6 +5036,7 @@ static void ga2d__shape_free(ga2d_world *w, int k)
     if (b->shape_tail == k) b->shape_tail = prev;
     --b->shape_count;
     --w->shape_count;
+    w->hit_shapes -= sh->hit_events;
     sh->in_move = 0;
     sh->type = -1;
     sh->generation = sh->generation + 1 ? sh->generation + 1 : 1;
@@ -6139,6 +6145,24 @@ static void ga2d__order_constraints(ga2d__step_context *c)
     }
 }
 
+/* What only round shapes, conveyors, rolling resistance and hit events
+   need of a constraint (a polygon world's contacts never come here). */
+static void ga2d__constraint_extras(ga2d_world *w, const ga2d__contact *ct, ga2d__contact_constraint *cc)
+{
+    const ga2d__shape *sa = &w->shapes[ct->shape_a], *sb = &w->shapes[ct->shape_b];
+    ga2d_real rra = sa->rolling_resistance, rrb = sb->rolling_resistance;
+    cc->round_a = sa->radius;
+    cc->round_b = sb->radius;
+    if (cc->round_a != 0 || cc->round_b != 0) ++w->counters.round_contacts;
+    cc->hits = sa->hit_events || sb->hit_events;
+    /* A's surface slides along t = (ny, -nx) at its speed, B's (whose
+       outward normal is -n) along -t: B relative to A, s_a + s_b less */
+    cc->tangent_speed = (sa->tangent_speed + sb->tangent_speed) * w->def.length_units_per_meter;
+    /* rolling resistance: the larger coefficient at the rolling radius (a
+       round side's; none between sharp shapes) */
+    cc->rolling = (rra > rrb ? rra : rrb) * (cc->round_a > cc->round_b ? cc->round_a : cc->round_b);
+}
+
 /* Stage, over the constraints: each takes its contact's normal, material
    and points; static, kinematic and sleeping partners keep their
    velocities (inverse mass and inertia 0 here). */
@@ -6163,20 +6187,9 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->inv_ib = ga2d__solver_moves(bb) ? b->inv_inertia : 0;
         cc->to_static = cc->inv_ma == 0 || cc->inv_mb == 0;
         cc->count = ct->manifold.count;
-        cc->round_a = w->shapes[ct->shape_a].radius;
-        cc->round_b = w->shapes[ct->shape_b].radius;
-        cc->hits = w->shapes[ct->shape_a].hit_events || w->shapes[ct->shape_b].hit_events;
-        if (cc->round_a != 0 || cc->round_b != 0) ++w->counters.round_contacts;
-        /* A's surface slides along t = (ny, -nx) at its speed, B's (whose
-           outward normal is -n) along -t: B relative to A, s_a + s_b less */
-        cc->tangent_speed = (w->shapes[ct->shape_a].tangent_speed + w->shapes[ct->shape_b].tangent_speed) *
-                            w->def.length_units_per_meter;
-        {
-            /* rolling resistance: the larger coefficient at the rolling
-               radius (a round side's; none between sharp shapes) */
-            ga2d_real rra = w->shapes[ct->shape_a].rolling_resistance, rrb = w->shapes[ct->shape_b].rolling_resistance;
-            cc->rolling = (rra > rrb ? rra : rrb) * (cc->round_a > cc->round_b ? cc->round_a : cc->round_b);
-        }
+        cc->round_a = cc->round_b = cc->tangent_speed = cc->rolling = 0;
+        cc->hits = 0;
+        if (ct->extras) ga2d__constraint_extras(w, ct, cc);
         /* anchors from the centres, taken from the origin-relative ones so
            that no large coordinates are subtracted */
         ca = ga2d_rotate(a->q, a->local_center);
@@ -7579,10 +7592,15 @@ static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
         ga2d_aabb fat;
         for (s = b->shape_head; s >= 0 && !refit; s = w->shapes[s].next) refit = ga2d__needs_refit(w, b, &w->shapes[s], &fat);
         if (!refit) continue;
-        for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
-            const ga2d__shape *sh = &w->shapes[s];
-            ga2d__needs_refit(w, b, sh, &fat);
+        if (b->shape_count == 1) {
+            const ga2d__shape *sh = &w->shapes[b->shape_head];
             ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
+        } else {
+            for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
+                const ga2d__shape *sh = &w->shapes[s];
+                ga2d__needs_refit(w, b, sh, &fat);
+                ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
+            }
         }
         c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
     }
@@ -7943,7 +7961,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     /* impulses kept for the next step, bodies finished, sleep */
     ga2d__run(c, ga2d__store_impulses, c->group_count);
     c->group_count = 0;
-    ga2d__hit_events(c);
+    if (w->hit_shapes > 0) ga2d__hit_events(c);
     ga2d__run(c, ga2d__finish_bodies, w->moving_count);
     w->counters.constraint_count = c->constraint_count;
     w->time = c->t0 + (double)dt;
@@ -8766,6 +8784,7 @@ static int ga2d__snap_read_shapes(ga2d_world *t, ga2d__codec *k)
         if (sh->type >= 0) {
             ++live;
             moves += t->bodies[sh->body].type != GA2D_BODY_STATIC;
+            t->hit_shapes += sh->hit_events;
         }
         if (sh->type >= 0 && sh->is_sensor) {
             int n = sh->visitor_count;
