@@ -62,6 +62,7 @@ void suite_hostile(void);
 void suite_shape_mass(void);
 void suite_shape_collide(void);
 void suite_shape_world(void);
+void suite_shape_terrain(void);
 
 #ifdef __cplusplus
 }

@@ -90,6 +90,7 @@ int main(int argc, char **argv)
     suite_contacts();
     suite_solver();
     suite_shape_world();
+    suite_shape_terrain();
     suite_determinism();
     suite_snapshot();
     suite_containment();
