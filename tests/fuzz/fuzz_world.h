@@ -439,7 +439,8 @@ static void fw_queries(fw_state *s)
     FUZZ_CHECK(n >= 0);
     for (i = 0; i < (n < 8 ? n : 8); ++i) {
         FUZZ_CHECK(buf[i].manifold.count >= 1 && buf[i].manifold.count <= 2);
-        FUZZ_CHECK(buf[i].body_a.index1 < buf[i].body_b.index1);
+        /* contacts join shapes, A's slot before B's, of two bodies */
+        FUZZ_CHECK(buf[i].shape_a.index1 < buf[i].shape_b.index1 && buf[i].body_a.index1 != buf[i].body_b.index1);
     }
     for (k = 0; k < s->nids; ++k) {
         n = ga2d_body_get_contacts(s->w, s->ids[k], buf, 8);
