@@ -996,7 +996,8 @@ GA2D_API ga2d_shape_id ga2d_shape_create_circle(ga2d_world *w, ga2d_body_id body
 GA2D_API ga2d_shape_id ga2d_shape_create_capsule(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_capsule *c);
 GA2D_API ga2d_shape_id ga2d_shape_create_polygon(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_polygon *p);
 GA2D_API ga2d_shape_id ga2d_shape_create_segment(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_segment *s);
-/* Any of the above from a geometry; *out gets the id (null on failure). */
+/* Any of the above from a geometry; *out gets the id (null on failure).
+   A chain segment is INVALID_ARGUMENT here: chains make their own. */
 GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def,
                                               const ga2d_geometry *g, ga2d_shape_id *out);
 /* Destroys a shape (its contacts end without events, as a body's do);
@@ -2755,7 +2756,7 @@ static ga2d_real ga2d__hull_nearest(const ga2d__hull *h, ga2d_vec c, ga2d_vec *q
         ga2d_real dist = ga2d__length(r);
         *q = h->v[k];
         *feature = GA2D__VERTEX_FEATURE | k;
-        if (dist > 0) {
+        if (dist >= GA2D__MIN_NORMAL) { /* 1/dist overflows below: coincident then */
             *u = ga2d_vec_scale(r, 1 / dist);
             return dist;
         }
@@ -2792,7 +2793,7 @@ static int ga2d__collide_circles(ga2d_vec ca, ga2d_real ra, ga2d_vec cb, ga2d_re
     ga2d_vec r = ga2d_vec_sub(cb, ca), u, mid;
     ga2d_real d = ga2d__length(r), sep = d - ra - rb;
     if (sep > margin) return 0;
-    u = d > 0 ? ga2d_vec_scale(r, 1 / d) : ga2d_vec_make(1, 0);
+    u = d >= GA2D__MIN_NORMAL ? ga2d_vec_scale(r, 1 / d) : ga2d_vec_make(1, 0); /* 1/d overflows below */
     mid = ga2d_vec_add(ga2d_vec_scale(ga2d_vec_add(ca, cb), GA2D__R(0.5)), ga2d_vec_scale(u, (ra - rb) / 2));
     m->normal = ga2d_rotate(xa.q, u);
     ga2d__put_point(m, xa, d_ab, mid, sep, ga2d__feature_id(0, 0, 0));
@@ -3220,6 +3221,7 @@ typedef struct ga2d__shape {
    them by pointer. */
 typedef struct ga2d__contact_constraint ga2d__contact_constraint;
 typedef struct ga2d__group ga2d__group;
+typedef struct ga2d__group_extra ga2d__group_extra;
 typedef struct ga2d__sbody ga2d__sbody;
 typedef struct ga2d__rk4 ga2d__rk4;
 
@@ -3244,6 +3246,8 @@ typedef struct ga2d__step_context {
     int constraint_count, constraint_capacity;
     ga2d__group *groups;         /* the lane solver's, live during the substeps */
     int group_count, group_capacity;
+    ga2d__group_extra *group_extras; /* beside the groups, when a constraint needs them */
+    int group_extra_capacity, group_extras_on;
     ga2d__sbody *sbodies;        /* its body state, by slot (one dummy past the end) */
     int sbody_capacity;
     int *last_group;             /* by slot: the last group that moves the body */
@@ -3286,6 +3290,7 @@ struct ga2d_world {
     ga2d_sensor_event *sensor_begin, *sensor_end;
     int sensor_begin_count, sensor_end_count, sensor_begin_capacity, sensor_end_capacity;
     int sensor_end_pending;      /* ends from destruction since the last step */
+    int sensor_end_lost;         /* one of those found no room: the next step says so */
     int *sensor_scratch;         /* a sensor's candidates this step */
     int sensor_scratch_count, sensor_scratch_capacity;
     int *moving;                 /* slots of kinematic and dynamic bodies */
@@ -4880,18 +4885,27 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
 /* ---------------------------------------------------------------- sensors */
 /* Appends a sensor event; on failure the step (or the next one, for a
    destruction) reports OUT_OF_MEMORY. */
-static void ga2d__push_sensor_event(ga2d_world *w, int end, ga2d_shape_id sensor, ga2d_shape_id visitor)
+static int ga2d__push_sensor_event(ga2d_world *w, int end, ga2d_shape_id sensor, ga2d_shape_id visitor)
 {
     ga2d_sensor_event **arr = end ? &w->sensor_end : &w->sensor_begin;
     int *count = end ? &w->sensor_end_count : &w->sensor_begin_count;
     int *cap = end ? &w->sensor_end_capacity : &w->sensor_begin_capacity;
     if (!ga2d__grow(&w->mem, (void **)arr, cap, *count + 1, sizeof **arr)) {
         w->step.error = GA2D_ERR_OUT_OF_MEMORY;
-        return;
+        return 0;
     }
     (*arr)[*count].sensor = sensor;
     (*arr)[*count].visitor = visitor;
     ++*count;
+    return 1;
+}
+
+/* An end from a destruction waits for the next step's events; one that
+   found no room makes that step report OUT_OF_MEMORY. */
+static void ga2d__push_sensor_end_pending(ga2d_world *w, ga2d_shape_id sensor, ga2d_shape_id visitor)
+{
+    if (ga2d__push_sensor_event(w, 1, sensor, visitor)) ++w->sensor_end_pending;
+    else w->sensor_end_lost = 1;
 }
 
 /* A shape about to go: a sensor ends its overlaps, a visitor leaves every
@@ -4904,8 +4918,7 @@ static void ga2d__sensor_forget(ga2d_world *w, int k)
     ga2d__enter(w);
     if (sh->is_sensor) {
         for (i = 0; i < sh->visitor_count; ++i) {
-            ga2d__push_sensor_event(w, 1, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, sh->visitors[i]));
-            ++w->sensor_end_pending;
+            ga2d__push_sensor_end_pending(w, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, sh->visitors[i]));
         }
         GA2D__FREE_ARRAY(&w->mem, sh->visitors, sh->visitor_capacity);
         sh->visitors = NULL;
@@ -4917,8 +4930,7 @@ static void ga2d__sensor_forget(ga2d_world *w, int k)
             if (se->type < 0 || !se->is_sensor) continue;
             for (j = 0; j < se->visitor_count && se->visitors[j] != k; ++j) continue;
             if (j == se->visitor_count) continue;
-            ga2d__push_sensor_event(w, 1, ga2d__shape_id_of(w, i), ga2d__shape_id_of(w, k));
-            ++w->sensor_end_pending;
+            ga2d__push_sensor_end_pending(w, ga2d__shape_id_of(w, i), ga2d__shape_id_of(w, k));
             memmove(&se->visitors[j], &se->visitors[j + 1], (size_t)(se->visitor_count - j - 1) * sizeof *se->visitors);
             --se->visitor_count;
         }
@@ -5053,6 +5065,7 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
     int slot;
     if (r != GA2D_OK) return r;
     slot = ga2d__slot(id);
+    ga2d__enter(w); /* waking, sensors and chains allocate and free through the hooks */
     {
         /* what rested on it must not hang in the air: wake its neighbours */
         int link;
@@ -5074,6 +5087,7 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
     b->next_free = w->free_head;
     w->free_head = slot;
     --w->body_count;
+    ga2d__leave(w);
     return GA2D_OK;
 }
 
@@ -5134,6 +5148,7 @@ GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body,
     if (out) *out = ga2d_shape_id_null();
     if (!w || !def || !g || !out) return GA2D_ERR_INVALID_ARGUMENT;
     if ((r = ga2d__writable(w, body, &b)) != GA2D_OK) return r;
+    if (g->type == GA2D_SHAPE_CHAIN_SEGMENT) return GA2D_ERR_INVALID_ARGUMENT; /* only on a chain */
     ga2d__resolve_shape_def(def, &d);
     if (!ga2d__finite(d.density) || !ga2d__finite(d.friction) || !ga2d__finite(d.restitution) || !ga2d__finite(d.tangent_speed) ||
         !ga2d__finite(d.rolling_resistance))
@@ -5199,9 +5214,11 @@ GA2D_API ga2d_result ga2d_shape_destroy(ga2d_world *w, ga2d_shape_id id, int upd
     if (r != GA2D_OK) return r;
     if (sh->type == GA2D_SHAPE_CHAIN_SEGMENT) return GA2D_ERR_INVALID_ARGUMENT; /* ga2d_chain_destroy */
     slot = sh->body;
+    ga2d__enter(w); /* sensors, the tree and waking allocate and free through the hooks */
     ga2d__shape_remove(w, (int)id.index1 - 1);
     if (update_body_mass) ga2d__update_mass(w, slot, ga2d__body_origin(&w->bodies[slot]));
     ga2d__wake(w, slot);
+    ga2d__leave(w);
     return GA2D_OK;
 }
 
@@ -5999,6 +6016,17 @@ struct ga2d__sbody {
    lane), which of them the lane moves, its constraint's index, and the
    constraint's data.  A one-point contact's second point and an empty lane
    have zero masses, so their impulses stay zero. */
+/* What only round shapes, conveyors and rolling resistance add to a
+   group, kept in an array beside the groups (one per group, allocated only
+   in a step that needs it) so that a polygon world's groups stay compact:
+   the passes stream them. */
+struct ga2d__group_extra {
+    ga2d__w oax[2], oay[2], obx[2], oby[2]; /* round sides: what lies along n (ga2d__round_offset) */
+    ga2d__w tw;             /* +-1/2 where one side is round: the point slides with it (ga2d__point_now) */
+    ga2d__w tspeed;         /* the conveyor's tangent speed */
+    ga2d__w rr, rmass, rimp; /* rolling resistance: rr = c r, rmass = 1/(iA + iB), rimp its impulse */
+};
+
 struct ga2d__group {
     int a[GA2D__LANES], b[GA2D__LANES];
     int con[GA2D__LANES];       /* the lane's constraint, -1 in an empty lane */
@@ -6013,14 +6041,11 @@ struct ga2d__group {
     ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
-    int extras;             /* the fields below are written (ga2d__lane_extras) */
-    int round;              /* a lane has a round shape: rax.. are core anchors, o.. what lies along n (ga2d__round_offset) */
-    ga2d__w oax[2], oay[2], obx[2], oby[2];
-    ga2d__w tw;             /* +-1/2 where one side is round: the point slides with it (ga2d__point_now) */
-    int conveyor;           /* a lane has a tangent speed (tspeed) */
-    ga2d__w tspeed;
-    int rolling;            /* a lane has rolling resistance: rr = c r, rmass = 1/(iA + iB), rimp its impulse */
-    ga2d__w rr, rmass, rimp;
+    ga2d__group_extra *x;   /* its extras while any lane of the step needs them, else NULL */
+    int extras;             /* x's fields are written (ga2d__lane_extras) */
+    int round;              /* a lane has a round shape: rax.. are core anchors, x->o.. what lies along n */
+    int conveyor;           /* a lane has a tangent speed (x->tspeed) */
+    int rolling;            /* a lane has rolling resistance (x->rr, rmass, rimp) */
 };
 
 /* A soft constraint seen by an implicit step (ga2d__make_soft). */
@@ -6473,10 +6498,10 @@ static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2
     ga2d__w rb1y = ga2d__wadd(ga2d__wmul(B->qs, g->rbx[k]), ga2d__wmul(B->qc, g->rby[k]));
     ga2d__w dx = ga2d__wadd(g->dx, ga2d__wsub(B->dpx, A->dpx)), dy = ga2d__wadd(g->dy, ga2d__wsub(B->dpy, A->dpy));
     if (g->round) { /* the radii along n, which do not turn (ga2d__point_now) */
-        ra1x = ga2d__wadd(ra1x, g->oax[k]);
-        ra1y = ga2d__wadd(ra1y, g->oay[k]);
-        rb1x = ga2d__wadd(rb1x, g->obx[k]);
-        rb1y = ga2d__wadd(rb1y, g->oby[k]);
+        ra1x = ga2d__wadd(ra1x, g->x->oax[k]);
+        ra1y = ga2d__wadd(ra1y, g->x->oay[k]);
+        rb1x = ga2d__wadd(rb1x, g->x->obx[k]);
+        rb1y = ga2d__wadd(rb1y, g->x->oby[k]);
     }
     ga2d__w ex = ga2d__wsub(ga2d__wadd(dx, rb1x), ra1x), ey = ga2d__wsub(ga2d__wadd(dy, rb1y), ra1y);
     ga2d__w half = ga2d__wsplat(GA2D__R(0.5));
@@ -6484,8 +6509,8 @@ static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2
     r->ay = ga2d__wadd(ra1y, ga2d__wmul(ey, half));
     if (g->round) { /* along the surfaces, the round side's point */
         ga2d__w en = ga2d__wdot(ex, ey, g->nx, g->ny);
-        r->ax = ga2d__wadd(r->ax, ga2d__wmul(g->tw, ga2d__wsub(ex, ga2d__wmul(en, g->nx))));
-        r->ay = ga2d__wadd(r->ay, ga2d__wmul(g->tw, ga2d__wsub(ey, ga2d__wmul(en, g->ny))));
+        r->ax = ga2d__wadd(r->ax, ga2d__wmul(g->x->tw, ga2d__wsub(ex, ga2d__wmul(en, g->nx))));
+        r->ay = ga2d__wadd(r->ay, ga2d__wmul(g->x->tw, ga2d__wsub(ey, ga2d__wmul(en, g->ny))));
     }
     r->bx = ga2d__wsub(r->ax, dx);
     r->by = ga2d__wsub(r->ay, dy);
@@ -6614,8 +6639,8 @@ static void ga2d__warm_start(ga2d__step_context *c, int begin, int end)
             ga2d__wapply(g, &A, &B, &r, px, py);
         }
         if (g->rolling) { /* the rolling resistance's, as the points' */
-            A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, g->rimp));
-            B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, g->rimp));
+            A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, g->x->rimp));
+            B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, g->x->rimp));
         }
         ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
         ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
@@ -6683,7 +6708,7 @@ static void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int 
         }
         for (k = 0; friction && k < 2; ++k) {
             ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty), dt, cap, total;
-            if (g->conveyor) vt = ga2d__wsub(vt, g->tspeed);
+            if (g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
             if (fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
             dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
             cap = ga2d__wmul(g->friction, g->nimp[k]);
@@ -6696,11 +6721,11 @@ static void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int 
             /* rolling resistance: a torque impulse against the bodies'
                relative spin, accumulated within +-c r times the normal
                impulse (the points' sum) */
-            ga2d__w cap = ga2d__wmul(g->rr, ga2d__wadd(g->nimp[0], g->nimp[1]));
-            ga2d__w dl = ga2d__wsub(zero, ga2d__wmul(g->rmass, ga2d__wsub(B.w, A.w)));
-            ga2d__w total = ga2d__wclamp(ga2d__wadd(g->rimp, dl), ga2d__wsub(zero, cap), cap);
-            dl = ga2d__wsub(total, g->rimp);
-            g->rimp = total;
+            ga2d__w cap = ga2d__wmul(g->x->rr, ga2d__wadd(g->nimp[0], g->nimp[1]));
+            ga2d__w dl = ga2d__wsub(zero, ga2d__wmul(g->x->rmass, ga2d__wsub(B.w, A.w)));
+            ga2d__w total = ga2d__wclamp(ga2d__wadd(g->x->rimp, dl), ga2d__wsub(zero, cap), cap);
+            dl = ga2d__wsub(total, g->x->rimp);
+            g->x->rimp = total;
             A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, dl));
             B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, dl));
         }
@@ -6718,6 +6743,13 @@ static void ga2d__solve_baumgarte(ga2d__step_context *c, int begin, int end)
     ga2d__solve_contacts(c, begin, end, GA2D__BIAS_BAUMGARTE);
 }
 
+/* Whether a constraint needs a group's extras: a round side, a conveyor
+   or rolling resistance. */
+static int ga2d__constraint_has_extras(const ga2d__contact_constraint *c)
+{
+    return c->round_a != 0 || c->round_b != 0 || c->tangent_speed != 0 || c->rolling != 0;
+}
+
 /* Lane l's fields for round shapes, conveyors and rolling resistance.
    The first lane of a group that needs them zeroes them in the lanes
    before it (their group is flagged from then on, so every later lane
@@ -6728,29 +6760,29 @@ static void ga2d__lane_extras(ga2d__group *g, int l, const ga2d__contact_constra
     if (!g->extras) {
         for (j = 0; j < l; ++j) {
             for (k = 0; k < 2; ++k)
-                GA2D__LANE(g->oax[k], j) = GA2D__LANE(g->oay[k], j) = GA2D__LANE(g->obx[k], j) = GA2D__LANE(g->oby[k], j) = 0;
-            GA2D__LANE(g->tspeed, j) = GA2D__LANE(g->rr, j) = GA2D__LANE(g->rmass, j) = GA2D__LANE(g->rimp, j) = 0;
-            GA2D__LANE(g->tw, j) = 0;
+                GA2D__LANE(g->x->oax[k], j) = GA2D__LANE(g->x->oay[k], j) = GA2D__LANE(g->x->obx[k], j) = GA2D__LANE(g->x->oby[k], j) = 0;
+            GA2D__LANE(g->x->tspeed, j) = GA2D__LANE(g->x->rr, j) = GA2D__LANE(g->x->rmass, j) = GA2D__LANE(g->x->rimp, j) = 0;
+            GA2D__LANE(g->x->tw, j) = 0;
         }
         g->extras = 1;
     }
     if (c->round_a != 0 || c->round_b != 0) g->round = 1;
     if (c->tangent_speed != 0) g->conveyor = 1;
     if (c->rolling != 0) g->rolling = 1;
-    GA2D__LANE(g->tspeed, l) = c->tangent_speed;
-    GA2D__LANE(g->rr, l) = c->rolling;
-    GA2D__LANE(g->rmass, l) = c->rolling != 0 && c->inv_ia + c->inv_ib > 0 ? 1 / (c->inv_ia + c->inv_ib) : 0;
-    GA2D__LANE(g->rimp, l) = 0;
-    GA2D__LANE(g->tw, l) = (c->round_a != 0) == (c->round_b != 0) ? 0 : (c->round_b != 0 ? GA2D__R(0.5) : GA2D__R(-0.5));
+    GA2D__LANE(g->x->tspeed, l) = c->tangent_speed;
+    GA2D__LANE(g->x->rr, l) = c->rolling;
+    GA2D__LANE(g->x->rmass, l) = c->rolling != 0 && c->inv_ia + c->inv_ib > 0 ? 1 / (c->inv_ia + c->inv_ib) : 0;
+    GA2D__LANE(g->x->rimp, l) = 0;
+    GA2D__LANE(g->x->tw, l) = (c->round_a != 0) == (c->round_b != 0) ? 0 : (c->round_b != 0 ? GA2D__R(0.5) : GA2D__R(-0.5));
     for (k = 0; k < 2; ++k) {
         /* round shapes: core anchors that turn, and what lies along n that does not */
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
         ga2d_vec oa = ga2d__round_offset(c, p, 0), ob = ga2d__round_offset(c, p, 1);
         ga2d_vec ca = c->round_a != 0 ? ga2d_vec_sub(p->ra, oa) : p->ra, cb = c->round_b != 0 ? ga2d_vec_sub(p->rb, ob) : p->rb;
-        GA2D__LANE(g->oax[k], l) = oa.x;
-        GA2D__LANE(g->oay[k], l) = oa.y;
-        GA2D__LANE(g->obx[k], l) = ob.x;
-        GA2D__LANE(g->oby[k], l) = ob.y;
+        GA2D__LANE(g->x->oax[k], l) = oa.x;
+        GA2D__LANE(g->x->oay[k], l) = oa.y;
+        GA2D__LANE(g->x->obx[k], l) = ob.x;
+        GA2D__LANE(g->x->oby[k], l) = ob.y;
         GA2D__LANE(g->rax[k], l) = ca.x;
         GA2D__LANE(g->ray[k], l) = ca.y;
         GA2D__LANE(g->rbx[k], l) = cb.x;
@@ -6780,8 +6812,7 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
     /* what only round shapes, conveyors and rolling resistance use: a
        polygon world writes none of it (ga2d__lane_extras) */
-    if (c->round_a != 0 || c->round_b != 0 || c->tangent_speed != 0 || c->rolling != 0 || g->extras)
-        ga2d__lane_extras(g, l, c, none);
+    if (g->extras || ga2d__constraint_has_extras(c)) ga2d__lane_extras(g, l, c, none);
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
         if (c->round_a == 0 && c->round_b == 0) {
@@ -6846,7 +6877,7 @@ static int ga2d__group_free(ga2d__step_context *c, int gi)
 static void ga2d__assign_lanes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    int used = w->body_used, i;
+    int used = w->body_used, i, extras = 0;
     int *last;
     ga2d__sbody *dummy;
     c->group_count = 0;
@@ -6884,6 +6915,13 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
         if (g->count == GA2D__LANES) g->skip = gi + 1;
         if (ma) last[cc->a] = gi;
         if (mb) last[cc->b] = gi;
+        extras |= ga2d__constraint_has_extras(cc);
+    }
+    c->group_extras_on = extras;
+    if (extras && !ga2d__grow(&w->mem, (void **)&c->group_extras, &c->group_extra_capacity, c->group_count,
+                              sizeof *c->group_extras)) {
+        c->group_count = 0;
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
     }
 }
 
@@ -6915,6 +6953,7 @@ static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
     memset(&zero, 0, sizeof zero);
     for (gi = begin; gi < end; ++gi) {
         ga2d__group *g = &c->groups[gi];
+        g->x = c->group_extras_on ? &c->group_extras[gi] : NULL;
         for (l = 0; l < g->count; ++l) {
             const ga2d__contact_constraint *cc = &c->constraints[g->con[l]];
             const ga2d__body_sim *a = &w->bodies[cc->a].sim, *b = &w->bodies[cc->b].sim;
@@ -6979,6 +7018,7 @@ static void ga2d__lane_clear(ga2d__step_context *c, int lane)
         GA2D__LANE(g->nimp[k], lane % GA2D__LANES) = 0;
         GA2D__LANE(g->timp[k], lane % GA2D__LANES) = 0;
     }
+    if (g->rolling) GA2D__LANE(g->x->rimp, lane % GA2D__LANES) = 0;
 }
 
 /* Stage, over the groups: the accumulated impulses back to the contacts,
@@ -7157,6 +7197,7 @@ static void ga2d__step_release(ga2d_world *w)
     c->constraint_count = 0;
     ga2d__release(w, (void **)&c->groups, &c->group_capacity, sizeof *c->groups);
     c->group_count = 0;
+    ga2d__release(w, (void **)&c->group_extras, &c->group_extra_capacity, sizeof *c->group_extras);
     ga2d__release(w, (void **)&c->sbodies, &c->sbody_capacity, sizeof *c->sbodies);
     ga2d__release(w, (void **)&c->last_group, &c->last_group_capacity, sizeof *c->last_group);
     ga2d__release(w, (void **)&c->changed, &c->changed_capacity, sizeof *c->changed);
@@ -7168,6 +7209,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->rk4, c->rk4_capacity);
     GA2D__FREE_ARRAY(a, c->constraints, c->constraint_capacity);
     GA2D__FREE_ARRAY(a, c->groups, c->group_capacity);
+    GA2D__FREE_ARRAY(a, c->group_extras, c->group_extra_capacity);
     GA2D__FREE_ARRAY(a, c->sbodies, c->sbody_capacity);
     GA2D__FREE_ARRAY(a, c->last_group, c->last_group_capacity);
     GA2D__FREE_ARRAY(a, c->changed, c->changed_capacity);
@@ -7245,6 +7287,9 @@ static void ga2d__contain(ga2d_world *w, int slot)
     b->sim.w = 0;
     b->sim.force = ga2d_vec_make(0, 0);
     b->sim.torque = 0;
+    /* the field's cache may hold what drove it (a snapshot refuses it) */
+    b->sim.field_force = b->sim.field_accel = ga2d_vec_make(0, 0);
+    b->sim.field_torque = b->sim.field_alpha = 0;
     b->sim.field_valid = 0;
     b->sleep_time = 0;
     {
@@ -7863,6 +7908,8 @@ static void ga2d__sensor_events_begin(ga2d_world *w)
     if (pending > 0) memmove(w->sensor_end, w->sensor_end + (w->sensor_end_count - pending), (size_t)pending * sizeof *w->sensor_end);
     w->sensor_end_count = pending;
     w->sensor_end_pending = 0;
+    if (w->sensor_end_lost) w->step.error = GA2D_ERR_OUT_OF_MEMORY;
+    w->sensor_end_lost = 0;
 }
 
 /* The step's context: its times, what it reports, the contact softness.

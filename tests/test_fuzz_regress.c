@@ -2,7 +2,8 @@
    tests/fuzz/regress/<harness>/ (one per finding, each fixed in the
    header) and the small seed corpus in tests/fuzz/seeds/<harness>/, run
    through the same per-input functions the libFuzzer drivers call
-   (polygon, world, snapshot-loader and re-entry harnesses)
+   (polygon, world, snapshot-loader, re-entry, world-free shapes and
+   shapes-in-a-world harnesses)
    (tests/fuzz/fuzz_<harness>.h), in this build's configuration.  A
    violated invariant is a failed check here; a memory or UB error stops
    the sanitizer builds.  `make test` runs from the repository root, where
@@ -20,6 +21,8 @@
 #include "fuzz/fuzz_world.h"
 #include "fuzz/fuzz_snapshot.h"
 #include "fuzz/fuzz_reentry.h"
+#include "fuzz/fuzz_shapes.h"
+#include "fuzz/fuzz_shape_world.h"
 
 #if !defined(_WIN32)
 #include <dirent.h>
@@ -109,11 +112,15 @@ static int polygon_one(const uint8_t *data, size_t size) { return fuzz_polygon_o
 static int world_one(const uint8_t *data, size_t size) { return fuzz_world_one(data, size); }
 static int snapshot_one(const uint8_t *data, size_t size) { return fuzz_snapshot_one(data, size); }
 static int reentry_one(const uint8_t *data, size_t size) { return fuzz_reentry_one(data, size); }
+static int shapes_one(const uint8_t *data, size_t size) { return fuzz_shapes_one(data, size); }
+static int shape_world_one(const uint8_t *data, size_t size) { return fuzz_shape_world_one(data, size); }
 
 static void regress_polygon(void) { replay("polygon", polygon_one); }
 static void regress_world(void) { replay("world", world_one); }
 static void regress_snapshot(void) { replay("snapshot", snapshot_one); }
 static void regress_reentry(void) { replay("reentry", reentry_one); }
+static void regress_shapes(void) { replay("shapes", shapes_one); }
+static void regress_shape_world(void) { replay("shape_world", shape_world_one); }
 
 /* The empty input and a few fixed ones, which need no files. */
 static void fixed_inputs(void)
@@ -134,6 +141,12 @@ static void fixed_inputs(void)
     fuzz_reentry_one(NULL, 0);
     fuzz_reentry_one(zeros, sizeof zeros);
     fuzz_reentry_one(ramp, sizeof ramp);
+    fuzz_shapes_one(NULL, 0);
+    fuzz_shapes_one(zeros, sizeof zeros);
+    fuzz_shapes_one(ramp, sizeof ramp);
+    fuzz_shape_world_one(NULL, 0);
+    fuzz_shape_world_one(zeros, sizeof zeros);
+    fuzz_shape_world_one(ramp, sizeof ramp);
 }
 
 void suite_fuzz_regress(void)
@@ -143,4 +156,6 @@ void suite_fuzz_regress(void)
     test_run("fuzz regress: world findings and seeds", regress_world);
     test_run("fuzz regress: snapshot findings and seeds", regress_snapshot);
     test_run("fuzz regress: re-entry findings and seeds", regress_reentry);
+    test_run("fuzz regress: shapes findings and seeds", regress_shapes);
+    test_run("fuzz regress: shape world findings and seeds", regress_shape_world);
 }

@@ -10,16 +10,19 @@
 #   make fuzz                      every harness, 60 s each
 #   make fuzz FUZZ_SECONDS=600     longer
 #   make fuzz FUZZ_ONLY=world      one harness (or a list)
+#   make fuzz FUZZ_ONLY=shapes FUZZ_EXTRA=-DFUZZ_STRICT   open findings checked too
 #   make fuzz-build                build only
 
 FUZZ_SECONDS ?= 60
 FUZZ_CC      ?= clang
+FUZZ_EXTRA   ?=
 FUZZ_DIR     := $(BUILD)/fuzz
 FUZZ_FLAGS   := -std=c99 -O1 -g -ffp-contract=off -fsanitize=fuzzer,address,undefined \
                 -fno-sanitize-recover=all -fno-omit-frame-pointer
 # harness = input kind [+ _double for the double build]; the snapshot
 # harness exists once the header has the snapshot API
-FUZZ_KINDS   := polygon world reentry $(if $(shell grep -l ga2d_world_snapshot_load $(HEADER) 2>/dev/null),snapshot)
+FUZZ_KINDS   := polygon world reentry $(if $(shell grep -l ga2d_world_snapshot_load $(HEADER) 2>/dev/null),snapshot) \
+                $(if $(shell grep -l ga2d_collide_shapes_scaled $(HEADER) 2>/dev/null),shapes shape_world)
 FUZZ_ALL     := $(foreach k,$(FUZZ_KINDS),$(k) $(k)_double)
 FUZZ_ONLY    ?= $(FUZZ_ALL)
 FUZZ_BINS    := $(addprefix $(FUZZ_DIR)/fuzz_,$(FUZZ_ONLY))
@@ -28,9 +31,9 @@ FUZZ_BINS    := $(addprefix $(FUZZ_DIR)/fuzz_,$(FUZZ_ONLY))
 
 # $(1): input kind, $(2): harness name, $(3): extra flags
 define FUZZ_RULE
-$(FUZZ_DIR)/fuzz_$(2): tests/fuzz/fuzz_$(1).c tests/fuzz/fuzz_$(1).h tests/fuzz/fuzz_common.h $(HEADER)
+$(FUZZ_DIR)/fuzz_$(2): tests/fuzz/fuzz_$(1).c $(wildcard tests/fuzz/*.h) $(HEADER)
 	@mkdir -p $(FUZZ_DIR)
-	$(FUZZ_CC) $(FUZZ_FLAGS) $(3) $(WARN) $(INC) -Itests/fuzz $$< -o $$@ $(LIBS)
+	$(FUZZ_CC) $(FUZZ_FLAGS) $(3) $(FUZZ_EXTRA) $(WARN) $(INC) -Itests/fuzz $$< -o $$@ $(LIBS)
 endef
 $(foreach k,$(FUZZ_KINDS),$(eval $(call FUZZ_RULE,$(k),$(k),)))
 $(foreach k,$(FUZZ_KINDS),$(eval $(call FUZZ_RULE,$(k),$(k)_double,-DGA2D_DOUBLE)))

@@ -294,8 +294,9 @@ static void fp_points(fz_reader *r, ga2d_vec *pts, int n)
             ga2d_vec a = pts[fz_pick(r, i)], b = pts[fz_pick(r, i)];
             pts[i] = ga2d_vec_make(fz_narrow(((double)a.x + (double)b.x) / 2), fz_narrow(((double)a.y + (double)b.y) / 2));
         } else {
-            pts[i] = ga2d_vec_make(fz_narrow((double)fz_real(r, scale) + (double)off.x),
-                                   fz_narrow((double)fz_real(r, scale) + (double)off.y));
+            /* one read a statement: arguments are evaluated in no set order */
+            ga2d_real x = fz_narrow((double)fz_real(r, scale) + (double)off.x);
+            pts[i] = ga2d_vec_make(x, fz_narrow((double)fz_real(r, scale) + (double)off.y));
         }
     }
 }

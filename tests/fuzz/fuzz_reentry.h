@@ -1085,10 +1085,15 @@ static ga2d_body_def fr_body_def(fr_state *s)
     ga2d_body_def d = ga2d_default_body_def();
     unsigned flags = fz_u8(&s->rd), t = fz_u8(&s->rd) % 8;
     d.type = t == 0 ? GA2D_BODY_STATIC : t == 1 ? GA2D_BODY_KINEMATIC : GA2D_BODY_DYNAMIC;
-    if (fz_u8(&s->rd) & 1)
-        d.polygon = ga2d_polygon_box(fz_narrow(0.1 + fz_u8(&s->rd) / 128.0), fz_narrow(0.1 + fz_u8(&s->rd) / 128.0));
-    else
-        d.polygon = ga2d_polygon_regular(3 + fz_pick(&s->rd, GA2D_MAX_POLYGON_VERTICES - 2), fz_narrow(0.1 + fz_u8(&s->rd) / 128.0));
+    /* one read a statement: a function's arguments are evaluated in no set
+       order (gcc and clang differ), and an input must mean one scene */
+    if (fz_u8(&s->rd) & 1) {
+        ga2d_real hw = fz_narrow(0.1 + fz_u8(&s->rd) / 128.0);
+        d.polygon = ga2d_polygon_box(hw, fz_narrow(0.1 + fz_u8(&s->rd) / 128.0));
+    } else {
+        int count = 3 + fz_pick(&s->rd, GA2D_MAX_POLYGON_VERTICES - 2);
+        d.polygon = ga2d_polygon_regular(count, fz_narrow(0.1 + fz_u8(&s->rd) / 128.0));
+    }
     d.position.x = fr_small(s, 1);
     d.position.y = fz_narrow(fz_u8(&s->rd) / 32.0);
     if (flags & 1) d.rotor = ga2d_rotor_from_angle(fr_small(s, 0.5));
@@ -1167,7 +1172,11 @@ static void fr_body_op(fr_state *s)
     ga2d_result r;
     fr_begin(s, FR_OP_BODY);
     switch (op) {
-    case 0: r = ga2d_body_set_transform(s->w, id, fr_vec(s, 2, wild), ga2d_rotor_from_angle(fr_small(s, 1))); break;
+    case 0: { /* one read a statement: see fr_body_def */
+        ga2d_vec p = fr_vec(s, 2, wild);
+        r = ga2d_body_set_transform(s->w, id, p, ga2d_rotor_from_angle(fr_small(s, 1)));
+        break;
+    }
     case 1: r = ga2d_body_set_velocity(s->w, id, fr_vec(s, 4, wild)); break;
     case 2: r = ga2d_body_set_angular_velocity(s->w, id, wild ? fz_real(&s->rd, 4) : fr_small(s, 4)); break;
     case 3: {
@@ -1179,7 +1188,11 @@ static void fr_body_op(fr_state *s)
         break;
     }
     case 4: r = ga2d_body_set_gravity_scale(s->w, id, wild ? fz_real(&s->rd, 1) : fr_small(s, 2)); break;
-    case 5: r = ga2d_body_set_damping(s->w, id, fz_narrow(fz_u8(&s->rd) / 64.0), fz_narrow(fz_u8(&s->rd) / 64.0)); break;
+    case 5: {
+        ga2d_real lin = fz_narrow(fz_u8(&s->rd) / 64.0);
+        r = ga2d_body_set_damping(s->w, id, lin, fz_narrow(fz_u8(&s->rd) / 64.0));
+        break;
+    }
     case 6: r = ga2d_body_set_user_data(s->w, id, (fz_u8(&s->rd) & 1) ? NULL : (void *)&s->tag); break;
     case 7: {
         ga2d_filter f = ga2d_default_filter();
@@ -1254,7 +1267,10 @@ static void fr_load(fr_state *s)
         /* a corrupted copy: refused, and nothing changes */
         if (!fr_reserve(&s->tmp, n)) return;
         memcpy(s->tmp.p, b->p, n);
-        s->tmp.p[fz_u16(&s->rd) % n] ^= (unsigned char)(1 + fz_u8(&s->rd) % 255);
+        {
+            size_t at = fz_u16(&s->rd) % n; /* before the flip's byte: one order */
+            s->tmp.p[at] ^= (unsigned char)(1 + fz_u8(&s->rd) % 255);
+        }
         b = &s->tmp;
     }
     fr_prepare(s);

@@ -1,7 +1,10 @@
 /* Snapshot-loader fuzzing: raw bytes -> a buffer loaded into a world built
-   from a fixed small scene (a ground, a stack, a falling triangle, a
-   kinematic body, a destroyed body's free slot, after some steps, so that
-   contacts and warm-start impulses exist).
+   from a fixed small scene (a ground with a wall segment and a sensor disc
+   over the stack, a stack, a falling triangle, a kinematic body, a ball, a
+   capsule and a rounded box resting on an open chain, a destroyed body's,
+   shape's and chain's free slots, after some steps, so that contacts,
+   warm-start impulses and the sensor's visitors exist): every shape type,
+   sensor visitor lists and chain lists reach the loader.
 
    The buffer is either the input itself, or the scene's own snapshot
    edited by the input (bytes set, flipped, words and reals written at
@@ -54,7 +57,11 @@ static ga2d_world *fs_scene(fz_alloc *a, ga2d_body_id *ids, int *n)
 {
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_body_def d = ga2d_default_body_def();
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_chain_def cd = ga2d_default_chain_def();
     ga2d_world *w;
+    ga2d_vec pts[4];
+    ga2d_chain_id gone;
     int i;
     fz_alloc_attach(a, &wd);
     w = ga2d_world_create(&wd);
@@ -63,6 +70,21 @@ static ga2d_world *fs_scene(fz_alloc *a, ga2d_body_id *ids, int *n)
     d.position = ga2d_vec_make(0, -1);
     d.polygon = ga2d_polygon_box(10, 1);
     ids[(*n)++] = ga2d_body_create(w, &d);
+    {
+        /* the ground's other shapes: a wall segment (a conveyor), and a
+           sensor disc over the stack */
+        ga2d_segment wall;
+        ga2d_circle zone;
+        wall.point1 = ga2d_vec_make(-10, 1);
+        wall.point2 = ga2d_vec_make(-10, 4);
+        sd.tangent_speed = 1;
+        ga2d_shape_create_segment(w, ids[0], &sd, &wall);
+        sd = ga2d_default_shape_def();
+        sd.is_sensor = 1;
+        zone.center = ga2d_vec_make(0, 2);
+        zone.radius = (ga2d_real)1.5;
+        ga2d_shape_create_circle(w, ids[0], &sd, &zone);
+    }
     for (i = 0; i < 3; ++i) {
         d = ga2d_default_body_def();
         d.type = GA2D_BODY_DYNAMIC;
@@ -83,6 +105,50 @@ static ga2d_world *fs_scene(fz_alloc *a, ga2d_body_id *ids, int *n)
     d.position = ga2d_vec_make(-3, 1);
     d.velocity = ga2d_vec_make((ga2d_real)0.5, 0);
     ids[(*n)++] = ga2d_body_create(w, &d);
+    {
+        /* terrain: an open chain on a static body, and a ball (hits and
+           pre-solve on), a capsule and a rounded box resting on it */
+        ga2d_circle ball, spare;
+        ga2d_capsule cap;
+        ga2d_polygon rounded = ga2d_polygon_rounded_box((ga2d_real)0.4, (ga2d_real)0.3, (ga2d_real)0.1);
+        ga2d_shape_id spare_id;
+        d = ga2d_default_body_def();
+        ids[(*n)++] = ga2d_body_create(w, &d);
+        for (i = 0; i < 4; ++i) pts[i] = ga2d_vec_make((ga2d_real)(3 + 2 * i), (ga2d_real)(0.01 * (i & 1)));
+        cd.points = pts;
+        cd.count = 4;
+        ga2d_chain_create(w, ids[*n - 1], &cd);
+        cd.count = 3; /* a loop made and destroyed: a free chain slot */
+        cd.is_loop = 1;
+        gone = ga2d_chain_create(w, ids[*n - 1], &cd);
+        ga2d_chain_destroy(w, gone);
+        d = ga2d_default_body_def();
+        d.type = GA2D_BODY_DYNAMIC;
+        d.position = ga2d_vec_make((ga2d_real)4.5, (ga2d_real)0.31);
+        ids[(*n)++] = ga2d_body_create(w, &d);
+        sd = ga2d_default_shape_def();
+        sd.enable_hit_events = sd.enable_pre_solve_events = 1;
+        ball.center = ga2d_vec_make(0, 0);
+        ball.radius = (ga2d_real)0.3;
+        ga2d_shape_create_circle(w, ids[*n - 1], &sd, &ball);
+        d.position = ga2d_vec_make(6, (ga2d_real)0.22);
+        d.angular_velocity = 1;
+        ids[(*n)++] = ga2d_body_create(w, &d);
+        sd = ga2d_default_shape_def();
+        cap.center1 = ga2d_vec_make((ga2d_real)-0.4, 0);
+        cap.center2 = ga2d_vec_make((ga2d_real)0.4, 0);
+        cap.radius = (ga2d_real)0.2;
+        ga2d_shape_create_capsule(w, ids[*n - 1], &sd, &cap);
+        /* a shape made and destroyed: a free shape slot */
+        spare.center = ga2d_vec_make(0, 1);
+        spare.radius = (ga2d_real)0.1;
+        spare_id = ga2d_shape_create_circle(w, ids[*n - 1], &sd, &spare);
+        ga2d_shape_destroy(w, spare_id, 1);
+        d.position = ga2d_vec_make((ga2d_real)7.5, (ga2d_real)0.32);
+        d.angular_velocity = 0;
+        ids[(*n)++] = ga2d_body_create(w, &d);
+        ga2d_shape_create_polygon(w, ids[*n - 1], &sd, &rounded);
+    }
     d = ga2d_default_body_def();
     d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     d.type = GA2D_BODY_DYNAMIC;
@@ -93,17 +159,42 @@ static ga2d_world *fs_scene(fz_alloc *a, ga2d_body_id *ids, int *n)
     return w;
 }
 
-/* Every live body, found through the debug draw (which names each body
-   with its id): awake moving ones must be finite. */
+/* Every live body with a polygon, circle or capsule, found through the
+   debug draw (which names each shape's body; a body with several shapes
+   comes once per shape, in a row): awake moving ones must be finite.  A
+   body with only segments or none is not seen. */
 typedef struct fs_bodies { ga2d_body_id ids[64]; int n; } fs_bodies;
+
+static void fs_add(fs_bodies *b, ga2d_body_id id)
+{
+    if (b->n > 0 && ga2d_body_id_equal(b->ids[b->n - 1], id)) return;
+    if (b->n < 64) b->ids[b->n++] = id;
+}
 
 static void fs_collect(ga2d_body_id id, const ga2d_polygon *p, ga2d_transform x, uint32_t color, void *ctx)
 {
-    fs_bodies *b = (fs_bodies *)ctx;
     (void)p;
     (void)x;
     (void)color;
-    if (b->n < 64) b->ids[b->n++] = id;
+    fs_add((fs_bodies *)ctx, id);
+}
+
+static void fs_collect_circle(ga2d_body_id id, ga2d_vec c, ga2d_real r, ga2d_vec axis, uint32_t color, void *ctx)
+{
+    (void)c;
+    (void)r;
+    (void)axis;
+    (void)color;
+    fs_add((fs_bodies *)ctx, id);
+}
+
+static void fs_collect_capsule(ga2d_body_id id, ga2d_vec c1, ga2d_vec c2, ga2d_real r, uint32_t color, void *ctx)
+{
+    (void)c1;
+    (void)c2;
+    (void)r;
+    (void)color;
+    fs_add((fs_bodies *)ctx, id);
 }
 
 static void fs_check_finite(const ga2d_world *w)
@@ -113,14 +204,29 @@ static void fs_check_finite(const ga2d_world *w)
     int i;
     all.n = 0;
     dd.polygon = fs_collect;
+    dd.circle = fs_collect_circle;
+    dd.capsule = fs_collect_capsule;
     dd.context = &all;
     FUZZ_CHECK(ga2d_world_draw(w, &dd) == GA2D_OK);
-    FUZZ_CHECK(all.n == ga2d_world_get_counters(w).body_count || all.n == 64);
+    FUZZ_CHECK(all.n <= ga2d_world_get_counters(w).body_count || all.n == 64);
     for (i = 0; i < all.n; ++i) {
         ga2d_body_id id = all.ids[i];
         ga2d_vec c, v;
         ga2d_rotor q;
+        ga2d_shape_id shapes[16], seen[16];
+        int k, j, ns, nv;
         FUZZ_CHECK(ga2d_body_is_valid(w, id));
+        /* its shapes are its own; a sensor's visitors are live shapes of
+           other bodies */
+        ns = ga2d_body_get_shapes(w, id, shapes, 16);
+        FUZZ_CHECK(ns >= 1);
+        for (k = 0; k < ns && k < 16; ++k) {
+            FUZZ_CHECK(ga2d_shape_is_valid(w, shapes[k]) && ga2d_body_id_equal(ga2d_shape_body(w, shapes[k]), id));
+            nv = ga2d_shape_get_sensor_overlaps(w, shapes[k], seen, 16);
+            FUZZ_CHECK(nv >= 0);
+            for (j = 0; j < nv && j < 16; ++j)
+                FUZZ_CHECK(ga2d_shape_is_valid(w, seen[j]) && !ga2d_body_id_equal(ga2d_shape_body(w, seen[j]), id));
+        }
         if (!ga2d_body_is_awake(w, id) || ga2d_body_get_type(w, id) == GA2D_BODY_STATIC) continue;
         c = ga2d_body_center(w, id);
         v = ga2d_body_velocity(w, id);

@@ -54,6 +54,9 @@ typedef struct fw_state {
     int field_kind, field_forbidden, field_calls;
     ga2d_real field_k;
     int tag;
+    /* called before a body is destroyed (NULL: nothing), for harnesses
+       built on this one that keep things of their own on bodies */
+    void (*before_destroy)(struct fw_state *s, ga2d_body_id id);
 } fw_state;
 
 /* An ordinary value (k/16 scale) unless `wild`: then anything. */
@@ -126,12 +129,18 @@ static ga2d_polygon fw_polygon(fw_state *s, int wild)
     int kind = fz_pick(&s->rd, 8), i, n;
     memset(&p, 0, sizeof p);
     switch (kind) {
-    case 0: case 1: case 2:
-        return ga2d_polygon_box(fw_pos(s, 2, wild) + (wild ? 0 : (ga2d_real)0.05),
-                                fw_pos(s, 2, wild) + (wild ? 0 : (ga2d_real)0.05));
-    case 3: case 4:
-        return ga2d_polygon_regular(3 + fz_pick(&s->rd, GA2D_MAX_POLYGON_VERTICES - 2),
-                                    fw_pos(s, 2, wild) + (wild ? 0 : (ga2d_real)0.05));
+    /* (each read its own statement: a function's arguments are evaluated
+       in no set order, and gcc and clang differ, so an input would make
+       another scene in each) */
+    case 0: case 1: case 2: {
+        ga2d_real hw = fw_pos(s, 2, wild) + (wild ? 0 : (ga2d_real)0.05);
+        ga2d_real hh = fw_pos(s, 2, wild) + (wild ? 0 : (ga2d_real)0.05);
+        return ga2d_polygon_box(hw, hh);
+    }
+    case 3: case 4: {
+        int count = 3 + fz_pick(&s->rd, GA2D_MAX_POLYGON_VERTICES - 2);
+        return ga2d_polygon_regular(count, fw_pos(s, 2, wild) + (wild ? 0 : (ga2d_real)0.05));
+    }
     case 5: case 6: {
         ga2d_vec pts[16];
         n = 3 + fz_pick(&s->rd, 14);
@@ -519,9 +528,11 @@ static void fw_body_op(fw_state *s, int op)
     case 4:
         r = ga2d_body_set_gravity_scale(s->w, id, fw_val(s, 2, wild));
         break;
-    case 5:
-        r = ga2d_body_set_damping(s->w, id, fw_pos(s, 1, wild), fw_pos(s, 1, wild));
+    case 5: {
+        ga2d_real lin = fw_pos(s, 1, wild); /* one read a statement: see fw_polygon */
+        r = ga2d_body_set_damping(s->w, id, lin, fw_pos(s, 1, wild));
         break;
+    }
     case 6: {
         ga2d_filter f;
         f.category_bits = fz_u32(&s->rd);
@@ -534,10 +545,12 @@ static void fw_body_op(fw_state *s, int op)
         r = ga2d_body_set_awake(s->w, id, fz_u8(&s->rd) & 1);
         changes = 0; /* sleeping zeroes velocities; not checked here */
         break;
-    case 8:
-        r = ga2d_body_apply_force(s->w, id, fw_vec(s, 100, wild), fw_vec(s, 4, wild));
+    case 8: {
+        ga2d_vec f = fw_vec(s, 100, wild);
+        r = ga2d_body_apply_force(s->w, id, f, fw_vec(s, 4, wild));
         changes = 0; /* forces are pending state no getter shows; a wake may happen */
         break;
+    }
     case 9:
         r = ga2d_body_apply_force_to_center(s->w, id, fw_vec(s, 100, wild));
         changes = 0;
@@ -546,14 +559,18 @@ static void fw_body_op(fw_state *s, int op)
         r = ga2d_body_apply_torque(s->w, id, fw_val(s, 100, wild));
         changes = 0;
         break;
-    case 11:
-        r = ga2d_body_apply_impulse(s->w, id, fw_vec(s, 10, wild), fw_vec(s, 4, wild));
+    case 11: {
+        ga2d_vec imp = fw_vec(s, 10, wild);
+        r = ga2d_body_apply_impulse(s->w, id, imp, fw_vec(s, 4, wild));
         break;
+    }
     case 12:
         r = ga2d_body_apply_angular_impulse(s->w, id, fw_val(s, 10, wild));
         break;
     case 13: {
-        int before_count = ga2d_world_get_counters(s->w).body_count;
+        int before_count;
+        if (s->before_destroy) s->before_destroy(s, id);
+        before_count = ga2d_world_get_counters(s->w).body_count;
         r = ga2d_body_destroy(s->w, id);
         FUZZ_CHECK(ga2d_world_get_counters(s->w).body_count == before_count - (r == GA2D_OK));
         if (r == GA2D_OK) FUZZ_CHECK(!ga2d_body_is_valid(s->w, id));

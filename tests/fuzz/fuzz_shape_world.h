@@ -1,0 +1,1293 @@
+/* World fuzzing with shapes: the world harness's world, bodies, steps and
+   setters (fuzz_world.h, reused as is), plus what shapes brought: bodies
+   made bare or with a polygon, then shapes of every type created on them
+   (through each typed maker and ga2d_shape_create_checked; on live,
+   destroyed, null and forged body ids; clean geometry and wild: NaN,
+   huge, negative radii, coincident ends, inconsistent polygons, a lone
+   chain segment, a type out of range), destroyed (with or without a mass
+   update; chain segments, stale ids), their materials and filters set;
+   sensors (sensor events on and off); chains, open and loops, on static,
+   kinematic, dynamic and stale bodies, with repeated, nearly repeated,
+   collinear, folded, huge and NaN points, and destroyed; pre-solve and
+   hit events switched on per shape, with a world pre-solve callback that
+   accepts, refuses or picks by ids; conveyor speeds; checkpoints saved,
+   loaded into another world and back into this one (rollback), and
+   replays: the same steps from one snapshot in two worlds.
+
+   What is checked (the header's promises, besides fuzz_world.h's):
+     - every call answers with a result in range (no crash, no sanitizer
+       report, no leak: the counting allocator gets every byte back);
+     - a refused shape, chain or setter call leaves the world unchanged:
+       its snapshot is the same bytes before and after; a shape or chain
+       made by a clean def on a live body is made unless an allocation
+       failed (then OUT_OF_MEMORY); a stale body is STALE_ID, a chain
+       segment given to ga2d_shape_destroy INVALID_ARGUMENT, a segment or
+       chain on a dynamic body INVALID_ARGUMENT; a made shape reads back
+       (body, type, geometry, filter, user data, last in the body's list)
+       and a sensor or zero-density shape changes no mass; a made chain has
+       one segment per edge, through the given points, its ghosts the
+       neighbours; a destroyed shape or chain is stale, and so are the
+       shapes of a destroyed body;
+     - sensors: every begin is matched by one end (also when either shape
+       or its body goes: the end comes with the next step), the pairs open
+       after a step are exactly each sensor's overlaps, and every overlap
+       is of a live non-sensor shape on another body that takes sensor
+       events;
+     - hits: finite, faster than the threshold, on contacts one of whose
+       shapes asked for them, never on a contact the pre-solve refused;
+     - the pre-solve callback: only from a step, for touching contacts of
+       two live shapes on two bodies one of which asked for it; inside it
+       every change (stepping, creating and destroying bodies, shapes and
+       chains, setters, forces, impulses, snapshots, compaction, drawing)
+       is refused with LOCKED and changes nothing;
+     - snapshots: a saved world loads into another (same def) and saves to
+       the same bytes; loaded back into this one it saves the same bytes;
+       two worlds loaded from one snapshot and stepped alike end in the
+       same bytes (the callbacks decide from ids alone).
+
+   Findings this harness made, each fixed in the header and its input kept
+   in tests/fuzz/regress/shape_world/: a body destroyed with its chains
+   freed through the allocator hook outside the world's bracket; a lone
+   chain segment made by ga2d_shape_create_checked (now INVALID_ARGUMENT),
+   whose world no snapshot could load; a contained body keeping the
+   field's non-finite cache, which the loader refuses; a sensor end event
+   that found no room counted as pending (the next step now reports
+   OUT_OF_MEMORY). */
+#ifndef GA2D_FUZZ_SHAPE_WORLD_H
+#define GA2D_FUZZ_SHAPE_WORLD_H
+
+#include "fuzz_world.h"
+
+#define FSW_MAX_SHAPES 96
+#define FSW_MAX_CHAINS 8
+#define FSW_MAX_POINTS 12
+#define FSW_MAX_OPEN 1024
+#define FSW_MAX_OPS 160
+#define FSW_SCRATCH 256
+
+#ifdef FUZZ_VERBOSE
+#define FSW_TRACE(args) (fprintf args)
+#else
+#define FSW_TRACE(args) ((void)0)
+#endif
+
+/* A shape the harness made (or tried to): its id and what it asked for.
+   Shapes the harness did not make (a body def's polygon, chain segments)
+   asked for nothing. */
+typedef struct fsw_shape {
+    ga2d_shape_id id;
+    ga2d_body_id body;
+    int type, sensor, sensor_events, pre_solve, hit;
+} fsw_shape;
+
+typedef struct fsw_chain {
+    ga2d_chain_id id;
+    ga2d_body_id body;
+    int n;
+    ga2d_shape_id segments[FSW_MAX_POINTS];
+} fsw_chain;
+
+/* A growing byte buffer (snapshots). */
+typedef struct fsw_buf { unsigned char *p; size_t n, cap; } fsw_buf;
+
+typedef struct fsw_state fsw_state;
+
+/* The pre-solve callback's context, one per world (a twin has its own):
+   its answers depend on the mode and the two ids only, so that two worlds
+   loaded from one snapshot decide alike. */
+typedef struct fsw_cb {
+    fsw_state *s; /* the harness, for its own world; NULL for a twin */
+    ga2d_world *w;
+    int mode;     /* 0 accept, 1 by the ids, 2 refuse */
+    int probe;    /* try every kind of change from inside */
+    long calls;
+} fsw_cb;
+
+struct fsw_state {
+    fw_state base; /* the world harness's state: first, so its callbacks take ours */
+    fsw_shape shapes[FSW_MAX_SHAPES];
+    int nshapes;
+    fsw_chain chains[FSW_MAX_CHAINS];
+    int nchains;
+    ga2d_sensor_event open[FSW_MAX_OPEN];
+    int nopen, open_lost; /* open_lost: more pairs than the table holds */
+    fsw_cb cb;
+    ga2d_world_def def;   /* as the world was made: for the worlds snapshots go to */
+    fsw_buf ckpt;         /* a checkpoint, for rollbacks */
+    int pending_oom;      /* an allocation failed in a destruction: the next step may say so */
+    int has_pre_solve;
+    ga2d_real hit_threshold;
+    ga2d_shape_id orphans[8]; /* lone chain segments ga2d_shape_create_checked made */
+    int norphans, ckpt_refusable; /* the checkpoint's world may not load (fsw_may_refuse) */
+    int ckpt_substeps, ckpt_rk4, ckpt_passes; /* what the harness knew of the world at the checkpoint */
+    int mass_set;         /* a body's mass was set by hand (or kept by a destroy): shapes' sums no longer show */
+    int field_on;         /* the world has fw_field as its force callback (a snapshot does not carry it) */
+    int contained;        /* a step contained a body (NOT_FINITE) */
+};
+
+/* ------------------------------------------------------------- buffers */
+static int fsw_save(const ga2d_world *w, fsw_buf *b)
+{
+    size_t n = ga2d_world_snapshot_size(w);
+    if (n > b->cap) {
+        unsigned char *p = (unsigned char *)realloc(b->p, n);
+        if (!p) return 0;
+        b->p = p;
+        b->cap = n;
+    }
+    b->n = n;
+    return ga2d_world_snapshot_save(w, b->p, b->cap) == GA2D_OK;
+}
+
+static int fsw_same(const fsw_buf *a, const fsw_buf *b) { return a->n == b->n && memcmp(a->p, b->p, a->n) == 0; }
+
+/* Before a call that may be refused: the world's bytes (0 if the save
+   itself ran out of memory: then nothing is compared). */
+typedef struct fsw_guard { fsw_buf before; int ok; long failures; } fsw_guard;
+
+static void fsw_guard_begin(fsw_state *s, fsw_guard *g)
+{
+    memset(g, 0, sizeof *g);
+    g->ok = fsw_save(s->base.w, &g->before);
+    g->failures = s->base.alloc.failures;
+}
+
+/* After it: refused, the world is the same bytes. */
+static void fsw_guard_end(fsw_state *s, fsw_guard *g, ga2d_result r)
+{
+    if (r != GA2D_OK && g->ok) {
+        fsw_buf after;
+        memset(&after, 0, sizeof after);
+        if (fsw_save(s->base.w, &after)) FUZZ_CHECK(fsw_same(&g->before, &after));
+        free(after.p);
+    }
+    if (r == GA2D_ERR_OUT_OF_MEMORY) FUZZ_CHECK(s->base.alloc.failures != g->failures);
+    free(g->before.p);
+}
+
+/* Whether the world's own snapshot may be refused: a lone chain segment
+   lives (none should: ga2d_shape_create_checked refuses them). */
+static int fsw_orphan_alive(const fsw_state *s);
+static int fsw_may_refuse(const fsw_state *s)
+{
+    return fsw_orphan_alive(s);
+}
+
+/* Whether a lone chain segment (one ga2d_shape_create_checked made, on no
+   chain) is alive: the loader refuses every snapshot of such a world
+   (BAD_SNAPSHOT: a chain segment must be on a live chain).  The maker
+   refuses them now (a fixed finding); the harness still tracks any. */
+static int fsw_orphan_alive(const fsw_state *s)
+{
+    int i;
+    for (i = 0; i < s->norphans; ++i)
+        if (ga2d_shape_is_valid(s->base.w, s->orphans[i])) return 1;
+    return 0;
+}
+
+/* ---------------------------------------------------------------- table */
+static fsw_shape fsw_lookup(const fsw_state *s, ga2d_shape_id id)
+{
+    fsw_shape none;
+    int i;
+    for (i = 0; i < s->nshapes; ++i)
+        if (ga2d_shape_id_equal(s->shapes[i].id, id)) return s->shapes[i];
+    memset(&none, 0, sizeof none);
+    none.type = -1;
+    none.sensor_events = 1; /* the default shape def's */
+    return none;
+}
+
+/* A new shape's entry: an id seen before (a checkpoint brought an old one
+   back) takes the old entry's place. */
+static void fsw_remember(fsw_state *s, const fsw_shape *e)
+{
+    int i;
+    for (i = 0; i < s->nshapes; ++i)
+        if (ga2d_shape_id_equal(s->shapes[i].id, e->id)) {
+            s->shapes[i] = *e;
+            return;
+        }
+    if (s->nshapes < FSW_MAX_SHAPES) s->shapes[s->nshapes++] = *e;
+}
+
+/* The shape an operation acts on: a tracked one (live or not), the null
+   id, or a forged one. */
+static ga2d_shape_id fsw_shape_id(fsw_state *s)
+{
+    unsigned k = fz_u8(&s->base.rd);
+    ga2d_shape_id id = ga2d_shape_id_null();
+    if (s->nshapes > 0 && k < 224) return s->shapes[k % (unsigned)s->nshapes].id;
+    if (k >= 240) {
+        id.index1 = (uint32_t)(k - 239);
+        id.generation = (uint32_t)fz_u8(&s->base.rd) | ((k & 1) ? 0x80000000u : 0);
+    }
+    return id;
+}
+
+/* Every live sensor's overlaps are the open pairs, afresh (after a load,
+   or a step that ran out of memory). */
+static void fsw_resync(fsw_state *s)
+{
+    int i, j, n;
+    ga2d_shape_id buf[FSW_SCRATCH];
+    s->nopen = 0;
+    s->open_lost = 0;
+    for (i = 0; i < s->nshapes; ++i) {
+        if (!s->shapes[i].sensor || !ga2d_shape_is_valid(s->base.w, s->shapes[i].id)) continue;
+        n = ga2d_shape_get_sensor_overlaps(s->base.w, s->shapes[i].id, buf, FSW_SCRATCH);
+        FUZZ_CHECK(n >= 0);
+        for (j = 0; j < n && j < FSW_SCRATCH; ++j) {
+            if (s->nopen == FSW_MAX_OPEN) {
+                s->open_lost = 1;
+                return;
+            }
+            s->open[s->nopen].sensor = s->shapes[i].id;
+            s->open[s->nopen++].visitor = buf[j];
+        }
+        if (n > FSW_SCRATCH) s->open_lost = 1;
+    }
+}
+
+static int fsw_find_open(const fsw_state *s, ga2d_shape_id sensor, ga2d_shape_id visitor)
+{
+    int i;
+    for (i = 0; i < s->nopen; ++i)
+        if (ga2d_shape_id_equal(s->open[i].sensor, sensor) && ga2d_shape_id_equal(s->open[i].visitor, visitor)) return i;
+    return -1;
+}
+
+/* Each live sensor's overlaps: live non-sensor shapes on other bodies
+   that take sensor events; and (unless the table overflowed) exactly the
+   open pairs. */
+static void fsw_check_sensors(fsw_state *s)
+{
+    ga2d_world *w = s->base.w;
+    ga2d_shape_id buf[FSW_SCRATCH];
+    int i, j, n, total = 0;
+    for (i = 0; i < s->nshapes; ++i) {
+        const fsw_shape *e = &s->shapes[i];
+        if (!e->sensor || !ga2d_shape_is_valid(w, e->id)) {
+            FUZZ_CHECK(ga2d_shape_get_sensor_overlaps(w, e->id, buf, FSW_SCRATCH) == 0 || e->sensor);
+            continue;
+        }
+        n = ga2d_shape_get_sensor_overlaps(w, e->id, buf, FSW_SCRATCH);
+        FUZZ_CHECK(n >= 0);
+        total += n;
+        for (j = 0; j < n && j < FSW_SCRATCH; ++j) {
+            fsw_shape v = fsw_lookup(s, buf[j]);
+            FUZZ_CHECK(ga2d_shape_is_valid(w, buf[j]));
+            FUZZ_CHECK(!ga2d_body_id_equal(ga2d_shape_body(w, buf[j]), ga2d_shape_body(w, e->id)));
+            FUZZ_CHECK(!v.sensor && v.sensor_events);
+            if (!s->open_lost) FUZZ_CHECK(fsw_find_open(s, e->id, buf[j]) >= 0);
+        }
+    }
+    if (!s->open_lost) FUZZ_CHECK(total == s->nopen);
+}
+
+/* ---------------------------------------------------------------- steps */
+/* What any step that was not refused promises (fw_check_step's, with the
+   one difference shapes bring: an allocation that failed in a destruction
+   (a sensor's end event) is reported by the next step). */
+static void fsw_check_step(fsw_state *s, ga2d_result r, long failures_before)
+{
+    fw_state *b = &s->base;
+    ga2d_body_id bad = ga2d_world_error_body(b->w);
+    FUZZ_CHECK(r == GA2D_OK || r == GA2D_ERR_OUT_OF_MEMORY || r == GA2D_ERR_NOT_FINITE);
+    if (b->alloc.failures != failures_before) FUZZ_CHECK(r == GA2D_ERR_OUT_OF_MEMORY);
+    if (r == GA2D_ERR_OUT_OF_MEMORY) FUZZ_CHECK(b->alloc.failures != failures_before || s->pending_oom);
+    if (r == GA2D_OK) FUZZ_CHECK(ga2d_body_id_is_null(bad));
+    if (r == GA2D_ERR_NOT_FINITE) FUZZ_CHECK(ga2d_body_is_valid(b->w, bad));
+    if (r == GA2D_OK || r == GA2D_ERR_NOT_FINITE) fw_check_finite(b);
+}
+
+/* The events of a step that completed: sensor pairs open and close once
+   each; hits are finite, fast enough, asked for and not refused. */
+static void fsw_check_events(fsw_state *s, int oom)
+{
+    ga2d_world *w = s->base.w;
+    ga2d_sensor_events se = ga2d_world_sensor_events(w);
+    ga2d_contact_events ce = ga2d_world_contact_events(w);
+    int i;
+    FUZZ_CHECK(se.begin_count >= 0 && se.end_count >= 0);
+    FUZZ_CHECK(ce.begin_count >= 0 && ce.end_count >= 0 && ce.hit_count >= 0);
+    if (oom) {
+        fsw_resync(s);
+        return;
+    }
+    for (i = 0; i < se.end_count; ++i) {
+        int k = fsw_find_open(s, se.end[i].sensor, se.end[i].visitor);
+        FSW_TRACE((stderr, "  sensor end %u/%u\n", se.end[i].sensor.index1, se.end[i].visitor.index1));
+        if (!s->open_lost) FUZZ_CHECK(k >= 0); /* an end for what began */
+        if (k >= 0) s->open[k] = s->open[--s->nopen];
+    }
+    for (i = 0; i < se.begin_count; ++i) {
+        fsw_shape sensor = fsw_lookup(s, se.begin[i].sensor);
+        FSW_TRACE((stderr, "  sensor begin %u/%u\n", se.begin[i].sensor.index1, se.begin[i].visitor.index1));
+        FUZZ_CHECK(ga2d_shape_is_valid(w, se.begin[i].sensor) && ga2d_shape_is_valid(w, se.begin[i].visitor));
+        FUZZ_CHECK(sensor.sensor);
+        FUZZ_CHECK(fsw_find_open(s, se.begin[i].sensor, se.begin[i].visitor) < 0); /* began once */
+        if (s->nopen < FSW_MAX_OPEN) {
+            s->open[s->nopen].sensor = se.begin[i].sensor;
+            s->open[s->nopen++].visitor = se.begin[i].visitor;
+        } else {
+            s->open_lost = 1;
+        }
+    }
+    fsw_check_sensors(s);
+    for (i = 0; i < ce.hit_count; ++i) {
+        const ga2d_contact_hit_event *h = &ce.hit[i];
+        fsw_shape a = fsw_lookup(s, h->shape_a), b = fsw_lookup(s, h->shape_b);
+        double nn = (double)h->normal.x * (double)h->normal.x + (double)h->normal.y * (double)h->normal.y;
+        FUZZ_CHECK(ga2d_shape_is_valid(w, h->shape_a) && ga2d_shape_is_valid(w, h->shape_b));
+        FUZZ_CHECK(a.hit || b.hit);
+        FUZZ_CHECK(fz_finite_vec(h->point) && fz_finite_vec(h->normal) && fz_finite((double)h->approach_speed));
+        FUZZ_CHECK((double)h->approach_speed > (double)s->hit_threshold * s->base.units * (1 - 4 * FZ_EPS));
+        FUZZ_CHECK(fabs(nn - 1) <= 1e-3);
+        /* a contact the pre-solve turned down did not push: no hit */
+        if (s->has_pre_solve && s->cb.mode == 2) FUZZ_CHECK(!a.pre_solve && !b.pre_solve);
+    }
+}
+
+/* A step: fw_step's bounds and checks, with the shapes counted in the
+   work budget.  Returns 1 when the step ran. */
+static int fsw_step_dt(fsw_state *s, ga2d_real dt, ga2d_result *out)
+{
+    fw_state *b = &s->base;
+    long long steps_before;
+    long failures, cost;
+    ga2d_result r;
+    cost = (long)b->substeps * b->passes * (b->rk4 ? 4 : 1) *
+           (ga2d_world_get_counters(b->w).body_count + s->nshapes + 8 * s->nchains + 1);
+    if (b->work + cost > FW_WORK_BUDGET) return 0;
+    b->work += cost;
+    steps_before = ga2d_world_get_counters(b->w).step_count;
+    failures = b->alloc.failures;
+    s->cb.calls = 0;
+    r = ga2d_world_step(b->w, dt);
+    FSW_TRACE((stderr, "step %g: %s (pre-solve calls %ld)\n", (double)dt, ga2d_result_string(r), s->cb.calls));
+    *out = r;
+    FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT);
+    if (!(fz_finite((double)dt) && dt > 0)) FUZZ_CHECK(r == GA2D_ERR_INVALID_ARGUMENT);
+    if (r == GA2D_ERR_INVALID_ARGUMENT || r == GA2D_ERR_TOO_LARGE) {
+        if (r == GA2D_ERR_TOO_LARGE) FUZZ_CHECK(fw_step_too_large(b, (double)dt, 0.999));
+        FUZZ_CHECK(ga2d_world_get_counters(b->w).step_count == steps_before);
+        return 0;
+    }
+    FUZZ_CHECK(!fw_step_too_large(b, (double)dt, 1.001));
+    FUZZ_CHECK(ga2d_world_get_counters(b->w).step_count == steps_before + 1);
+    fsw_check_step(s, r, failures);
+    /* a destruction's end event that found no room: this step says so */
+    if (s->pending_oom) FUZZ_CHECK(r == GA2D_ERR_OUT_OF_MEMORY);
+    s->pending_oom = 0;
+    /* (OUT_OF_MEMORY wins over NOT_FINITE: a step that ran out may have
+       contained a body too) */
+    if (r == GA2D_ERR_NOT_FINITE || r == GA2D_ERR_OUT_OF_MEMORY) s->contained = 1;
+    fsw_check_events(s, r == GA2D_ERR_OUT_OF_MEMORY);
+    return 1;
+}
+
+static void fsw_step(fsw_state *s)
+{
+    static const double dts[8] = {1.0 / 60, 1.0 / 30, 1.0 / 120, 1.0 / 240, 0, -1.0 / 60, 1e-30, 10};
+    unsigned k = fz_u8(&s->base.rd);
+    ga2d_real dt = k < 220 ? fz_narrow(dts[k % 4]) : (k < 248 ? fz_narrow(dts[k % 8]) : fz_real(&s->base.rd, 1));
+    ga2d_result r;
+    (void)fsw_step_dt(s, dt, &r);
+}
+
+/* ------------------------------------------------------------ pre-solve */
+/* Every kind of change, from inside the step: each refused with LOCKED
+   (the null id for the makers that return ids), and nothing changed
+   that a getter shows. */
+static void fsw_probe_locked(fsw_cb *cb, ga2d_shape_id a)
+{
+    ga2d_world *w = cb->w;
+    ga2d_body_id body = ga2d_shape_body(w, a);
+    ga2d_world_counters before = ga2d_world_get_counters(w);
+    size_t size = ga2d_world_snapshot_size(w);
+    ga2d_filter f = ga2d_shape_filter(w, a);
+    ga2d_vec v = ga2d_body_velocity(w, body);
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_chain_def cd = ga2d_default_chain_def();
+    ga2d_geometry g;
+    ga2d_shape_id sid;
+    ga2d_chain_id cid;
+    ga2d_circle c;
+    ga2d_vec pts[3];
+    unsigned char buf[64];
+    ga2d_debug_draw dd = ga2d_default_debug_draw();
+    c.center = ga2d_vec_make(0, 0);
+    c.radius = (ga2d_real)0.5;
+    memset(&g, 0, sizeof g);
+    g.type = GA2D_SHAPE_CIRCLE;
+    g.as.circle = c;
+    pts[0] = ga2d_vec_make(0, 0);
+    pts[1] = ga2d_vec_make(1, 0);
+    pts[2] = ga2d_vec_make(1, 1);
+    cd.points = pts;
+    cd.count = 3;
+    bd.polygon = ga2d_polygon_box(1, 1);
+    FUZZ_CHECK(ga2d_world_step(w, (ga2d_real)(1.0 / 60)) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_shape_create_checked(w, body, &sd, &g, &sid) == GA2D_ERR_LOCKED && ga2d_shape_id_is_null(sid));
+    FUZZ_CHECK(ga2d_shape_id_is_null(ga2d_shape_create_circle(w, body, &sd, &c)));
+    FUZZ_CHECK(ga2d_shape_destroy(w, a, 1) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_shape_set_friction(w, a, 1) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_shape_set_restitution(w, a, 1) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_shape_set_filter(w, a, ga2d_default_filter()) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_chain_create_checked(w, body, &cd, &cid) == GA2D_ERR_LOCKED && cid.index1 == 0);
+    cid.index1 = 1;
+    cid.generation = 1;
+    FUZZ_CHECK(ga2d_chain_destroy(w, cid) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_id_is_null(ga2d_body_create(w, &bd)));
+    FUZZ_CHECK(ga2d_body_destroy(w, body) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_set_velocity(w, body, ga2d_vec_make(1, 0)) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_apply_force(w, body, ga2d_vec_make(1, 0), ga2d_vec_make(0, 0)) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_apply_force_to_center(w, body, ga2d_vec_make(1, 0)) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_apply_torque(w, body, 1) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_apply_impulse(w, body, ga2d_vec_make(1, 0), ga2d_vec_make(0, 0)) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_set_awake(w, body, 0) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_set_gravity(w, ga2d_vec_make(0, 0)) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_compact(w) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_snapshot_save(w, buf, sizeof buf) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_snapshot_load(w, buf, sizeof buf) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_draw(w, &dd) == GA2D_ERR_LOCKED);
+    {
+        ga2d_world_counters after = ga2d_world_get_counters(w);
+        ga2d_filter f2 = ga2d_shape_filter(w, a);
+        ga2d_vec v2 = ga2d_body_velocity(w, body);
+        FUZZ_CHECK(after.body_count == before.body_count && after.pair_count == before.pair_count);
+        FUZZ_CHECK(ga2d_world_snapshot_size(w) == size);
+        FUZZ_CHECK(ga2d_shape_is_valid(w, a));
+        FUZZ_CHECK(memcmp(&f, &f2, sizeof f) == 0 && memcmp(&v, &v2, sizeof v) == 0);
+    }
+}
+
+/* The answer: a function of the mode and the two ids. */
+static int fsw_decide(int mode, ga2d_shape_id a, ga2d_shape_id b)
+{
+    if (mode == 0) return 1;
+    if (mode == 2) return 0;
+    return ((a.index1 * 7u + b.index1 * 3u) & 3u) != 0;
+}
+
+static int fsw_pre_solve(ga2d_shape_id a, ga2d_shape_id b, const ga2d_manifold *m, void *ctx)
+{
+    fsw_cb *cb = (fsw_cb *)ctx;
+    ga2d_world *w = cb->w;
+    ++cb->calls;
+    FUZZ_CHECK(m != NULL && m->count >= 1 && m->count <= 2);
+    FUZZ_CHECK(fz_finite_vec(m->normal));
+    FUZZ_CHECK(ga2d_shape_is_valid(w, a) && ga2d_shape_is_valid(w, b));
+    FUZZ_CHECK(!ga2d_body_id_equal(ga2d_shape_body(w, a), ga2d_shape_body(w, b)));
+    FUZZ_CHECK(a.index1 < b.index1); /* A's slot before B's */
+    if (cb->s) {
+        fsw_shape ea = fsw_lookup(cb->s, a), eb = fsw_lookup(cb->s, b);
+        FUZZ_CHECK(ea.pre_solve || eb.pre_solve);
+    }
+    /* the first calls of each step try every change */
+    if (cb->probe && cb->calls <= 2) fsw_probe_locked(cb, a);
+    return fsw_decide(cb->mode, a, b);
+}
+
+/* ------------------------------------------------------------- shapes */
+/* A shape def: clean (ordinary materials, the flags any way) or wild. */
+static ga2d_shape_def fsw_shape_def(fsw_state *s, int *clean)
+{
+    fz_reader *r = &s->base.rd;
+    ga2d_shape_def d = ga2d_default_shape_def();
+    unsigned flags = fz_u8(r), more = fz_u8(r);
+    int wild = (flags & 7) == 0;
+    *clean = !wild;
+    if (flags & 8) d.density = wild ? fz_real(r, 4) : ((more & 1) ? 0 : fz_narrow((double)(1 + fz_u8(r) % 64) / 16));
+    if (flags & 16) {
+        d.friction = wild ? fz_real(r, 1) : fz_narrow((double)fz_u8(r) / 128);
+        d.restitution = wild ? fz_real(r, 1) : fz_narrow((double)fz_u8(r) / 256);
+    }
+    if (flags & 32) {
+        d.filter.category_bits = (uint32_t)1 << (fz_u8(r) & 31);
+        d.filter.mask_bits = fz_u8(r) < 128 ? 0xFFFFFFFFu : fz_u32(r);
+        d.filter.group_index = (int32_t)(int8_t)fz_u8(r) % 4;
+    }
+    d.is_sensor = (more >> 1) & 1;
+    d.enable_sensor_events = ((more >> 2) & 3) != 0;
+    d.enable_pre_solve_events = (more >> 4) & 1;
+    d.enable_hit_events = (more >> 5) & 1;
+    if (flags & 64) d.tangent_speed = wild ? fz_real(r, 4) : fz_narrow((double)(int8_t)fz_u8(r) / 32);
+    if ((flags & 128) && !wild) d.rolling_resistance = fz_narrow((double)fz_u8(r) / 512);
+    d.user_data = (more & 64) ? &s->base.tag : NULL;
+    if ((more & 0xC0) == 0xC0) {
+        /* by hand: its zeros are the defaults */
+        int sensor = d.is_sensor;
+        memset(&d, 0, sizeof d);
+        d.is_sensor = sensor;
+    }
+    return d;
+}
+
+/* A polygon for a shape: a maker's (clean) or anything. */
+static ga2d_polygon fsw_polygon(fsw_state *s, int *clean)
+{
+    fz_reader *r = &s->base.rd;
+    ga2d_polygon p;
+    int k = fz_pick(r, 8);
+    *clean = 1;
+    if (k < 2) {
+        /* one read a statement: arguments are evaluated in no set order */
+        ga2d_real hw = fz_narrow((double)(4 + fz_u8(r) % 60) / 32);
+        p = ga2d_polygon_box(hw, fz_narrow((double)(4 + fz_u8(r) % 60) / 32));
+    } else if (k < 4) {
+        ga2d_real hw = fz_narrow((double)(4 + fz_u8(r) % 60) / 32), hh = fz_narrow((double)(4 + fz_u8(r) % 60) / 32);
+        p = ga2d_polygon_rounded_box(hw, hh, (hw < hh ? hw : hh) * (ga2d_real)(fz_u8(r) % 200) / 256);
+    } else if (k < 6) {
+        int count = 3 + fz_pick(r, GA2D_MAX_POLYGON_VERTICES - 2);
+        p = ga2d_polygon_regular(count, fz_narrow((double)(4 + fz_u8(r) % 60) / 32));
+        if (fz_u8(r) < 64) p.radius = fz_narrow((double)(fz_u8(r) % 64) / 256);
+    } else {
+        /* fw_polygon's: boxes, regular ones, hulls of points, hand-filled
+           structs; with any radius */
+        p = fw_polygon(&s->base, fz_u8(r) < 64);
+        if (fz_u8(r) < 64) p.radius = fz_real(r, 1);
+        *clean = 0;
+    }
+    return p;
+}
+
+/* A point in a body's frame: ordinary (within 2) or anything. */
+static ga2d_vec fsw_vec(fsw_state *s, int wild)
+{
+    fz_reader *r = &s->base.rd;
+    ga2d_vec v;
+    if (wild) return fw_vec(&s->base, 2, 1);
+    v.x = fz_narrow((double)(int8_t)fz_u8(r) / 64);
+    v.y = fz_narrow((double)(int8_t)fz_u8(r) / 64);
+    return v;
+}
+
+/* Two ends at least 1/16 apart. */
+static void fsw_ends(fsw_state *s, ga2d_vec *p1, ga2d_vec *p2)
+{
+    fz_reader *r = &s->base.rd;
+    double a = (double)fz_u8(r) * (6.283185307179586 / 256), len = (double)(4 + fz_u8(r) % 60) / 32;
+    *p1 = fsw_vec(s, 0);
+    *p2 = ga2d_vec_add(*p1, ga2d_vec_make(fz_narrow(len * cos(a)), fz_narrow(len * sin(a))));
+}
+
+/* A geometry: clean (ordinary sizes, every type), wild, degenerate, a
+   lone chain segment, or a type out of range. */
+static void fsw_geometry(fsw_state *s, ga2d_geometry *g, int *clean)
+{
+    fz_reader *r = &s->base.rd;
+    int k = fz_pick(r, 16);
+    memset(g, 0, sizeof *g);
+    *clean = 1;
+    if (k < 3) {
+        g->type = GA2D_SHAPE_CIRCLE;
+        g->as.circle.center = fsw_vec(s, 0);
+        g->as.circle.radius = fz_narrow((double)(4 + fz_u8(r) % 60) / 64);
+    } else if (k < 6) {
+        g->type = GA2D_SHAPE_CAPSULE;
+        fsw_ends(s, &g->as.capsule.center1, &g->as.capsule.center2);
+        g->as.capsule.radius = fz_narrow((double)(2 + fz_u8(r) % 40) / 64);
+    } else if (k < 10) {
+        g->type = GA2D_SHAPE_POLYGON;
+        g->as.polygon = fsw_polygon(s, clean);
+    } else if (k < 12) {
+        g->type = GA2D_SHAPE_SEGMENT;
+        fsw_ends(s, &g->as.segment.point1, &g->as.segment.point2);
+    } else if (k == 12) {
+        ga2d_chain_segment *c = &g->as.chain_segment;
+        g->type = GA2D_SHAPE_CHAIN_SEGMENT;
+        fsw_ends(s, &c->segment.point1, &c->segment.point2);
+        fsw_ends(s, &c->ghost2, &c->ghost1);
+        c->ghost1 = ga2d_vec_add(c->segment.point1, ga2d_vec_sub(c->ghost1, c->ghost2));
+        c->ghost2 = ga2d_vec_add(c->segment.point2, ga2d_vec_sub(c->ghost2, c->segment.point1));
+        *clean = 0;
+    } else if (k == 13) {
+        /* anything, in any of the four types */
+        g->type = (ga2d_shape_type)fz_pick(r, 4);
+        *clean = 0;
+        switch ((int)g->type) {
+        case GA2D_SHAPE_CIRCLE:
+            g->as.circle.center = fsw_vec(s, 1);
+            g->as.circle.radius = fz_real(r, 1);
+            break;
+        case GA2D_SHAPE_CAPSULE:
+            g->as.capsule.center1 = fsw_vec(s, 1);
+            g->as.capsule.center2 = fsw_vec(s, 1);
+            g->as.capsule.radius = fz_real(r, 1);
+            break;
+        case GA2D_SHAPE_POLYGON: g->as.polygon = fw_polygon(&s->base, 1); break;
+        default:
+            g->as.segment.point1 = fsw_vec(s, 1);
+            g->as.segment.point2 = fsw_vec(s, 1);
+            break;
+        }
+    } else if (k == 14) {
+        /* degenerate on purpose: ends that coincide or nearly, no radius,
+           a negative one, a point beyond GA2D_MAX_COORDINATE */
+        int d = fz_pick(r, 6);
+        ga2d_vec p = fsw_vec(s, 0);
+        *clean = 0;
+        g->type = d < 2 ? GA2D_SHAPE_CAPSULE : d < 4 ? GA2D_SHAPE_SEGMENT : GA2D_SHAPE_CIRCLE;
+        if (d < 4) {
+            ga2d_vec q = (d & 1) ? ga2d_vec_make(p.x + p.x * (ga2d_real)FZ_EPS, p.y) : p;
+            if (d < 2) {
+                g->as.capsule.center1 = p;
+                g->as.capsule.center2 = q;
+                g->as.capsule.radius = (ga2d_real)0.25;
+            } else {
+                g->as.segment.point1 = p;
+                g->as.segment.point2 = q;
+            }
+        } else {
+            g->as.circle.center = d == 4 ? p : ga2d_vec_make(fz_narrow(2.0 * (double)GA2D_MAX_COORDINATE), p.y);
+            g->as.circle.radius = d == 4 ? (fz_u8(r) & 1 ? 0 : (ga2d_real)-0.25) : (ga2d_real)0.5;
+        }
+    } else {
+        g->type = (ga2d_shape_type)(GA2D_SHAPE_TYPE_COUNT + fz_pick(r, 3));
+        g->as.circle.radius = 1;
+        *clean = 0;
+    }
+}
+
+/* Makes a shape on a tracked body, a destroyed one or a forged id, by a
+   typed maker or ga2d_shape_create_checked, and checks what it promises. */
+static void fsw_shape_create(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    ga2d_world *w = b->w;
+    ga2d_body_id body = fw_id(b);
+    int clean_def, clean_geo, valid = ga2d_body_is_valid(w, body), btype = (int)ga2d_body_get_type(w, body);
+    int how = fz_pick(&b->rd, 3), nbefore, nafter, must_ok;
+    ga2d_shape_def d = fsw_shape_def(s, &clean_def);
+    ga2d_geometry g;
+    ga2d_shape_id id = ga2d_shape_id_null(), list[FSW_SCRATCH];
+    ga2d_mass mass_before = ga2d_body_mass_data(w, body);
+    ga2d_result r;
+    fsw_guard gd;
+    fsw_geometry(s, &g, &clean_geo);
+    if (s->nshapes >= FSW_MAX_SHAPES) return;
+    nbefore = ga2d_body_get_shapes(w, body, list, FSW_SCRATCH);
+    fsw_guard_begin(s, &gd);
+    if (how == 0 && (int)g.type <= GA2D_SHAPE_SEGMENT) {
+        /* the typed makers say nothing but the id */
+        switch ((int)g.type) {
+        case GA2D_SHAPE_CIRCLE: id = ga2d_shape_create_circle(w, body, &d, &g.as.circle); break;
+        case GA2D_SHAPE_CAPSULE: id = ga2d_shape_create_capsule(w, body, &d, &g.as.capsule); break;
+        case GA2D_SHAPE_POLYGON: id = ga2d_shape_create_polygon(w, body, &d, &g.as.polygon); break;
+        default: id = ga2d_shape_create_segment(w, body, &d, &g.as.segment); break;
+        }
+        r = ga2d_shape_id_is_null(id) ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK;
+    } else {
+        r = ga2d_shape_create_checked(w, body, &d, &g, &id);
+        FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT);
+        FUZZ_CHECK((r == GA2D_OK) == !ga2d_shape_id_is_null(id));
+        FUZZ_CHECK(r != GA2D_ERR_LOCKED && r != GA2D_ERR_BAD_SNAPSHOT && r != GA2D_ERR_BUFFER_TOO_SMALL);
+        if (!valid) FUZZ_CHECK(r == GA2D_ERR_STALE_ID || !clean_def);
+    }
+    FSW_TRACE((stderr, "shape create type %d on %u (valid %d type %d) how %d sensor %d: %s -> %u\n", (int)g.type, body.index1,
+               valid, btype, how, d.is_sensor, ga2d_result_string(r), id.index1));
+    /* what must be refused, and what must be made */
+    if (!valid || (int)g.type > GA2D_SHAPE_CHAIN_SEGMENT ||
+        (btype == GA2D_BODY_DYNAMIC && ((int)g.type == GA2D_SHAPE_SEGMENT || (int)g.type == GA2D_SHAPE_CHAIN_SEGMENT)))
+        FUZZ_CHECK(r != GA2D_OK);
+    if ((int)g.type == GA2D_SHAPE_CHAIN_SEGMENT) FUZZ_CHECK(r != GA2D_OK);
+    must_ok = valid && clean_def && clean_geo && (int)g.type <= GA2D_SHAPE_SEGMENT &&
+              !(btype == GA2D_BODY_DYNAMIC && (int)g.type == GA2D_SHAPE_SEGMENT) && b->alloc.failures == gd.failures;
+    if (must_ok) FUZZ_CHECK(r == GA2D_OK);
+    fsw_guard_end(s, &gd, r);
+    nafter = ga2d_body_get_shapes(w, body, list, FSW_SCRATCH);
+    if (r != GA2D_OK) {
+        FUZZ_CHECK(nafter == nbefore);
+        return;
+    }
+    {
+        ga2d_shape_def rd = d;
+        ga2d_geometry got = ga2d_shape_geometry(w, id);
+        ga2d_mass mass = ga2d_body_mass_data(w, body);
+        fsw_shape e;
+        int stamped = d.internal_cookie == GA2D_DEF_COOKIE;
+        if (!stamped) rd = ga2d_default_shape_def(), rd.is_sensor = d.is_sensor;
+        FUZZ_CHECK(ga2d_shape_is_valid(w, id) && ga2d_body_id_equal(ga2d_shape_body(w, id), body));
+        FUZZ_CHECK((int)ga2d_shape_get_type(w, id) == (int)g.type && (int)got.type == (int)g.type);
+        FUZZ_CHECK(ga2d_shape_user_data(w, id) == (stamped ? d.user_data : NULL));
+        if (stamped) {
+            ga2d_filter f = ga2d_shape_filter(w, id);
+            FUZZ_CHECK(memcmp(&f, &d.filter, sizeof f) == 0);
+        }
+        switch ((int)g.type) {
+        case GA2D_SHAPE_CIRCLE: FUZZ_CHECK(memcmp(&got.as.circle, &g.as.circle, sizeof g.as.circle) == 0); break;
+        case GA2D_SHAPE_CAPSULE: FUZZ_CHECK(memcmp(&got.as.capsule, &g.as.capsule, sizeof g.as.capsule) == 0); break;
+        case GA2D_SHAPE_SEGMENT: FUZZ_CHECK(memcmp(&got.as.segment, &g.as.segment, sizeof g.as.segment) == 0); break;
+        case GA2D_SHAPE_POLYGON:
+            FUZZ_CHECK(got.as.polygon.count == g.as.polygon.count && got.as.polygon.radius == g.as.polygon.radius);
+            FUZZ_CHECK(memcmp(got.as.polygon.vertices, g.as.polygon.vertices,
+                              (size_t)g.as.polygon.count * sizeof g.as.polygon.vertices[0]) == 0);
+            break;
+        default: break;
+        }
+        FUZZ_CHECK(nafter == nbefore + 1 && (nafter > FSW_SCRATCH || ga2d_shape_id_equal(list[nafter - 1], id)));
+        if (btype == GA2D_BODY_DYNAMIC) {
+            FUZZ_CHECK(fz_finite((double)mass.mass) && mass.mass > 0 && fz_finite((double)mass.inertia) && mass.inertia >= 0);
+            FUZZ_CHECK(fz_finite_vec(mass.center));
+            /* a sensor, or a shape of density 0, adds no mass (appended to
+               a body that had shapes: its zero terms change no sum) */
+            if ((rd.is_sensor || rd.density == 0) && nbefore > 0 && !s->mass_set)
+                FUZZ_CHECK(mass.mass == mass_before.mass && mass.inertia == mass_before.inertia &&
+                           mass.center.x == mass_before.center.x && mass.center.y == mass_before.center.y);
+        }
+        memset(&e, 0, sizeof e);
+        e.id = id;
+        e.body = body;
+        e.type = (int)g.type;
+        e.sensor = rd.is_sensor != 0;
+        e.sensor_events = rd.enable_sensor_events != 0;
+        e.pre_solve = rd.enable_pre_solve_events != 0;
+        e.hit = rd.enable_hit_events != 0;
+        fsw_remember(s, &e);
+        if ((int)g.type == GA2D_SHAPE_CHAIN_SEGMENT && s->norphans < 8) s->orphans[s->norphans++] = id;
+    }
+}
+
+/* Destroys a shape (a tracked one, a chain's segment, null or forged). */
+static void fsw_shape_destroy(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    ga2d_world *w = b->w;
+    ga2d_shape_id id;
+    int update = fz_u8(&b->rd) & 1, valid, n, chain_seg;
+    ga2d_body_id body;
+    ga2d_mass before;
+    ga2d_result r;
+    fsw_guard gd;
+    if (s->nchains > 0 && fz_u8(&b->rd) < 48) {
+        const fsw_chain *c = &s->chains[fz_pick(&b->rd, s->nchains)];
+        id = c->segments[fz_pick(&b->rd, c->n)];
+    } else {
+        id = fsw_shape_id(s);
+    }
+    valid = ga2d_shape_is_valid(w, id);
+    chain_seg = valid && ga2d_shape_get_type(w, id) == GA2D_SHAPE_CHAIN_SEGMENT;
+    body = ga2d_shape_body(w, id);
+    before = ga2d_body_mass_data(w, body);
+    n = ga2d_body_get_shapes(w, body, NULL, 0);
+    fsw_guard_begin(s, &gd);
+    r = ga2d_shape_destroy(w, id, update);
+    FSW_TRACE((stderr, "shape destroy %u (valid %d chain %d) update %d: %s\n", id.index1, valid, chain_seg, update,
+               ga2d_result_string(r)));
+    if (b->alloc.failures != gd.failures) s->pending_oom = 1; /* an end event that found no room */
+    FUZZ_CHECK(r == (!valid ? GA2D_ERR_STALE_ID : chain_seg ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK));
+    fsw_guard_end(s, &gd, r);
+    if (r != GA2D_OK) return;
+    FUZZ_CHECK(!ga2d_shape_is_valid(w, id) && ga2d_body_id_is_null(ga2d_shape_body(w, id)));
+    FUZZ_CHECK(ga2d_shape_get_type(w, id) == GA2D_SHAPE_TYPE_COUNT);
+    FUZZ_CHECK(ga2d_body_get_shapes(w, body, NULL, 0) == n - 1);
+    if (!update) {
+        /* the body keeps its mass until the next change */
+        s->mass_set = 1;
+        ga2d_mass after = ga2d_body_mass_data(w, body);
+        FUZZ_CHECK(memcmp(&after, &before, sizeof after) == 0);
+    }
+}
+
+/* Friction, restitution or filter, on any shape id. */
+static void fsw_shape_set(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    ga2d_world *w = b->w;
+    ga2d_shape_id id = fsw_shape_id(s);
+    int what = fz_pick(&b->rd, 3), valid = ga2d_shape_is_valid(w, id), wild = fz_u8(&b->rd) < 48;
+    ga2d_real x = wild ? fz_real(&b->rd, 1) : fz_narrow((double)fz_u8(&b->rd) / 128);
+    ga2d_result r, want;
+    ga2d_filter f;
+    fsw_guard gd;
+    f.category_bits = fz_u32(&b->rd);
+    f.mask_bits = fz_u8(&b->rd) < 128 ? 0xFFFFFFFFu : fz_u32(&b->rd);
+    f.group_index = (int32_t)(int8_t)fz_u8(&b->rd);
+    fsw_guard_begin(s, &gd);
+    if (what == 0) r = ga2d_shape_set_friction(w, id, x);
+    else if (what == 1) r = ga2d_shape_set_restitution(w, id, x);
+    else r = ga2d_shape_set_filter(w, id, f);
+    want = !valid ? GA2D_ERR_STALE_ID
+                  : what == 2 ? GA2D_OK : !fz_finite((double)x) ? GA2D_ERR_NOT_FINITE : x < 0 ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK;
+    FSW_TRACE((stderr, "shape set %d on %u (%g): %s\n", what, id.index1, (double)x, ga2d_result_string(r)));
+    FUZZ_CHECK(r == want);
+    fsw_guard_end(s, &gd, r);
+    if (r == GA2D_OK && what == 2) {
+        ga2d_filter got = ga2d_shape_filter(w, id);
+        FUZZ_CHECK(memcmp(&got, &f, sizeof f) == 0);
+    }
+}
+
+/* ---------------------------------------------------------------- chains */
+static void fsw_chain_create(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    ga2d_world *w = b->w;
+    fz_reader *rd = &b->rd;
+    ga2d_body_id body = fw_id(b);
+    ga2d_chain_def d = ga2d_default_chain_def();
+    ga2d_vec pts[FSW_MAX_POINTS];
+    ga2d_chain_id id;
+    ga2d_shape_id segs[FSW_MAX_POINTS + 1];
+    unsigned flags = fz_u8(rd);
+    int n = 1 + fz_pick(rd, FSW_MAX_POINTS), loop = flags & 1, mutate = fz_pick(rd, 10), clean, i, k, valid, btype, edges;
+    ga2d_result r;
+    fsw_guard gd;
+    valid = ga2d_body_is_valid(w, body);
+    btype = (int)ga2d_body_get_type(w, body);
+    /* a path of steps 1/8 to 2 long */
+    pts[0].x = fz_narrow((double)(int8_t)fz_u8(rd) / 16);
+    pts[0].y = fz_narrow((double)(int8_t)fz_u8(rd) / 16);
+    for (i = 1; i < n; ++i) {
+        double a = (double)fz_u8(rd) * (6.283185307179586 / 256), len = (double)(4 + fz_u8(rd) % 60) / 32;
+        pts[i] = ga2d_vec_add(pts[i - 1], ga2d_vec_make(fz_narrow(len * cos(a)), fz_narrow(len * sin(a))));
+    }
+    clean = mutate < 6;
+    k = fz_pick(rd, n);
+    switch (mutate) {
+    case 6: if (k > 0) pts[k] = pts[k - 1]; break; /* repeated */
+    case 7: if (k > 0) pts[k] = ga2d_vec_make(pts[k - 1].x + pts[k - 1].x * (ga2d_real)FZ_EPS, pts[k - 1].y); break;
+    case 8: /* folded back on itself: allowed */
+        if (k > 1) pts[k] = pts[k - 2];
+        clean = 1;
+        break;
+    case 9: pts[k] = fw_vec(b, 4, 1); break; /* anything: NaN, huge */
+    default: break;
+    }
+    if (n < (loop ? 3 : 2)) clean = 0;
+    if (clean)
+        for (i = 0; i < (loop ? n : n - 1); ++i)
+            if (fabs((double)pts[i].x - (double)pts[(i + 1) % n].x) + fabs((double)pts[i].y - (double)pts[(i + 1) % n].y) < 0.01) clean = 0;
+    d.points = pts;
+    d.count = n;
+    d.is_loop = loop;
+    if (flags & 2) {
+        int wild = (flags & 4) != 0;
+        d.friction = wild ? fz_real(rd, 1) : fz_narrow((double)fz_u8(rd) / 128);
+        d.restitution = wild ? fz_real(rd, 1) : fz_narrow((double)fz_u8(rd) / 256);
+        if (wild) clean = 0;
+    }
+    if (flags & 8) d.filter.category_bits = (uint32_t)1 << (fz_u8(rd) & 31);
+    d.user_data = (flags & 16) ? &s->base.tag : NULL;
+    if (flags & 32) {
+        /* by hand: zeros are defaults */
+        ga2d_chain_def h;
+        memset(&h, 0, sizeof h);
+        h.points = pts;
+        h.count = n;
+        h.is_loop = loop;
+        d = h;
+    }
+    if ((flags & 0xC0) == 0xC0) {
+        d.points = NULL;
+        clean = 0;
+    }
+    if (s->nchains == FSW_MAX_CHAINS) return;
+    fsw_guard_begin(s, &gd);
+    if (flags & 64) {
+        id = ga2d_chain_create(w, body, &d);
+        r = id.index1 == 0 ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK;
+    } else {
+        r = ga2d_chain_create_checked(w, body, &d, &id);
+        FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT);
+        FUZZ_CHECK((r == GA2D_OK) == (id.index1 != 0));
+        if (!valid && clean) FUZZ_CHECK(r == GA2D_ERR_STALE_ID);
+        if (valid && btype == GA2D_BODY_DYNAMIC && clean) FUZZ_CHECK(r == GA2D_ERR_INVALID_ARGUMENT);
+        FUZZ_CHECK(r != GA2D_ERR_LOCKED);
+    }
+    FSW_TRACE((stderr, "chain create on %u (valid %d type %d) n %d loop %d mutate %d: %s\n", body.index1, valid, btype, n, loop,
+               mutate, ga2d_result_string(r)));
+    if (!valid || btype == GA2D_BODY_DYNAMIC || n < (loop ? 3 : 2) || !d.points) FUZZ_CHECK(r != GA2D_OK);
+    if (mutate == 6 && k > 0 && (loop || k < n)) FUZZ_CHECK(r != GA2D_OK);
+    if (valid && btype != GA2D_BODY_DYNAMIC && clean && b->alloc.failures == gd.failures) FUZZ_CHECK(r == GA2D_OK);
+    fsw_guard_end(s, &gd, r);
+    if (r != GA2D_OK) return;
+    edges = loop ? n : n - 1;
+    FUZZ_CHECK(ga2d_chain_get_segments(w, id, segs, FSW_MAX_POINTS + 1) == edges);
+    for (i = 0; i < edges; ++i) {
+        ga2d_geometry g = ga2d_shape_geometry(w, segs[i]);
+        const ga2d_chain_segment *c = &g.as.chain_segment;
+        FUZZ_CHECK(ga2d_shape_get_type(w, segs[i]) == GA2D_SHAPE_CHAIN_SEGMENT);
+        FUZZ_CHECK(ga2d_body_id_equal(ga2d_shape_body(w, segs[i]), body));
+        /* through the points, the neighbours' far ends as ghosts */
+        FUZZ_CHECK(memcmp(&c->segment.point1, &pts[i], sizeof pts[i]) == 0);
+        FUZZ_CHECK(memcmp(&c->segment.point2, &pts[(i + 1) % n], sizeof pts[i]) == 0);
+        if (loop || i > 0) FUZZ_CHECK(memcmp(&c->ghost1, &pts[(i + n - 1) % n], sizeof pts[i]) == 0);
+        if (loop || i + 2 < n) FUZZ_CHECK(memcmp(&c->ghost2, &pts[(i + 2) % n], sizeof pts[i]) == 0);
+    }
+    {
+        fsw_chain *c = NULL;
+        for (i = 0; i < s->nchains; ++i)
+            if (s->chains[i].id.index1 == id.index1 && s->chains[i].id.generation == id.generation) c = &s->chains[i];
+        if (!c) c = &s->chains[s->nchains++];
+        c->id = id;
+        c->body = body;
+        c->n = edges;
+        memcpy(c->segments, segs, (size_t)edges * sizeof segs[0]);
+    }
+}
+
+static void fsw_chain_destroy(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    ga2d_world *w = b->w;
+    ga2d_chain_id id;
+    const fsw_chain *c = NULL;
+    int valid, i;
+    ga2d_result r;
+    fsw_guard gd;
+    memset(&id, 0, sizeof id);
+    if (s->nchains > 0 && fz_u8(&b->rd) < 224) {
+        c = &s->chains[fz_pick(&b->rd, s->nchains)];
+        id = c->id;
+    } else {
+        id.index1 = fz_u8(&b->rd) % 4;
+        id.generation = fz_u8(&b->rd);
+    }
+    valid = ga2d_chain_get_segments(w, id, NULL, 0) > 0;
+    fsw_guard_begin(s, &gd);
+    r = ga2d_chain_destroy(w, id);
+    FSW_TRACE((stderr, "chain destroy %u (valid %d): %s\n", id.index1, valid, ga2d_result_string(r)));
+    if (b->alloc.failures != gd.failures) s->pending_oom = 1;
+    FUZZ_CHECK(r == (valid ? GA2D_OK : GA2D_ERR_STALE_ID));
+    fsw_guard_end(s, &gd, r);
+    if (r != GA2D_OK) return;
+    FUZZ_CHECK(ga2d_chain_get_segments(w, id, NULL, 0) == 0);
+    for (i = 0; c && i < c->n; ++i) FUZZ_CHECK(!ga2d_shape_is_valid(w, c->segments[i]));
+}
+
+/* -------------------------------------------------------------- bodies */
+/* A body with no shape: shapes come later. */
+static void fsw_create_bare(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    ga2d_body_def d = ga2d_default_body_def();
+    unsigned k = fz_u8(&b->rd);
+    long failures = b->alloc.failures;
+    ga2d_body_id id;
+    d.type = k % 3 == 0 ? GA2D_BODY_STATIC : k % 3 == 1 ? GA2D_BODY_KINEMATIC : GA2D_BODY_DYNAMIC;
+    d.position = fw_vec(b, 4, 0);
+    if (k & 4) d.velocity = fw_vec(b, 2, 0);
+    if (k & 8) d.rotor = ga2d_rotor_from_angle(fw_val(b, 4, 0));
+    d.is_awake = (k & 16) ? 0 : 1;
+    if (b->nids == FW_MAX_IDS) return;
+    id = ga2d_body_create(b->w, &d);
+    FSW_TRACE((stderr, "bare body type %d -> %u\n", (int)d.type, id.index1));
+    FUZZ_CHECK(!ga2d_body_id_is_null(id) || b->alloc.failures != failures);
+    if (ga2d_body_id_is_null(id)) return;
+    FUZZ_CHECK(ga2d_body_get_shapes(b->w, id, NULL, 0) == 0);
+    b->ids[b->nids++] = id;
+}
+
+/* After a rollback a new body may take an id the harness saw before (its
+   slot's generation came back): one entry per id. */
+static void fsw_dedupe_bodies(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    int i, j;
+    for (i = 0; i < b->nids; ++i)
+        for (j = i + 1; j < b->nids; ++j)
+            if (ga2d_body_id_equal(b->ids[i], b->ids[j])) {
+                b->ids[j--] = b->ids[--b->nids];
+            }
+}
+
+/* After a rollback: what the lost future made is gone, and its ids will be
+   handed out again to other shapes, chains and bodies; the harness forgets
+   them (ids stale before the checkpoint go too). */
+static void fsw_forget_stale(fsw_state *s)
+{
+    ga2d_world *w = s->base.w;
+    int i;
+    for (i = 0; i < s->nshapes; ++i)
+        if (!ga2d_shape_is_valid(w, s->shapes[i].id)) s->shapes[i--] = s->shapes[--s->nshapes];
+    for (i = 0; i < s->nchains; ++i)
+        if (ga2d_chain_get_segments(w, s->chains[i].id, NULL, 0) == 0) s->chains[i--] = s->chains[--s->nchains];
+    for (i = 0; i < s->norphans; ++i)
+        if (!ga2d_shape_is_valid(w, s->orphans[i])) s->orphans[i--] = s->orphans[--s->norphans];
+    for (i = 0; i < s->base.nids; ++i)
+        if (!ga2d_body_is_valid(w, s->base.ids[i])) s->base.ids[i--] = s->base.ids[--s->base.nids];
+}
+
+/* ------------------------------------------------------------ snapshots */
+/* Another world like this one (its def; an allocator that never fails). */
+static ga2d_world *fsw_twin(fsw_state *s, fz_alloc *a, fsw_cb *cb)
+{
+    ga2d_world_def d = s->def;
+    ga2d_world *t;
+    memset(a, 0, sizeof *a);
+    memset(cb, 0, sizeof *cb);
+    fz_alloc_attach(a, &d);
+    d.pre_solve_context = cb;
+    t = ga2d_world_create(&d);
+    FUZZ_CHECK(t != NULL);
+    if (!t) return NULL;
+    FUZZ_CHECK(ga2d_world_set_force_callback(t, s->field_on ? fw_field : NULL, &s->base) == GA2D_OK);
+    cb->w = t;
+    cb->mode = s->cb.mode;
+    return t;
+}
+
+/* Save, load into a twin, save again: the same bytes; then the same steps
+   in both: the same results and the same bytes. */
+static void fsw_replay(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    fsw_buf s1, s2;
+    fz_alloc ta;
+    fsw_cb tcb;
+    ga2d_world *t;
+    int steps = 1 + fz_pick(&b->rd, 3), i, same = 1;
+    long failures = b->alloc.failures;
+    memset(&s1, 0, sizeof s1);
+    memset(&s2, 0, sizeof s2);
+    if (s->base.work > FW_WORK_BUDGET / 2 || !fsw_save(b->w, &s1)) {
+        free(s1.p);
+        return;
+    }
+    t = fsw_twin(s, &ta, &tcb);
+    if (t) {
+        ga2d_result r = ga2d_world_snapshot_load(t, s1.p, s1.n);
+        FSW_TRACE((stderr, "replay: load %s, %d steps\n", ga2d_result_string(r), steps));
+        if (r == GA2D_ERR_BAD_SNAPSHOT && fsw_may_refuse(s)) {
+            ga2d_world_destroy(t);
+            free(s1.p);
+            return;
+        }
+        FUZZ_CHECK(r == GA2D_OK);
+        FUZZ_CHECK(fsw_save(t, &s2) && fsw_same(&s1, &s2));
+        for (i = 0; i < steps && r == GA2D_OK; ++i) {
+            ga2d_real dt = (ga2d_real)(fz_u8(&b->rd) < 200 ? 1.0 / 60 : 1.0 / 240);
+            ga2d_result r1, r2;
+            if (!fsw_step_dt(s, dt, &r1)) {
+                same = 0;
+                break;
+            }
+            r2 = ga2d_world_step(t, dt);
+            FSW_TRACE((stderr, "replay step: %s / %s\n", ga2d_result_string(r1), ga2d_result_string(r2)));
+            if (b->alloc.failures != failures) same = 0;
+            if (same) FUZZ_CHECK(r1 == r2 || (r1 == GA2D_ERR_OUT_OF_MEMORY && s->pending_oom));
+        }
+        if (same && b->alloc.failures == failures && fsw_save(b->w, &s1)) FUZZ_CHECK(fsw_save(t, &s2) && fsw_same(&s1, &s2));
+        ga2d_world_destroy(t);
+        FUZZ_CHECK(ta.live_bytes == 0 && ta.live_blocks == 0);
+    }
+    free(s1.p);
+    free(s2.p);
+}
+
+/* A checkpoint: saved here, or loaded back (the world then saves to the
+   same bytes, and its sensors' pairs are what it holds). */
+static void fsw_checkpoint(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    if (fz_u8(&b->rd) < 128 || s->ckpt.n == 0) {
+        if (!fsw_save(b->w, &s->ckpt)) s->ckpt.n = 0;
+        s->ckpt_refusable = fsw_may_refuse(s);
+        s->ckpt_substeps = b->substeps;
+        s->ckpt_rk4 = b->rk4;
+        s->ckpt_passes = b->passes;
+        FSW_TRACE((stderr, "checkpoint saved: %zu bytes\n", s->ckpt.n));
+    } else {
+        fsw_guard gd;
+        ga2d_result r;
+        fsw_guard_begin(s, &gd);
+        r = ga2d_world_snapshot_load(b->w, s->ckpt.p, s->ckpt.n);
+        FSW_TRACE((stderr, "rollback: %s\n", ga2d_result_string(r)));
+        /* the world's own snapshot loads, unless memory runs out */
+        FUZZ_CHECK(r == GA2D_OK || r == GA2D_ERR_OUT_OF_MEMORY || (r == GA2D_ERR_BAD_SNAPSHOT && s->ckpt_refusable));
+        fsw_guard_end(s, &gd, r);
+        if (r == GA2D_OK) {
+            fsw_buf again;
+            memset(&again, 0, sizeof again);
+            if (fsw_save(b->w, &again)) FUZZ_CHECK(fsw_same(&again, &s->ckpt));
+            free(again.p);
+            s->pending_oom = 0;
+            b->substeps = s->ckpt_substeps;
+            b->rk4 = s->ckpt_rk4;
+            b->passes = s->ckpt_passes;
+            fsw_forget_stale(s);
+            fsw_resync(s);
+        }
+    }
+}
+
+/* A world's own snapshot loads into a fresh world of its def and saves to
+   the same bytes. */
+static void fsw_round_trip(fsw_state *s)
+{
+    fsw_buf s1, s2;
+    fz_alloc ta;
+    fsw_cb tcb;
+    ga2d_world *t;
+    memset(&s1, 0, sizeof s1);
+    memset(&s2, 0, sizeof s2);
+    if (fsw_save(s->base.w, &s1) && (t = fsw_twin(s, &ta, &tcb)) != NULL) {
+        ga2d_result r = ga2d_world_snapshot_load(t, s1.p, s1.n);
+        FSW_TRACE((stderr, "round trip: %zu bytes, load %s\n", s1.n, ga2d_result_string(r)));
+        FUZZ_CHECK(r == GA2D_OK || (r == GA2D_ERR_BAD_SNAPSHOT && fsw_may_refuse(s)));
+        if (r == GA2D_OK) FUZZ_CHECK(fsw_save(t, &s2) && fsw_same(&s1, &s2));
+        ga2d_world_destroy(t);
+        FUZZ_CHECK(ta.live_bytes == 0 && ta.live_blocks == 0);
+    }
+    free(s1.p);
+    free(s2.p);
+}
+
+/* -------------------------------------------------------------- queries */
+static void fsw_queries(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    ga2d_world *w = b->w;
+    ga2d_shape_id list[FSW_SCRATCH];
+    ga2d_contact_data cd[8];
+    int i, j, n;
+    fw_queries(b);
+    {
+        ga2d_sensor_events se = ga2d_world_sensor_events(w);
+        FUZZ_CHECK(se.begin_count >= 0 && se.end_count >= 0);
+    }
+    for (i = 0; i < s->nshapes; ++i) {
+        const fsw_shape *e = &s->shapes[i];
+        if (ga2d_shape_is_valid(w, e->id)) {
+            ga2d_aabb box = ga2d_shape_fat_aabb(w, e->id);
+            FUZZ_CHECK(ga2d_body_is_valid(w, e->body) && ga2d_body_id_equal(ga2d_shape_body(w, e->id), e->body));
+            FUZZ_CHECK((int)ga2d_shape_get_type(w, e->id) == e->type && (int)ga2d_shape_geometry(w, e->id).type == e->type);
+            FUZZ_CHECK(fz_finite_vec(box.lower) && fz_finite_vec(box.upper) && box.lower.x <= box.upper.x &&
+                       box.lower.y <= box.upper.y);
+        } else {
+            /* stale: the getters read zero, the setters refuse */
+            FUZZ_CHECK(ga2d_body_id_is_null(ga2d_shape_body(w, e->id)) && ga2d_shape_get_type(w, e->id) == GA2D_SHAPE_TYPE_COUNT);
+            FUZZ_CHECK(ga2d_shape_user_data(w, e->id) == NULL);
+            FUZZ_CHECK(ga2d_shape_set_friction(w, e->id, 1) == GA2D_ERR_STALE_ID);
+            FUZZ_CHECK(ga2d_shape_get_sensor_overlaps(w, e->id, list, FSW_SCRATCH) == 0);
+        }
+    }
+    for (i = 0; i < b->nids; ++i) {
+        n = ga2d_body_get_shapes(w, b->ids[i], list, FSW_SCRATCH);
+        FUZZ_CHECK(n >= 0 && (n == 0 || ga2d_body_is_valid(w, b->ids[i])));
+        for (j = 0; j < n && j < FSW_SCRATCH; ++j)
+            FUZZ_CHECK(ga2d_shape_is_valid(w, list[j]) && ga2d_body_id_equal(ga2d_shape_body(w, list[j]), b->ids[i]));
+    }
+    for (i = 0; i < s->nchains; ++i) {
+        const fsw_chain *c = &s->chains[i];
+        n = ga2d_chain_get_segments(w, c->id, list, FSW_SCRATCH);
+        FUZZ_CHECK(n == 0 || (n == c->n && ga2d_body_is_valid(w, c->body)));
+        for (j = 0; j < n; ++j) FUZZ_CHECK(ga2d_shape_id_equal(list[j], c->segments[j]));
+    }
+    n = ga2d_world_get_contacts(w, cd, 8);
+    for (i = 0; i < n && i < 8; ++i) {
+        FUZZ_CHECK(ga2d_body_id_equal(ga2d_shape_body(w, cd[i].shape_a), cd[i].body_a));
+        FUZZ_CHECK(ga2d_body_id_equal(ga2d_shape_body(w, cd[i].shape_b), cd[i].body_b));
+        FUZZ_CHECK(cd[i].shape_a.index1 < cd[i].shape_b.index1);
+    }
+}
+
+/* ------------------------------------------------------------ one input */
+static int fuzz_shape_world_one(const uint8_t *data, size_t size)
+{
+    fsw_state *s = (fsw_state *)calloc(1, sizeof(fsw_state));
+    fw_state *b;
+    ga2d_world_def d;
+    ga2d_result valid;
+    int i, n, ops = 0;
+    unsigned k;
+    (void)fuzz_world_one; /* fuzz_world.h's entry: not this harness's */
+    if (!s) return 0;
+    b = &s->base;
+    fz_init(&b->rd, data, size);
+    d = fw_world_def(b);
+    /* what shapes brought to the world def */
+    k = fz_u8(&b->rd);
+    if (k & 1) {
+        d.pre_solve = fsw_pre_solve;
+        d.pre_solve_context = &s->cb;
+    }
+    if (k & 2) d.hit_event_threshold = (k & 4) ? fz_real(&b->rd, 1) : fz_narrow((double)fz_u8(&b->rd) / 32);
+    s->cb.mode = (int)((k >> 3) % 3);
+    s->cb.probe = (k >> 5) & 1;
+    s->cb.s = s;
+    valid = ga2d_world_def_validate(&d);
+    b->w = ga2d_world_create(&d);
+    FSW_TRACE((stderr, "world: pre-solve %d mode %d probe %d hit threshold %g: %s\n", d.pre_solve != NULL, s->cb.mode,
+               s->cb.probe, (double)d.hit_event_threshold, ga2d_result_string(valid)));
+    if (!b->w) {
+        FUZZ_CHECK(valid != GA2D_OK || b->alloc.failures > 0);
+        FUZZ_CHECK(b->alloc.live_bytes == 0 && b->alloc.live_blocks == 0);
+        free(s);
+        return 0;
+    }
+    FUZZ_CHECK(valid == GA2D_OK);
+    s->cb.w = b->w;
+    s->def = d;
+    s->has_pre_solve = d.pre_solve != NULL;
+    s->field_on = d.force_callback != NULL;
+    s->hit_threshold = d.hit_event_threshold != 0 ? d.hit_event_threshold : (ga2d_real)GA2D_DEFAULT_HIT_EVENT_THRESHOLD;
+    b->substeps = d.substeps ? d.substeps : 4;
+    b->units = d.length_units_per_meter > 0 ? (double)d.length_units_per_meter : 1;
+    b->passes = d.solver == GA2D_SOLVER_SOFT_STEP ? 2
+                : (d.velocity_iterations ? d.velocity_iterations : 8) + (d.position_iterations ? d.position_iterations : 3);
+    if (b->passes < 2) b->passes = 2;
+    b->rk4 = d.integrator == GA2D_INTEGRATOR_RK4;
+
+    n = fz_pick(&b->rd, 12);
+    for (i = 0; i < n; ++i) {
+        if (fz_u8(&b->rd) & 1) fw_create(b);
+        else fsw_create_bare(s);
+    }
+    while (fz_more(&b->rd) && ops++ < FSW_MAX_OPS) {
+        int op = fz_pick(&b->rd, 40);
+        long failures = b->alloc.failures;
+        if (op < 8) fsw_step(s);
+        else if (op < 10) {
+            if (op == 8) fw_create(b);
+            else fsw_create_bare(s);
+            fsw_dedupe_bodies(s);
+        } else if (op < 16) fsw_shape_create(s);
+        else if (op < 18) fsw_shape_destroy(s);
+        else if (op < 20) fsw_shape_set(s);
+        else if (op < 22) fsw_chain_create(s);
+        else if (op == 22) fsw_chain_destroy(s);
+        else if (op < 30) {
+            int bop = fz_pick(&b->rd, 15);
+            fw_body_op(b, bop);
+            if (bop == 13 && b->alloc.failures != failures) s->pending_oom = 1; /* a destruction's end events */
+            if (bop == 3) s->mass_set = 1;
+        } else if (op < 32) {
+            int wop = fz_pick(&b->rd, 8);
+            /* fw_world_op's 8th sets the force callback by its next byte's bit 4 */
+            if (wop == 7) s->field_on = b->rd.i < b->rd.n && ((b->rd.p[b->rd.i] >> 4) & 1);
+            fw_world_op(b, wop);
+        }
+        else if (op == 32) fsw_queries(s);
+        else if (op == 33) fsw_round_trip(s);
+        else if (op == 34) fsw_checkpoint(s);
+        else if (op == 35) fsw_replay(s);
+        else if (op == 36) {
+            unsigned m = fz_u8(&b->rd);
+            s->cb.mode = (int)(m % 3);
+            s->cb.probe = (m >> 2) & 1;
+        } else if (op == 37) {
+            /* one of the next few allocations fails (whichever call makes it) */
+            b->alloc.fail_at = b->alloc.attempts + 1 + fz_pick(&b->rd, 4);
+        } else fsw_shape_create(s);
+    }
+    /* a couple of ordinary steps, the queries, a round trip */
+    for (i = 0; i < 2; ++i) {
+        ga2d_result r;
+        (void)fsw_step_dt(s, (ga2d_real)(1.0 / 60), &r);
+    }
+    fsw_queries(s);
+    fsw_round_trip(s);
+    ga2d_world_destroy(b->w);
+    /* every byte back, each block freed with its own size */
+    FUZZ_CHECK(b->alloc.live_bytes == 0 && b->alloc.live_blocks == 0);
+    free(s->ckpt.p);
+    free(s);
+    return 0;
+}
+
+#endif
