@@ -3162,13 +3162,14 @@ typedef struct ga2d__body_sim {
    sum over its shapes (ga2d__shape).  The solver's view of it is
    ga2d__sbody, with the solver. */
 typedef struct ga2d__body {
-    ga2d__body_sim sim;
-    /* book-keeping */
+    /* what the per-body stages test, beside the state they read */
     int type;                    /* ga2d_body_type; -1 for a free slot */
     int awake;
+    int move_index;              /* index in world->moving, or -1 */
+    ga2d__body_sim sim;
+    /* book-keeping */
     uint32_t generation;
     int next_free;
-    int move_index;              /* index in world->moving, or -1 */
     int contact_head;            /* first (oldest) link of its contact list, or -1 */
     int contact_tail;            /* last (newest) link, or -1 */
     int shape_head, shape_tail;  /* its shapes in creation order (ga2d__shape.next), or -1 */
@@ -5893,6 +5894,7 @@ struct ga2d__contact_constraint {
     int hits;                    /* a shape reports hits: the points' approach speeds are kept */
     ga2d_real tangent_speed;     /* the surfaces' sliding along (ny, -nx): friction's target */
     ga2d_real rolling;           /* the largest torque impulse per unit normal impulse: c r */
+    int needs_extras;            /* round, conveyor or rolling: its group needs extras */
     ga2d__cpoint p[2];
 };
 
@@ -6029,6 +6031,11 @@ struct ga2d__group_extra {
 
 struct ga2d__group {
     int a[GA2D__LANES], b[GA2D__LANES];
+    /* beside the body slots, which every pass reads first */
+    int round;              /* a lane has a round shape: rax.. are core anchors, x->o.. what lies along n */
+    int conveyor;           /* a lane has a tangent speed (x->tspeed) */
+    int rolling;            /* a lane has rolling resistance (x->rr, rmass, rimp) */
+    int extras;             /* x's fields are written (ga2d__lane_extras) */
     int con[GA2D__LANES];       /* the lane's constraint, -1 in an empty lane */
     ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
     int count;              /* lanes in use */
@@ -6042,10 +6049,6 @@ struct ga2d__group {
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
     ga2d__group_extra *x;   /* its extras while any lane of the step needs them, else NULL */
-    int extras;             /* x's fields are written (ga2d__lane_extras) */
-    int round;              /* a lane has a round shape: rax.. are core anchors, x->o.. what lies along n */
-    int conveyor;           /* a lane has a tangent speed (x->tspeed) */
-    int rolling;            /* a lane has rolling resistance (x->rr, rmass, rimp) */
 };
 
 /* A soft constraint seen by an implicit step (ga2d__make_soft). */
@@ -6186,6 +6189,7 @@ static void ga2d__constraint_extras(ga2d_world *w, const ga2d__contact *ct, ga2d
     /* rolling resistance: the larger coefficient at the rolling radius (a
        round side's; none between sharp shapes) */
     cc->rolling = (rra > rrb ? rra : rrb) * (cc->round_a > cc->round_b ? cc->round_a : cc->round_b);
+    cc->needs_extras = cc->round_a != 0 || cc->round_b != 0 || cc->tangent_speed != 0 || cc->rolling != 0;
 }
 
 /* Stage, over the constraints: each takes its contact's normal, material
@@ -6213,7 +6217,7 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->to_static = cc->inv_ma == 0 || cc->inv_mb == 0;
         cc->count = ct->manifold.count;
         cc->round_a = cc->round_b = cc->tangent_speed = cc->rolling = 0;
-        cc->hits = 0;
+        cc->hits = cc->needs_extras = 0;
         if (ct->extras) ga2d__constraint_extras(w, ct, cc);
         /* anchors from the centres, taken from the origin-relative ones so
            that no large coordinates are subtracted */
@@ -6490,14 +6494,14 @@ static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, ga2d__wmask 
    as `adjust`.  The anchors now are the midpoint's: rA' + e/2 and that
    less d. */
 static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2d__wbody *A, const ga2d__wbody *B,
-                                          ga2d__wanchors *r)
+                                          ga2d__wanchors *r, int extras)
 {
     ga2d__w ra1x = ga2d__wsub(ga2d__wmul(A->qc, g->rax[k]), ga2d__wmul(A->qs, g->ray[k]));
     ga2d__w ra1y = ga2d__wadd(ga2d__wmul(A->qs, g->rax[k]), ga2d__wmul(A->qc, g->ray[k]));
     ga2d__w rb1x = ga2d__wsub(ga2d__wmul(B->qc, g->rbx[k]), ga2d__wmul(B->qs, g->rby[k]));
     ga2d__w rb1y = ga2d__wadd(ga2d__wmul(B->qs, g->rbx[k]), ga2d__wmul(B->qc, g->rby[k]));
     ga2d__w dx = ga2d__wadd(g->dx, ga2d__wsub(B->dpx, A->dpx)), dy = ga2d__wadd(g->dy, ga2d__wsub(B->dpy, A->dpy));
-    if (g->round) { /* the radii along n, which do not turn (ga2d__point_now) */
+    if (extras && g->round) { /* the radii along n, which do not turn (ga2d__point_now) */
         ra1x = ga2d__wadd(ra1x, g->x->oax[k]);
         ra1y = ga2d__wadd(ra1y, g->x->oay[k]);
         rb1x = ga2d__wadd(rb1x, g->x->obx[k]);
@@ -6507,7 +6511,7 @@ static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2
     ga2d__w half = ga2d__wsplat(GA2D__R(0.5));
     r->ax = ga2d__wadd(ra1x, ga2d__wmul(ex, half));
     r->ay = ga2d__wadd(ra1y, ga2d__wmul(ey, half));
-    if (g->round) { /* along the surfaces, the round side's point */
+    if (extras && g->round) { /* along the surfaces, the round side's point */
         ga2d__w en = ga2d__wdot(ex, ey, g->nx, g->ny);
         r->ax = ga2d__wadd(r->ax, ga2d__wmul(g->x->tw, ga2d__wsub(ex, ga2d__wmul(en, g->nx))));
         r->ay = ga2d__wadd(r->ay, ga2d__wmul(g->x->tw, ga2d__wsub(ey, ga2d__wmul(en, g->ny))));
@@ -6618,32 +6622,41 @@ static GA2D__HOT void ga2d__wblock(const ga2d__group *g, const ga2d__w *inv_a, c
     lambda[1] = ga2d__wsel(both, b2, l2);
 }
 
+/* One group's accumulated impulses applied again at its anchors now
+   (`extras` as in ga2d__solve_group). */
+static GA2D__HOT void ga2d__warm_group(ga2d__step_context *c, const ga2d__group *g, int extras)
+{
+    ga2d__wbody A, B, A0, B0;
+    int k;
+    ga2d__wload(c->sbodies, g->a, &A);
+    ga2d__wload(c->sbodies, g->b, &B);
+    A0 = A;
+    B0 = B;
+    for (k = 0; k < 2; ++k) {
+        ga2d__wanchors r;
+        /* tangent (ny, -nx) */
+        ga2d__w px = ga2d__wadd(ga2d__wmul(g->nx, g->nimp[k]), ga2d__wmul(g->ny, g->timp[k]));
+        ga2d__w py = ga2d__wsub(ga2d__wmul(g->ny, g->nimp[k]), ga2d__wmul(g->nx, g->timp[k]));
+        ga2d__wpoint_now(g, k, &A, &B, &r, extras);
+        ga2d__wapply(g, &A, &B, &r, px, py);
+    }
+    if (extras && g->rolling) { /* the rolling resistance's, as the points' */
+        A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, g->x->rimp));
+        B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, g->x->rimp));
+    }
+    ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
+    ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+}
+
 /* Stage, over the groups: each point's accumulated impulses applied again
    at its anchors now. */
 static void ga2d__warm_start(ga2d__step_context *c, int begin, int end)
 {
-    int gi, k;
+    int gi;
     for (gi = begin; gi < end; ++gi) {
         const ga2d__group *g = &c->groups[gi];
-        ga2d__wbody A, B, A0, B0;
-        ga2d__wload(c->sbodies, g->a, &A);
-        ga2d__wload(c->sbodies, g->b, &B);
-        A0 = A;
-        B0 = B;
-        for (k = 0; k < 2; ++k) {
-            ga2d__wanchors r;
-            /* tangent (ny, -nx) */
-            ga2d__w px = ga2d__wadd(ga2d__wmul(g->nx, g->nimp[k]), ga2d__wmul(g->ny, g->timp[k]));
-            ga2d__w py = ga2d__wsub(ga2d__wmul(g->ny, g->nimp[k]), ga2d__wmul(g->nx, g->timp[k]));
-            ga2d__wpoint_now(g, k, &A, &B, &r);
-            ga2d__wapply(g, &A, &B, &r, px, py);
-        }
-        if (g->rolling) { /* the rolling resistance's, as the points' */
-            A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, g->x->rimp));
-            B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, g->x->rimp));
-        }
-        ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
-        ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+        if (g->extras) ga2d__warm_group(c, g, 1);
+        else ga2d__warm_group(c, g, 0);
     }
 }
 
@@ -6655,82 +6668,107 @@ enum { GA2D__BIAS_NONE, GA2D__BIAS_SOFT, GA2D__BIAS_BAUMGARTE };
    accumulated within +-mu times the point's normal impulse.  A point still
    apart (separation s > 0) may approach by s in this substep: that is the
    speculative contact that catches fast bodies. */
+/* What a pass's groups share: the bias kind, switches and splatted
+   constants. */
+typedef struct ga2d__pass {
+    int bias_kind, friction, fresh;
+    ga2d__w zero, one, winv_h, low, slop, nslop, baumgarte;
+} ga2d__pass;
+
+/* One group's pass; `extras` (a constant where it is inlined) leaves a
+   polygon world's groups without the round, conveyor and rolling code. */
+static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, int extras)
+{
+    const ga2d__w zero = ps->zero, one = ps->one;
+    const int bias_kind = ps->bias_kind, fresh = ps->fresh;
+    ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
+    ga2d__wbody A, B, A0, B0;
+    ga2d__wanchors r[2];
+    ga2d__w inv_a[2], own[2], lambda[2];
+    int k;
+    ga2d__wload(c->sbodies, g->a, &A);
+    ga2d__wload(c->sbodies, g->b, &B);
+    A0 = A;
+    B0 = B;
+    for (k = 0; k < 2; ++k) {
+        ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k], extras);
+        ga2d__wmask apart = ga2d__wgt(s, zero);
+        ga2d__w bias = zero, mass_scale = one, impulse_scale = zero;
+        if (bias_kind == GA2D__BIAS_SOFT) {
+            bias = ga2d__wmul(g->soft_rate, s);
+            bias = ga2d__wsel(ga2d__wgt(ps->low, bias), ps->low, bias);
+            mass_scale = ga2d__wsel(apart, one, g->soft_mass);
+            impulse_scale = ga2d__wsel(apart, zero, g->soft_impulse);
+        } else if (bias_kind == GA2D__BIAS_BAUMGARTE) {
+            bias = ga2d__wmul(ps->baumgarte, ga2d__wadd(s, ps->slop));
+            bias = ga2d__wsel(ga2d__wgt(ps->low, bias), ps->low, bias);
+            bias = ga2d__wsel(ga2d__wgt(ps->nslop, s), bias, zero);
+        }
+        bias = ga2d__wsel(apart, ga2d__wmul(s, ps->winv_h), bias);
+        if (fresh) g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
+        /* the point's own update (its impulse alone, unclamped) and
+           its share of the coupling, both in the point's own scale */
+        inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
+        own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny), bias)),
+                                            ga2d__wmul(impulse_scale, g->nimp[k])));
+    }
+    if (fresh) g->k12 = ga2d__wcoupling(g, r);
+    ga2d__wblock(g, inv_a, own, lambda);
+    for (k = 0; k < 2; ++k) {
+        g->nimp[k] = ga2d__wadd(g->nimp[k], lambda[k]);
+        ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda[k]), ga2d__wmul(g->ny, lambda[k]));
+    }
+    for (k = 0; ps->friction && k < 2; ++k) {
+        ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty), dt, cap, total;
+        if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
+        if (fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
+        dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
+        cap = ga2d__wmul(g->friction, g->nimp[k]);
+        total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
+        dt = ga2d__wsub(total, g->timp[k]);
+        g->timp[k] = total;
+        ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, dt), ga2d__wmul(ty, dt));
+    }
+    if (extras && g->rolling) {
+        /* rolling resistance: a torque impulse against the bodies'
+           relative spin, accumulated within +-c r times the normal
+           impulse (the points' sum) */
+        ga2d__w cap = ga2d__wmul(g->x->rr, ga2d__wadd(g->nimp[0], g->nimp[1]));
+        ga2d__w dl = ga2d__wsub(zero, ga2d__wmul(g->x->rmass, ga2d__wsub(B.w, A.w)));
+        ga2d__w total = ga2d__wclamp(ga2d__wadd(g->x->rimp, dl), ga2d__wsub(zero, cap), cap);
+        dl = ga2d__wsub(total, g->x->rimp);
+        g->x->rimp = total;
+        A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, dl));
+        B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, dl));
+    }
+    ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
+    ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+}
+
 static void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int bias_kind)
 {
     ga2d_world *w = c->world;
     ga2d_real inv_h = c->inv_h, push = w->def.contact_push_max_velocity * w->def.length_units_per_meter;
-    const ga2d__w zero = ga2d__wsplat(0), one = ga2d__wsplat(1), winv_h = ga2d__wsplat(inv_h);
-    const ga2d__w low = ga2d__wsplat(-push), slop = ga2d__wsplat(w->slop), nslop = ga2d__wsplat(-w->slop);
-    const ga2d__w baumgarte = ga2d__wsplat(GA2D__R(0.2) * inv_h);
-    int gi, k, friction = w->def.enable_friction;
+    ga2d__pass ps;
+    int gi;
+    ps.bias_kind = bias_kind;
+    ps.friction = w->def.enable_friction;
     /* NGS moves bodies by up to 0.2 m a pass, so a point's anchors can end
        far from where its masses were computed; the masses must follow, or
        an impulse several times too large for its lever arm is applied and
        the passes diverge (deep overlaps of small bodies reached NaN) */
-    int fresh = w->def.solver == GA2D_SOLVER_PGS_NGS;
+    ps.fresh = w->def.solver == GA2D_SOLVER_PGS_NGS;
+    ps.zero = ga2d__wsplat(0);
+    ps.one = ga2d__wsplat(1);
+    ps.winv_h = ga2d__wsplat(inv_h);
+    ps.low = ga2d__wsplat(-push);
+    ps.slop = ga2d__wsplat(w->slop);
+    ps.nslop = ga2d__wsplat(-w->slop);
+    ps.baumgarte = ga2d__wsplat(GA2D__R(0.2) * inv_h);
     for (gi = begin; gi < end; ++gi) {
         ga2d__group *g = &c->groups[gi];
-        ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
-        ga2d__wbody A, B, A0, B0;
-        ga2d__wanchors r[2];
-        ga2d__w inv_a[2], own[2], lambda[2];
-        ga2d__wload(c->sbodies, g->a, &A);
-        ga2d__wload(c->sbodies, g->b, &B);
-        A0 = A;
-        B0 = B;
-        for (k = 0; k < 2; ++k) {
-            ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k]);
-            ga2d__wmask apart = ga2d__wgt(s, zero);
-            ga2d__w bias = zero, mass_scale = one, impulse_scale = zero;
-            if (bias_kind == GA2D__BIAS_SOFT) {
-                bias = ga2d__wmul(g->soft_rate, s);
-                bias = ga2d__wsel(ga2d__wgt(low, bias), low, bias);
-                mass_scale = ga2d__wsel(apart, one, g->soft_mass);
-                impulse_scale = ga2d__wsel(apart, zero, g->soft_impulse);
-            } else if (bias_kind == GA2D__BIAS_BAUMGARTE) {
-                bias = ga2d__wmul(baumgarte, ga2d__wadd(s, slop));
-                bias = ga2d__wsel(ga2d__wgt(low, bias), low, bias);
-                bias = ga2d__wsel(ga2d__wgt(nslop, s), bias, zero);
-            }
-            bias = ga2d__wsel(apart, ga2d__wmul(s, winv_h), bias);
-            if (fresh) g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
-            /* the point's own update (its impulse alone, unclamped) and
-               its share of the coupling, both in the point's own scale */
-            inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
-            own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny), bias)),
-                                                ga2d__wmul(impulse_scale, g->nimp[k])));
-        }
-        if (fresh) g->k12 = ga2d__wcoupling(g, r);
-        ga2d__wblock(g, inv_a, own, lambda);
-        for (k = 0; k < 2; ++k) {
-            g->nimp[k] = ga2d__wadd(g->nimp[k], lambda[k]);
-            ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda[k]), ga2d__wmul(g->ny, lambda[k]));
-        }
-        for (k = 0; friction && k < 2; ++k) {
-            ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty), dt, cap, total;
-            if (g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
-            if (fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
-            dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
-            cap = ga2d__wmul(g->friction, g->nimp[k]);
-            total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
-            dt = ga2d__wsub(total, g->timp[k]);
-            g->timp[k] = total;
-            ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, dt), ga2d__wmul(ty, dt));
-        }
-        if (g->rolling) {
-            /* rolling resistance: a torque impulse against the bodies'
-               relative spin, accumulated within +-c r times the normal
-               impulse (the points' sum) */
-            ga2d__w cap = ga2d__wmul(g->x->rr, ga2d__wadd(g->nimp[0], g->nimp[1]));
-            ga2d__w dl = ga2d__wsub(zero, ga2d__wmul(g->x->rmass, ga2d__wsub(B.w, A.w)));
-            ga2d__w total = ga2d__wclamp(ga2d__wadd(g->x->rimp, dl), ga2d__wsub(zero, cap), cap);
-            dl = ga2d__wsub(total, g->x->rimp);
-            g->x->rimp = total;
-            A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, dl));
-            B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, dl));
-        }
-        ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
-        ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+        if (g->extras) ga2d__solve_group(c, g, &ps, 1);
+        else ga2d__solve_group(c, g, &ps, 0);
     }
 }
 
@@ -6741,13 +6779,6 @@ static void ga2d__solve_rigid(ga2d__step_context *c, int begin, int end) { ga2d_
 static void ga2d__solve_baumgarte(ga2d__step_context *c, int begin, int end)
 {
     ga2d__solve_contacts(c, begin, end, GA2D__BIAS_BAUMGARTE);
-}
-
-/* Whether a constraint needs a group's extras: a round side, a conveyor
-   or rolling resistance. */
-static int ga2d__constraint_has_extras(const ga2d__contact_constraint *c)
-{
-    return c->round_a != 0 || c->round_b != 0 || c->tangent_speed != 0 || c->rolling != 0;
 }
 
 /* Lane l's fields for round shapes, conveyors and rolling resistance.
@@ -6812,10 +6843,11 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
     /* what only round shapes, conveyors and rolling resistance use: a
        polygon world writes none of it (ga2d__lane_extras) */
-    if (g->extras || ga2d__constraint_has_extras(c)) ga2d__lane_extras(g, l, c, none);
+    int extras = g->extras || c->needs_extras; /* then ga2d__lane_extras writes the anchors */
+    if (extras) ga2d__lane_extras(g, l, c, none);
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
-        if (c->round_a == 0 && c->round_b == 0) {
+        if (!extras) {
             GA2D__LANE(g->rax[k], l) = p->ra.x;
             GA2D__LANE(g->ray[k], l) = p->ra.y;
             GA2D__LANE(g->rbx[k], l) = p->rb.x;
@@ -6915,7 +6947,7 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
         if (g->count == GA2D__LANES) g->skip = gi + 1;
         if (ma) last[cc->a] = gi;
         if (mb) last[cc->b] = gi;
-        extras |= ga2d__constraint_has_extras(cc);
+        extras |= cc->needs_extras;
     }
     c->group_extras_on = extras;
     if (extras && !ga2d__grow(&w->mem, (void **)&c->group_extras, &c->group_extra_capacity, c->group_count,
