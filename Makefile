@@ -33,7 +33,7 @@ EXAMPLES := $(filter-out $(BUILD)/examples/sdl_demo,$(patsubst examples/%.c,$(BU
 all: examples
 examples: $(EXAMPLES)
 
-$(BUILD)/examples/%: examples/%.c $(HEADER) examples/svg_writer.h
+$(BUILD)/examples/%: examples/%.c $(HEADER) $(wildcard examples/*.h)
 	@mkdir -p $(dir $@)
 	gcc -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
 

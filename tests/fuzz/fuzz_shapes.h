@@ -62,7 +62,12 @@
      FG_STRICT_CORNER_CLIP     two-point hulls (capsules, segments) whose
                                cores touch at an end, just past the end
                                of the other's face: one order clips the
-                               contact to nothing.
+                               contact to nothing (an L of two segments
+                               whose incident one stands perpendicular on
+                               the reference face, its touching end a
+                               rounding past the face's end: the side-plane
+                               clip, over a span of that rounding, moves
+                               the end the whole length of the edge).
      FG_STRICT_COLLAPSED_HULL  a polygon smaller than the rounding of its
                                placement in the other's frame (its
                                vertices collapse there) is measured wrongly
@@ -518,7 +523,7 @@ static double fg_seg_dist(fg_d2 p, fg_d2 a, fg_d2 b, fg_d2 *q)
    largest of its faces' separations), with the nearest point when outside. */
 static double fg_point_dist(const fg_core *c, fg_d2 p, fg_d2 *q)
 {
-    int i, inside = c->n >= 3;
+    int i, inside = c->n >= 3, best_interior = 0;
     double best = 1e300, face = -1e300;
     fg_d2 t;
     if (c->n == 1) {
@@ -528,11 +533,22 @@ static double fg_point_dist(const fg_core *c, fg_d2 p, fg_d2 *q)
     for (i = 0; i < (c->n >= 3 ? c->n : 1); ++i) {
         fg_d2 a = c->v[i], b = c->v[(i + 1) % c->n], e = fg_sub(b, a);
         double d = fg_seg_dist(p, a, b, &t), s = fg_cross(e, fg_sub(p, a)) / fg_len(e);
+        double along = fg_dot(fg_sub(p, a), e);
+        int interior = along > 0 && along < fg_dot(e, e);
+        /* the distances of p to a vertex and to the face beside it differ
+           by (the face's reach past p's foot)^2 / (2 d): for a core much
+           smaller than d they tie within d's rounding (a few eps d), and
+           the vertex's direction is off the face's by size / d */
+        double tie = 8 * FZ_EPS * (d + fg_len(p) + fg_len(a) + fg_len(b));
         /* the nearest point of a convex core lies on an edge that faces p
            (p on its outer side): the others' clamped ends can tie with it
-           in rounding and would give another direction */
-        if (d < best && (c->n < 3 || s <= 0)) {
+           in rounding and would give another direction; so can a facing
+           edge's clamped end tie with its neighbour's foot, which wins */
+        int nearer = d < best - tie || (d <= best + tie && interior && !best_interior) ||
+                     (d < best && interior == best_interior);
+        if ((c->n < 3 || s <= 0) && nearer) {
             best = d;
+            best_interior = interior;
             *q = t;
         }
         if (s < 0) inside = 0; /* right of a CCW edge: outside */
@@ -741,6 +757,10 @@ static void fg_dump(const char *what, const ga2d_geometry *g, ga2d_transform x)
         for (i = 0; i < g->as.polygon.count && i < FG_MAXV && i >= 0; ++i)
             fprintf(stderr, "  v (%.9g %.9g) n (%.9g %.9g)\n", (double)g->as.polygon.vertices[i].x,
                     (double)g->as.polygon.vertices[i].y, (double)g->as.polygon.normals[i].x, (double)g->as.polygon.normals[i].y);
+        break;
+    case GA2D_SHAPE_SEGMENT:
+        fprintf(stderr, "  (%.9g %.9g)-(%.9g %.9g)\n", (double)g->as.segment.point1.x, (double)g->as.segment.point1.y,
+                (double)g->as.segment.point2.x, (double)g->as.segment.point2.y);
         break;
     default: {
         const ga2d_chain_segment *c = &g->as.chain_segment;
