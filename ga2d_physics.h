@@ -2657,11 +2657,19 @@ static int ga2d__collide_hulls(const ga2d__hull *hA, const ga2d__hull *hB, ga2d_
         /* fractions clamped to the edge: an incident edge lying wholly past
            a side plane is not extended beyond its own ends */
         if (span > 0) {
-            ga2d_real f_lo = (0 - lower2) / span, f_hi = (upper1 - lower2) / span;
+            ga2d_real f_lo = (0 - lower2) / span, f_hi = (upper1 - lower2) / span, tol = GA2D__R(0.1) * slop;
+            ga2d_vec e = ga2d_vec_sub(v21, v22);
             f_lo = f_lo < 0 ? 0 : (f_lo > 1 ? 1 : f_lo);
             f_hi = f_hi < 0 ? 0 : (f_hi > 1 ? 1 : f_hi);
-            if (lower2 < 0) v_lo = ga2d_vec_add(v22, ga2d_vec_scale(ga2d_vec_sub(v21, v22), f_lo));
-            if (upper2 > upper1) v_hi = ga2d_vec_add(v22, ga2d_vec_scale(ga2d_vec_sub(v21, v22), f_hi));
+            /* an end past a side plane by no more than tol stays where it
+               is when the edge is steeper than the face (it rises more
+               than it runs): clipped, a rounding's overhang would move it
+               up most of the edge (a segment standing on another's end
+               lost its contact in one argument order) */
+            if (lower2 < 0 && !(-lower2 <= tol && GA2D__FABS(ga2d_dot(e, n)) > span))
+                v_lo = ga2d_vec_add(v22, ga2d_vec_scale(e, f_lo));
+            if (upper2 > upper1 && !(upper2 - upper1 <= tol && GA2D__FABS(ga2d_dot(e, n)) > span))
+                v_hi = ga2d_vec_add(v22, ga2d_vec_scale(e, f_hi));
         }
         s_lo = ga2d_dot(ga2d_vec_sub(v_lo, r1), n);
         s_hi = ga2d_dot(ga2d_vec_sub(v_hi, r1), n);

@@ -40,7 +40,6 @@
    test build with -DFUZZ_STRICT, and the inputs kept for them in
    tests/fuzz/regress/ fail.  A fixed finding loses its knob. */
 #ifdef FUZZ_STRICT
-#define FG_STRICT_CORNER_CLIP 1
 #define FG_STRICT_COLLAPSED_HULL 1
 #endif
 

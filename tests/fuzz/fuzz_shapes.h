@@ -56,22 +56,17 @@
    from unit)) S: what two frames' roundings and two slightly non-unit
    rotors can move a point by.  Each bound is derived where it is used.
 
-   Open findings (knobs; FUZZ_STRICT in fuzz_common.h sets both, and their
-   inputs in tests/fuzz/regress/shapes/ then fail): without a knob the
-   harness leaves that pattern's order symmetry unchecked.
-     FG_STRICT_CORNER_CLIP     two-point hulls (capsules, segments) whose
-                               cores touch at an end, just past the end
-                               of the other's face: one order clips the
-                               contact to nothing (an L of two segments
-                               whose incident one stands perpendicular on
-                               the reference face, its touching end a
-                               rounding past the face's end: the side-plane
-                               clip, over a span of that rounding, moves
-                               the end the whole length of the edge).
+   Open finding (a knob; FUZZ_STRICT in fuzz_common.h sets it, and its
+   input in tests/fuzz/regress/shapes/ then fails): without it the harness
+   leaves that pattern's order symmetry unchecked.
      FG_STRICT_COLLAPSED_HULL  a polygon smaller than the rounding of its
                                placement in the other's frame (its
                                vertices collapse there) is measured wrongly
-                               in that order. */
+                               in that order.
+   Fixed findings keep their inputs there: a round point a subnormal
+   distance away (a NaN normal), and two segments whose incident one stands
+   nearly perpendicular on the other's end (clipped to nothing in one
+   order). */
 #ifndef GA2D_FUZZ_SHAPES_H
 #define GA2D_FUZZ_SHAPES_H
 
@@ -786,27 +781,12 @@ static void fg_dump_manifold(const char *what, int k, const ga2d_manifold *m)
 #define FG_DUMP_M(what, k, m) ((void)0)
 #endif
 
-/* The open corner-clipping finding's pattern: a two-vertex hull (a
-   capsule or segment, not a point) on either side and the cores within
-   the collider's face branch (best SAT <= 0.1 slop). */
-static int fg_corner_clip(const fg_side *A, const fg_side *B, const fg_expect *ex)
-{
-    fg_core ca, cb;
-    fg_d2 origin = fg_d(A->x.p);
-    fg_core_of(A->g, A->in, A->x, origin, &ca);
-    fg_core_of(B->g, B->in, B->x, origin, &cb);
-    if (ca.n != 2 && cb.n != 2) return 0;
-    FG_TRACE((stderr, "  corner clip? sat %.9g %.9g\n", fg_sat(&ca, &cb), fg_sat(&cb, &ca)));
-    return fmax(fg_sat(&ca, &cb), fg_sat(&cb, &ca)) <= 0.1 * FG_SLOP * (double)ex->units + 2 * ex->delta;
-}
-
 static void fg_collide(const fg_side *A, const fg_side *B, ga2d_real units)
 {
     ga2d_manifold m1, m2, sentinel, plain;
     fg_expect ex;
     int k1, k2, k, i, xnf, xinv, xmaybe;
     double dp = fg_norm1(ga2d_vec_sub(B->x.p, A->x.p));
-    (void)fg_corner_clip;
     memset(&sentinel, 0x3C, sizeof sentinel);
     memset(&ex, 0, sizeof ex);
     FG_DUMP("A", A->g, A->x);
@@ -921,13 +901,6 @@ static void fg_collide(const fg_side *A, const fg_side *B, ga2d_real units)
            answers promise no symmetry */
         int formed = (A->in->oracle || (int)A->g->type != GA2D_SHAPE_POLYGON) &&
                      (B->in->oracle || (int)B->g->type != GA2D_SHAPE_POLYGON);
-#ifndef FG_STRICT_CORNER_CLIP
-        /* open finding (see the top): a capsule's or segment's hull against
-           another's, cores touching or overlapping (SAT <= 0.1 slop), its
-           end just past the end of the other's face: clipped to nothing in
-           one order */
-        if (formed && (k1 == 0) != (k2 == 0) && fg_corner_clip(A, B, &ex)) formed = 0;
-#endif
 #ifndef FG_STRICT_COLLAPSED_HULL
         /* open finding (see the top): a polygon smaller than the rounding
            of its placement in the other's frame (its vertices collapse
