@@ -1101,7 +1101,10 @@ GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, con
    against anything; up to two for the others.  A capsule or segment whose
    ends coincide collides as a circle; a chain segment only with what is
    on its left (in front), and with normals its joins allow.  Bad input as
-   there, plus a type out of range (INVALID_ARGUMENT). */
+   there, plus a type out of range (INVALID_ARGUMENT).  Sizes and offsets
+   whose squares overflow (past about 1e19 in float, 1e154 in double) are
+   answered without promises of accuracy or of agreement between the two
+   argument orders. */
 GA2D_API int ga2d_collide_shapes(const ga2d_geometry *a, ga2d_transform xa, const ga2d_geometry *b, ga2d_transform xb,
                                  ga2d_manifold *out);
 GA2D_API int ga2d_collide_shapes_scaled(const ga2d_geometry *a, ga2d_transform xa, const ga2d_geometry *b,
@@ -1139,9 +1142,10 @@ typedef struct ga2d_contact_data {
    the last manifold that touched.  Destroying a body ends its contacts
    without an event. */
 /* A hit: a contact with hit events whose points came together faster
-   than the world's hit_event_threshold and pushed: where (the fastest
-   point), the normal (A to B) and the approach speed, for sounds and
-   damage. */
+   than the world's hit_event_threshold and started pushing this step (a
+   point that pushed in the last step is not hit again): where (the
+   fastest point), the normal (A to B) and the approach speed, taken as
+   the step began, for sounds and damage.  One landing, one hit. */
 typedef struct ga2d_contact_hit_event {
     ga2d_shape_id shape_a, shape_b;
     ga2d_vec point, normal;
@@ -2733,6 +2737,19 @@ static int ga2d__collide(const ga2d_polygon *pa, ga2d_transform xa, const ga2d_p
    faces' numbers. */
 #define GA2D__VERTEX_FEATURE 0x80
 
+/* Whether a face no longer lies across its normal: c's distance from the
+   face's line, along its normal (sep) and by the edge e itself (e ^ d / |e|,
+   d from the face's start to c), differ by more than 1e-3 |d|, ten times
+   the tolerance a normal's direction has.  A core far smaller than the
+   rounding of its placement collapses so (its vertices round together,
+   its normals stay): the face would measure c along a direction the edge
+   has lost. */
+static int ga2d__face_collapsed(ga2d_real sep, ga2d_vec e, ga2d_vec d)
+{
+    ga2d_real le = ga2d__length(e);
+    return GA2D__FABS(sep * le + ga2d_wedge(e, d)) > GA2D__R(1e-3) * le * ga2d__length(d);
+}
+
 /* The nearest point q of a hull's core to the point c (both in one
    frame), the unit direction u from q to c (out of the core's face when c
    is inside it, as a polygon's core can hold it), the signed distance d
@@ -2756,10 +2773,10 @@ static ga2d_real ga2d__hull_nearest(const ga2d__hull *h, ga2d_vec c, ga2d_vec *q
     d = ga2d_vec_sub(c, h->v[face]);
     t = ga2d_dot(d, e);
     len2 = ga2d_dot(e, e);
-    if ((best > 0 || h->count < 3) && (t <= 0 || t >= len2)) {
+    if ((best > 0 || h->count < 3) && (t <= 0 || t >= len2 || ga2d__face_collapsed(best, e, d))) {
         /* past an end of the face (a segment's core has no inside, so its
            ends count on its line too): that vertex is nearest */
-        int k = t <= 0 ? face : i2;
+        int k = t <= 0 || (t < len2 && ga2d_dot(d, d) <= ga2d_dot(ga2d_vec_sub(c, h->v[i2]), ga2d_vec_sub(c, h->v[i2]))) ? face : i2;
         ga2d_vec r = ga2d_vec_sub(c, h->v[k]);
         ga2d_real dist = ga2d__length(r);
         *q = h->v[k];
@@ -3927,6 +3944,10 @@ static int ga2d__reuse_manifold(const ga2d_world *w, ga2d__contact *c, const ga2
     ga2d_manifold *m = &c->manifold;
     int k;
     if (!c->touching || !(t.q.c > 0) || !(GA2D__FABS(t.q.s) * reach <= eps)) return 0;
+    /* a round side rolls: where the surfaces meet does not move with the
+       bodies (carried along, a stopped disc's point lagged its bottom and
+       the normal impulse's moment crept it forward) */
+    if (c->extras && (w->shapes[c->shape_a].radius != 0 || w->shapes[c->shape_b].radius != 0)) return 0;
     for (k = 0; k < m->count; ++k) {
         moved[k] = ga2d_vec_sub(ga2d_transform_apply(t, hd->point[k]), hd->point[k]);
         if (!(GA2D__FABS(moved[k].x) <= eps && GA2D__FABS(moved[k].y) <= eps)) return 0;
@@ -6241,7 +6262,11 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
             p->tangent_mass = ga2d__effective_mass(cc, p->ra, p->rb, ga2d__tangent(cc->normal));
             p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
             p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
-            p->approach = cc->hits ? -ga2d_dot(ga2d__relative_velocity(a, b, p->ra, p->rb), cc->normal) : 0;
+            /* a hit is a point that starts pushing: one that carried an
+               impulse from the last step is not hit again (a landing
+               slowed early by the relax pass reported twice) */
+            p->approach = cc->hits && mp->normal_impulse == 0
+                              ? -ga2d_dot(ga2d__relative_velocity(a, b, p->ra, p->rb), cc->normal) : 0;
         }
     }
 }

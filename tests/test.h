@@ -63,6 +63,7 @@ void suite_shape_mass(void);
 void suite_shape_collide(void);
 void suite_shape_world(void);
 void suite_shape_terrain(void);
+void suite_shape_dynamics(void);
 
 #ifdef __cplusplus
 }

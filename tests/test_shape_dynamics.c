@@ -15,12 +15,15 @@
    lines with its measured figures and their bounds. */
 #include "test.h"
 
-/* the suite, for test_main.c (test.h may declare it as well) */
+/* The suite, called from test_main.c.  Declared here with C linkage as
+   test.h declares the others (a second declaration there is harmless). */
 #ifdef __cplusplus
-extern "C"
+extern "C" {
 #endif
-    void
-    suite_shape_dynamics(void);
+void suite_shape_dynamics(void);
+#ifdef __cplusplus
+}
+#endif
 
 #define DT (1.0 / 60)
 #define G 10.0
@@ -150,6 +153,49 @@ static double flight_bound_y(const flight *f)
     return f->ey + 8 * UD * (fabs(f->y0) + j * f->h * fabs(f->v0) + G * f->h * f->h * j * j);
 }
 
+/* Where free flight ends on a surface.  A body falling onto a static
+   surface (a flat face under it, n = (0, 1), no spin) is in free flight
+   until a contact pushes: passes that meet a point still apart apply
+   max(0, ...) = +-0 and change nothing.  With y_j the gap after substep
+   j and v_j its velocity: the soft pass of substep j pushes when the
+   kicked velocity would close the gap y_{j-1} within the substep (y_j <
+   0); the relax pass after drift j when the gap would close within a
+   substep at the same speed (y_j < |v_j| h: it brakes a point still
+   apart as if a substep followed, ga2d__restitute's comment).  Both need
+   the contact to touch, tested at the step's start: a manifold keeps
+   points up to the speculative distance plus what the pair closes in a
+   step, |v| dt (ga2d__collide_contacts).
+   first_push: from f (at a step's start, falling onto a surface `below`
+   under its centre) the step of the first push (0: none in 2000 steps),
+   in *J its substep (counted from f's start).  *margin: how far the
+   deciding quantities (each touching test, each substep's y_j - |v_j| h
+   in a touching step) were from their thresholds, the least of them. */
+static int first_push(flight f, double below, long *J, double *margin)
+{
+    const int nsub = substeps();
+    const double h = sub_h(), dt = (double)(ga2d_real)DT;
+    int k, i;
+    *margin = HUGE_VAL;
+    for (k = 1; k <= 2000; ++k) {
+        double gap = flight_y(&f, f.j) - below, v = flight_v(&f, f.j), spec = GA2D_SPECULATIVE_DISTANCE + fabs(v) * dt;
+        int touching = v <= 0 && gap <= spec;
+        if (v <= 0) *margin = fmin(*margin, fabs(gap - spec));
+        for (i = 0; i < nsub; ++i) {
+            double yj, vj;
+            flight_advance(&f, 1);
+            yj = flight_y(&f, f.j) - below;
+            vj = fabs(flight_v(&f, f.j));
+            if (!touching) continue;
+            *margin = fmin(*margin, fabs(yj - vj * h));
+            if (yj < vj * h) {
+                *J = f.j;
+                return k;
+            }
+        }
+    }
+    return 0;
+}
+
 /* ================================================== 1. rolling resistance
    A solid disc (r = 0.5 m, density 1, friction 0.6 on both sides) rolls
    without slipping on level ground (a static box, its top y = 0) with
@@ -197,16 +243,20 @@ static double flight_bound_y(const flight *f)
    pass's friction zeroes it (to test_shape_world's Q, the lever's travel
    within the step, and rounding), then its resistance changes w by
    dl / I with |dl| = c r |lambda_relax - lambda_soft| <= c r X: so
-   |eps| <= rho c r X / I + 8 u (|vx| + rho |w|) + 8 u K0 mu X (a priori:
-   loose; measured slips are printed).
+   |eps| <= rho c r X / I + Q + 8 u (|vx| + rho |w|) + 8 u K0 mu X
+   + 16 u Y |w| (Q and the lever's rounding 16 u Y |w| as
+   test_shape_world's roll_slip_bound; a priori, so loose: the measured
+   slips are printed).
    (C) With v = -w rho_mid + eps' at the window's ends (eps'_i = vx_i + w_i
    rho_mid, measured), (A) gives exactly
        a = -dVx / T = [rho_mid (c r N + E) / I - (eps'_2 - eps'_1)] / (T (1 + m rho_mid^2 / I)),
    so a differs from a_model = c r rho_mid N / (T (I + m rho_mid^2)) by
    [rho |E| / I + |eps'_2 - eps'_1| + rho |R_A| / I] / (T (1 + m rho^2 / I)),
-   R_A the rounding of (A).  a_model in turn differs from (2/3) c g by
-   what the lever r + s/2 (s the steady overlap) and N / (m T) != g (the
-   centre's vertical motion) make of it, computed.  Window 0.5 .. 1.5 s:
+   R_A the rounding of (A) (T = n h, the time the library stepped).
+   a_model in turn differs from (2/3) c g by what the lever r + s/2 (s the
+   steady overlap: at first order -(2/9) (c g / r) s/2 = (1/9) c g |s| / r)
+   and the load N / (m T) != g (the centre's vertical motion) make of it:
+   the bound adds those two to the one above.  Window 0.5 .. 1.5 s:
    the disc moves more than half a slop every step, so every manifold is
    made anew (counters.manifolds_carried 0, a premise: see
    rolling_disc_stays_at_rest for the carried ones).
@@ -221,7 +271,7 @@ static double flight_bound_y(const flight *f)
 #define RR_R 0.5
 #define RR_V0 3.0
 #define RR_X0 -3.0
-#define RR_STEPS 200
+#define RR_STEPS 210
 
 typedef struct rr_rec {
     double vx, vy, w, cx, cy, s, nimp, timp, nx, ny;
@@ -307,9 +357,9 @@ static void rolling_resistance_decelerates(void)
 {
     static rr_data o;
     const int k1 = 30, k2 = 90, nsub = substeps();
-    const double h = sub_h(), T = (k2 - k1) * DT, n = (double)(k2 - k1) * nsub;
-    double X, rho_lo, rho_hi, rho, dW, dVx, dVy, N, lhs, rhs, E, RA, bA, a, a_model, e1, e2, bC, a_th, bD, xmax = 0, V = 0,
-        W = 0, worst_slip = 0, slip_bound = 0, back = 0, back_bound = 0;
+    const double h = sub_h(), n = (double)(k2 - k1) * nsub, T = n * h;
+    double X, rho_lo, rho_hi, rho, dW, dVx, dVy, N, lhs, rhs, E, RA, bA, a, a_model, e1, e2, bC, a_th, f_lo, f_hi, lever, load_term,
+        bD, xmax = 0, V = 0, W = 0, worst_slip = 0, slip_bound = 0, back = 0, back_bound = 0;
     int k, one = 1, flat = 1, within = 1, load = 1, cone = 1, fresh = 1, capped = 1, forward = 1, ks;
     const rr_rec *r1, *r2;
     rr_run(&o);
@@ -360,8 +410,12 @@ static void rolling_resistance_decelerates(void)
     for (k = k1; k <= k2; k += 15) {
         const rr_rec *r = &o.rec[k];
         double rho_end = RR_R + r->s / 2 + (r->cy - o.rec[k - 1].cy) / 2, slip = r->vx + r->w * rho_end;
-        double K0 = 1 / o.m + rho_end * rho_end / o.I;
-        double b = rho_end * o.c * RR_R * X / o.I + 8 * U * (fabs(r->vx) + rho_end * fabs(r->w)) + 8 * U * K0 * o.mu * X;
+        double rho0 = RR_R + r->s / 2, K0 = 1 / o.m + rho0 * rho0 / o.I, Ke = 1 / o.m + rho_end * rho_end / o.I;
+        double push = (double)ga2d_default_world_def().contact_push_max_velocity;
+        double Q = fabs(1 - Ke / K0) * (G * h + K0 * o.mu * X + fabs(r->w) * h * push / 2);
+        double Y = fabs(r->cy + 0.5) + 0.5 + RR_R;
+        double b = rho_end * o.c * RR_R * X / o.I + Q + 8 * U * (fabs(r->vx) + rho_end * fabs(r->w)) + 8 * U * K0 * o.mu * X +
+                   16 * U * Y * fabs(r->w);
         CHECK_NEAR(slip, 0, b);
         worst_slip = fmax(worst_slip, fabs(slip));
         slip_bound = b;
@@ -372,8 +426,19 @@ static void rolling_resistance_decelerates(void)
     e2 = r2->vx + r2->w * rho;
     a_model = o.c * RR_R * rho * N / (T * (o.I + o.m * rho * rho));
     bC = (rho * (E + RA) / o.I + fabs(e2 - e1)) / (T * (1 + o.m * rho_lo * rho_lo / o.I)) + 4 * U * a;
+    CHECK_NEAR(a, a_model, bC);
+    /* against (2/3) c g: f(rho) = c g r rho / (I/m + rho^2) is a_model at
+       N = m g T; over [rho_lo, rho_hi] it is monotone (its turning point
+       is at rho = sqrt(I/m) = 0.35 m), so the lever costs at most its
+       value at an end less f(r) = (2/3) c g; the load N / (m T) differs
+       from g by (dVy + g (n h - T)) / T with n h = T here, so by dVy / T:
+       that much of f, relatively. */
     a_th = 2.0 / 3.0 * o.c * G;
-    bD = fabs(a_model - a_th) + bC;
+    f_lo = o.c * G * RR_R * rho_lo / (o.I / o.m + rho_lo * rho_lo);
+    f_hi = o.c * G * RR_R * rho_hi / (o.I / o.m + rho_hi * rho_hi);
+    lever = fmax(fabs(f_lo - a_th), fabs(f_hi - a_th));
+    load_term = fmax(f_lo, f_hi) * fabs(dVy) / (G * T);
+    bD = lever + load_term + bC;
     CHECK_NEAR(a, a_th, bD);
     /* (D) the stop */
     {
@@ -387,7 +452,11 @@ static void rolling_resistance_decelerates(void)
         CHECK(fabs(o.rec[ks].w) * RR_R < a_th * h);
         for (k = 1; k <= ks + 60; ++k) {
             double dx = o.rec[k].cx - o.rec[k - 1].cx;
-            double b = 2 * nsub * U * (fabs(o.rec[k].cx) + fabs(o.rec[k].vx) * h);
+            /* rounding; and once it has stopped, the stop's settling: the
+               substep that stops it can overshoot by its own deceleration,
+               a h, which the soft contact and the rolling cap take back
+               within the step: a backward move of at most a h DT a step */
+            double b = 2 * nsub * U * (fabs(o.rec[k].cx) + fabs(o.rec[k].vx) * h) + (k > last_rolling ? a_th * h * DT : 0);
             CHECK(dx >= -b);
             if (dx < back) back = dx;
             back_bound = fmax(back_bound, b);
@@ -400,9 +469,9 @@ static void rolling_resistance_decelerates(void)
         printf("shape_dynamics: rolling resistance slip vx + w rho_end at most %.3g m/s (a priori bound %.3g); rho %.9f..%.9f "
                "(s %.3g m)\n",
                worst_slip, slip_bound, rho_lo, rho_hi, r2->s);
-        printf("shape_dynamics: rolling resistance a %.9f m/s^2 vs (2/3) c g %.9f: %+.3g (bound %.3g = model's offset %.3g "
-               "[c r rho N/(T(I + m rho^2)) %.9f] + %.3g); vs the model %+.3g\n",
-               a, a_th, a - a_th, bD, fabs(a_model - a_th), a_model, bC, a - a_model);
+        printf("shape_dynamics: rolling resistance a %.9f m/s^2 vs c r rho N/(T(I + m rho^2)) %.9f: %+.3g (bound %.3g); "
+               "vs (2/3) c g %.9f: %+.3g (bound %.3g = lever r + s/2 %.3g [(1/9) c g |s|/r %.3g] + load %.3g + %.3g)\n",
+               a, a_model, a - a_model, bC, a_th, a - a_th, bD, lever, o.c * G * fabs(r2->s) / (9 * RR_R), load_term, bC);
         printf("shape_dynamics: rolling resistance stop: t_s %.4f s; at step %d v %+.3g m/s, w r %+.3g m/s (bound a h %.3g); "
                "worst backward step %.3g m (bound %.3g)\n",
                RR_V0 / a_th, ks, o.rec[ks].vx, o.rec[ks].w * RR_R, a_th * h, back, back_bound);
@@ -418,20 +487,34 @@ static void rolling_resistance_decelerates(void)
    r X (rho + c r)/I; over the step's 8 passes (two a substep) that is
        |vx|, |w| r <= 64 u X / m   (X / m = 2 g h, and r^2 m / I = 2),
    and the centre then moves by at most n_sub (h 64 u X/m + u |x|) a step.
-   Checked over 1 s from one step after t_s.
+   Checked over 1 s from 10 steps after t_s + dt (the stop itself leaves a
+   slip, -1e-4 m/s, that each pass takes a third of: (2/3)^80 of it is
+   left 10 steps later).
 
-   FAILS (left out of the suite): a manifold carried along
+   Still left out of the suite, as a known limit: the creep described
+   below is fixed (a round side's manifold is no longer carried along), and
+   the disc now settles: in float inside these bounds; in double |v|
+   reaches 5.5e-13 m/s 10..70 steps after the stop (it is 6.7e-56 at the
+   end), above the 64 u X / m = 5.9e-16 here: the stop leaves a slower
+   mode than the per-pass third assumed above (the soft contact's own
+   settling, not derived yet).
+
+   What failed before the fix: a manifold carried along
    (ga2d__reuse_manifold: the pair moved under half a slop since its
    manifold was made) puts the point midway between the anchors carried
    with the bodies, so a disc's point lags its bottom by half of what the
    disc moved since; the normal impulse's moment about the centre, lambda
    dx / 2, then turns the disc, the resistance takes the turn out, and
-   friction and resistance settle at a slip: the stored v is -1.7e-6 m/s
-   in float and double (64 u X / m: 3e-7 and 1e-15), and in double the
-   disc creeps forward, at 2e-5 m/s growing (the lag grows with the
-   creep), until it has moved half a slop and its manifold is made anew.
-   Within a step ga2d__point_now keeps a round side's point at its
-   surface; the carried manifold does not. */
+   friction and resistance settle at a slip: the stored v is -1.76e-6 m/s
+   in float and double (64 u X / m: 3.2e-7 and 5.9e-16) while the centre
+   creeps forward by 3.2e-7 m a step (1.9e-5 m/s; bound 9e-8 and 2e-16),
+   faster as the lag grows with the creep (in double: 2.4 mm in 70 s,
+   when the disc has moved half a slop and its manifold is made anew; the
+   lag, the point's x less the centre's, read from the contact: -0.7 mm
+   at 9 s, -1.8 mm at 70 s).  Within a step ga2d__point_now keeps a round
+   side's point at its surface along n; the carried manifold does not
+   (and it turns the point with the disc, lifting it by r (1 - cos), the
+   other thing point_now's comment avoids). */
 static void rolling_disc_stays_at_rest(void)
 {
     static rr_data o;
@@ -442,15 +525,16 @@ static void rolling_disc_stays_at_rest(void)
     rr_run(&o);
     X = rr_x(&o);
     bv = 64 * U * X / o.m;
-    for (k = ks; k <= ks + 60 && k <= RR_STEPS; ++k) {
+    CHECK(ks + 70 <= RR_STEPS);
+    for (k = ks + 10; k <= ks + 70 && k <= RR_STEPS; ++k) {
         const rr_rec *r = &o.rec[k];
         double b = nsub * (h * bv + U * fabs(r->cx));
         ok_v &= fabs(r->vx) <= bv;
         ok_w &= fabs(r->w) * RR_R <= bv;
-        if (k > ks) ok_x &= fabs(r->cx - o.rec[k - 1].cx) <= b;
+        ok_x &= fabs(r->cx - o.rec[k - 1].cx) <= b;
         worst_v = fmax(worst_v, fabs(r->vx));
         worst_w = fmax(worst_w, fabs(r->w) * RR_R);
-        if (k > ks) worst_dx = fmax(worst_dx, fabs(r->cx - o.rec[k - 1].cx));
+        worst_dx = fmax(worst_dx, fabs(r->cx - o.rec[k - 1].cx));
         bx = fmax(bx, b);
     }
     CHECK(ok_v);
@@ -459,7 +543,7 @@ static void rolling_disc_stays_at_rest(void)
     if (verbose())
         printf("shape_dynamics: disc at rest after the stop: |v| up to %.3g m/s, |w| r %.3g (bound %.3g); centre moves up to %.3g m "
                "a step (bound %.3g); v at the end %+.3g m/s\n",
-               worst_v, worst_w, bv, worst_dx, bx, o.rec[ks + 60].vx);
+               worst_v, worst_w, bv, worst_dx, bx, o.rec[ks + 70].vx);
 }
 
 /* ================================================ 2. pre-solve callbacks
@@ -513,7 +597,8 @@ static int same_manifold(const ga2d_manifold *a, const ga2d_manifold *b)
    enable_pre_solve_events) dropped onto a floor (a static box 4 x 1 m, top
    y = 0.5) falls through it in free flight, exactly: every step its
    centre and velocity match flight_y / flight_v to flight_bound (the
-   declined contact makes no constraint: counters.constraint_count is 0),
+   declined contact makes no constraint: counters.constraint_count is 1
+   every step, the resting box's below),
    so at t = 1 s it is at y0 - g t (t + h)/2, the continuous y0 - g t^2/2
    less symplectic Euler's lag g t h / 2 (printed).  Every step in which
    the pair touches (ga2d_world_get_contacts lists it after the step) the
@@ -563,8 +648,8 @@ static void presolve_declines_a_floor(void)
             }
         touching_steps += touching;
         calls_match &= L.step_calls == touching;
-        /* the resting box's contact is the only constraint there may be */
-        unsolved &= ga2d_world_get_counters(w).constraint_count <= 1;
+        /* the resting box's contact is the one constraint */
+        unsolved &= ga2d_world_get_counters(w).constraint_count == 1;
         {
             ga2d_vec c = ga2d_body_center(w, box), v = ga2d_body_velocity(w, box);
             double ey = fabs((double)c.y - flight_y(&f, f.j)), ev = fabs((double)v.y - flight_v(&f, f.j));
@@ -608,14 +693,16 @@ static void presolve_declines_a_floor(void)
    (constraint_count 0), so up to the landing step every step is free
    flight to flight_bound: in particular while the box is inside the
    platform's slab it is never pushed down (nor up).  The landing step is
-   the first whose free flight would take the bottom below the top
-   (computed from flight_y); the box then rests on the platform: after 1.5 s
-   its bottom is within [top - slop, top], its x still 0 and its speed at
-   the level of rounding on a resting contact (two points solved as a
-   block by the relax pass with the masses of the same anchors, so both
-   points' normal speeds end at 0 to rounding: |v| <= 64 u X/m, X = 2 m g h
-   as in 1b, and likewise |w| times the half width).  The callback was
-   called in the passage steps, naming the platform's shape and the box's. */
+   first_push's, from the first step that starts falling (premise: its
+   decisions 1e-5 m or more from their thresholds).  The box then rests
+   on the platform: after 1.5 s its bottom is within [top - slop, top],
+   its x still 0 and its speed at the level of rounding on a resting
+   contact (two points solved as a block by the relax pass with the
+   masses of the very anchors it measures at, so both points' normal
+   speeds end at 0 to rounding: |v| <= 64 u X/m, X = 2 m g h as in 1b,
+   and likewise |w| times the half width).  The callback was called in
+   the passage steps, naming the platform's shape and the box's, and every
+   one of those steps solved no constraint. */
 static void presolve_one_way_platform(void)
 {
     ga2d_world_def wd = ga2d_default_world_def();
@@ -647,22 +734,25 @@ static void presolve_one_way_platform(void)
     L.named = L.manifolds = 1;
     L.allow = 1;
     flight_start(&f, (double)ga2d_body_center(w, box).y, (double)ga2d_body_velocity(w, box).y);
-    /* the landing step: the first (after the apex) whose free flight ends with the bottom below the top */
+    /* the landing step: first_push from the first step that starts falling */
     {
         flight g = f;
-        for (k = 1; k < 200 && land < 0; ++k) {
+        long J;
+        double margin;
+        int k0 = 0;
+        while (flight_v(&g, g.j) > 0 && k0 < 200) {
             flight_advance(&g, substeps());
-            if (flight_v(&g, g.j) < 0 && flight_y(&g, g.j) - half < top) land = k;
+            ++k0;
         }
-        CHECK(land > 0);
-        /* the bottom clears the decision by far more than rounding */
-        CHECK(flight_y(&g, g.j) - half < top - 1e-3);
-        CHECK(flight_y(&g, g.j - substeps()) - half > top + 1e-3);
+        k = first_push(g, top + half, &J, &margin);
+        CHECK(k > 0);
+        land = k0 + k;
+        CHECK(margin >= 1e-5); /* every decision clear of rounding */
     }
     for (k = 1; k <= land + 90; ++k) {
         ga2d_vec c, v;
         int before = L.calls;
-        double below_top = (double)ga2d_body_center(w, box).y - half < top;
+        int below_top = (double)ga2d_body_center(w, box).y - half < top;
         step(w);
         flight_advance(&f, substeps());
         c = ga2d_body_center(w, box);
@@ -708,41 +798,43 @@ static void presolve_one_way_platform(void)
 
 /* ============================================================ 3. hit events
    A box (0.5 m, restitution 0, its shape with enable_hit_events unless
-   said) dropped from rest with its bottom H = 1.1 m above the ground (a
-   static box, top y = 0).  Until something pushes, it is in free flight
-   (flight_*: y_j the gap after substep j, v_j its velocity).  A hit is
-   reported (ga2d__hit_events) for a contact whose approach speed at the
-   step's start (-v.n over its points, taken when the constraints are
-   made) beats the threshold and whose point pushed (its normal impulse
-   after the step > 0).  The first push: the soft pass of substep j pushes
-   when the kicked velocity would close the gap y_{j-1} within the
-   substep (y_j < 0), the relax pass after drift j when the drifted gap
-   would close within a substep at the same speed (y_j < |v_j| h: it
-   brakes a point still apart as if a substep followed, ga2d__restitute's
-   comment); whichever comes first, in substep J of step ceil(J / n_sub).
-   Its approach speed is the speed at that step's start, |v_(n_sub (k-1))|,
-   to flight_bound_v plus the dot product's 4 u |v|.
+   said) dropped from rest with its bottom H above the ground (a static
+   box, top y = 0).  A hit is reported (ga2d__hit_events) for a contact
+   whose approach speed at the step's start (-v.n over its points, taken
+   when the constraints are made) beats the threshold and whose point
+   pushed (its normal impulse after the step > 0).  So the hit comes in
+   the step of the first push (first_push, from the exact free flight),
+   with the speed at that step's start, |v_(n_sub (k-1))|, to
+   flight_bound_v plus the dot product's 4 u |v|; premise: every deciding
+   quantity of first_push is 1e-5 m or more from its threshold, far above
+   flight_bound_y (1e-6 m).
    Against free fall: the discrete flight keeps (|v| + g h/2)^2 + 2 g y =
    (g h/2)^2 + 2 g H (symplectic Euler's modified energy), and at the hit
    step's start the gap lies in [0, d_max), d_max = |v| dt + 10 g h^2 + |v|
-   h (what a step and a braking substep close), so the approach speed lies
+   h (if the step before touched without pushing, its last gap was at
+   least |v| h >= 0, else above the speculative 0.02 m plus |v| dt, more
+   than that step closes; and a push at substep J <= n_sub needs y_J <
+   |v_J| h, what a step and a braking substep close), so the approach
+   speed lies
    in [sqrt((g h/2)^2 + 2 g (H - d_max)) - g h/2, sqrt(2 g H)]: within about
    g dt + g h of sqrt(2 g H) (the contact begins at most a step before the
    impact), checked as that interval widened by the rounding.
-   The event names the ground's shape (A) and the box's, its normal points
-   from A to B, (0, 1) to 4 u, and its point, the manifold's, lies midway
-   between the surfaces at the step's start: x within the bottom face's
-   [-0.25, 0.25], y the gap / 2, both to the rounding of the gap
-   (flight_bound_y) and 8 u (H + 1) for the collider's arithmetic.
-   H = 1.1 puts the first push inside a step (J not a step's last
-   substep): see landing_reports_one_hit for the other case.
-   Cases: threshold 0 (which means 1 m/s): one hit, in the predicted step,
-   over 1.5 s; the predicted approach less 1e-3 m/s: one hit; plus 1e-3
-   m/s: none (1e-3 is far above the approach's rounding bound, a premise
-   checked); the box's shape without hit events: none. */
+   The event names the ground's shape (A, made first) and the box's, its
+   normal points from A to B, (0, 1) to 4 u, and its point, the
+   manifold's, lies midway between the surfaces at the step's start: x
+   within the bottom face's [-0.25, 0.25], y the gap / 2, both to the
+   rounding of the gap (flight_bound_y) and 8 u (H + 1) for the collider's
+   arithmetic.
+   H = 1.2 puts the first push inside a step (J not a step's last
+   substep, a premise checked): see landing_reports_one_hit for the other
+   case.  Cases: threshold 0 (which means 1 m/s): one hit, in the
+   predicted step, over 1.5 s; the predicted approach less 1e-3 m/s: one
+   hit; plus 1e-3 m/s: none (1e-3 is more than 10 times the approach's
+   rounding bound, a premise checked); the box's shape without hit events:
+   none. */
 typedef struct hit_pred {
     int step, J;
-    double approach, gap, bv, by, lo, hi;
+    double approach, gap, bv, by, lo, hi, margin;
 } hit_pred;
 
 static void hit_predict(double H, hit_pred *p)
@@ -752,23 +844,19 @@ static void hit_predict(double H, hit_pred *p)
     flight f;
     long J = 0;
     memset(p, 0, sizeof *p);
-    flight_start(&f, H, 0);
-    while (J == 0 && f.j < 100000) {
-        flight_advance(&f, 1);
-        if (flight_y(&f, f.j) < fabs(flight_v(&f, f.j)) * h || flight_y(&f, f.j) < 0) J = f.j;
-    }
+    flight_start(&f, (double)(ga2d_real)(H + 0.25), 0);
+    p->step = first_push(f, 0.25, &J, &p->margin);
     p->J = (int)J;
-    p->step = (int)((J + nsub - 1) / nsub);
-    flight_start(&f, H, 0);
     flight_advance(&f, (p->step - 1) * nsub);
     p->approach = fabs(flight_v(&f, f.j));
-    p->gap = flight_y(&f, f.j);
+    p->gap = flight_y(&f, f.j) - 0.25;
     p->bv = flight_bound_v(&f) + 4 * U * p->approach;
     p->by = flight_bound_y(&f);
     {
-        double vmax = sqrt(2 * G * H) + G * h, dmax = vmax * DT + 10 * G * h * h + vmax * h;
-        p->lo = sqrt(G * G * h * h / 4 + 2 * G * (H - dmax)) - G * h / 2;
-        p->hi = sqrt(2 * G * H);
+        /* H as the library has it: the centre rounded to ga2d_real */
+        double Hl = f.y0 - 0.25, vmax = sqrt(2 * G * Hl) + G * h, dmax = vmax * DT + 10 * G * h * h + vmax * h;
+        p->lo = sqrt(G * G * h * h / 4 + 2 * G * (Hl - dmax)) - G * h / 2;
+        p->hi = sqrt(2 * G * Hl);
     }
 }
 
@@ -808,14 +896,16 @@ static int hit_run(double H, double threshold, int flag, ga2d_contact_hit_event 
 
 static void hit_events_on_landing(void)
 {
-    const double H = 1.1, margin = 1e-3;
+    const double H = 1.2, margin = 1e-3;
     hit_pred p;
     ga2d_contact_hit_event e;
     ga2d_shape_id gs, bs;
     int at = -1, hits;
     hit_predict(H, &p);
+    CHECK(p.step > 0);
     CHECK(p.J % substeps() != 0); /* the premise: the first push falls inside a step */
-    CHECK(margin > 100 * p.bv);
+    CHECK(p.margin >= 1e-5);
+    CHECK(margin > 10 * p.bv);
     CHECK(p.approach > 1 + margin); /* the default threshold is below it */
     /* threshold 0 (1 m/s) */
     memset(&e, 0, sizeof e);
@@ -847,17 +937,19 @@ static void hit_events_on_landing(void)
     CHECK(hits == 0);
 }
 
-/* 3b. The same drop from every H of a sweep (0.5 .. 1.5 m, 137 heights):
-   one landing, one hit.  FAILS (left out of the suite) for the heights
-   whose first push is the relax pass of a step's last substep (J a
-   multiple of n_sub, about a quarter of them): that pass brakes the box
-   while it is still apart (a speculative point, y_J < |v_J| h), its
-   normal impulse is positive at the step's end, and a hit is reported
-   with the speed at the step's start; the next step the box, still
-   approaching at y_J / h, touches and pushes, and a second hit is
-   reported with that speed (4.10 m/s after 5.00 from H = 1.3626; 24 of
-   137 heights in float).  Checked: exactly one hit, in the predicted step,
-   for every height. */
+/* 3b. The same drop from every H of a sweep (0.5 .. 1.5 m in steps of
+   7.31 mm, the heights whose first_push decisions are 1e-5 m or more from
+   their thresholds: 136 of 137): one landing, one hit, in the predicted
+   step.  It failed, before the header counted a hit only for a point
+   that starts pushing (one that carried no impulse from the last step),
+   for the heights whose first push was the relax pass of a step's last substep (J a multiple of n_sub: 31
+   of them): that pass brakes the box while it is still apart (a
+   speculative point, y_J < |v_J| h), the normal impulse is positive at the
+   step's end, and a hit is reported, rightly placed, with the speed at
+   the step's start; the next step the box, still approaching at y_J / h,
+   touches and pushes, and a second hit is reported with that speed
+   whenever it beats the threshold (24 of the 31, float and double alike;
+   from H = 1.36258: 5.00 m/s at step 31, then 4.10 m/s at step 32). */
 static void landing_reports_one_hit(void)
 {
     int i, wrong = 0, last_bad = 0, n = 0;
@@ -869,6 +961,7 @@ static void landing_reports_one_hit(void)
         ga2d_shape_id gs, bs;
         int at = -1, hits;
         hit_predict(H, &p);
+        if (p.margin < 1e-5) continue; /* too close to a decision to predict */
         hits = hit_run(H, 0, 1, &e, &at, &gs, &bs);
         ++n;
         if (hits != 1 || at != p.step) {
@@ -898,8 +991,9 @@ static void landing_reports_one_hit(void)
    checked on every manifold), so each x part is +-0 and adding it is
    exact: vx stays 5 bit for bit.  Whatever the normals, the bound is
        |vx - 5| <= n_sub k (u |vx| + max|n.x| X / m) per step, summed,
-   k = 12 applications a substep (warm start, soft and relax passes, two
-   points, up to two contacts), X = 2 m g h: with max |n.x| = 0, exact.
+   k = 10 applications a substep per contact touching (each of its two
+   points: the warm start, and the soft and relax passes' normal and
+   friction), X = 2 m g h: with max |n.x| = 0, exact.
 
    Vertical speed.  At a step's end the relax pass has just solved the
    contact's point(s) without bias: a ball's one point (or the two
@@ -918,7 +1012,7 @@ static void landing_reports_one_hit(void)
    (left out of the suite: it fails, see there).  Here the box's vy is
    printed. */
 typedef struct loop_result {
-    int exact, normals_exact, crossed;
+    int exact, normals_exact, crossed, contacts_max;
     double vy_max, w_max, nx_max, x_max, dvx, bvx, bvy;
 } loop_result;
 
@@ -963,13 +1057,14 @@ static void loop_run(int ball, loop_result *res)
         v = ga2d_body_velocity(w, b);
         nc = ga2d_world_get_contacts(w, c, 4);
         CHECK(nc >= 1 && nc <= 4);
+        if (nc > res->contacts_max) res->contacts_max = nc;
         for (j = 0; j < nc && j < 4; ++j) {
             res->nx_max = fmax(res->nx_max, fabs((double)c[j].manifold.normal.x));
             res->normals_exact &= c[j].manifold.normal.x == 0 && c[j].manifold.normal.y == 1;
         }
         res->exact &= v.x == 5;
         res->dvx = fmax(res->dvx, fabs((double)v.x - 5));
-        res->bvx += substeps() * 12 * (U * fabs((double)v.x) + res->nx_max * X / m);
+        res->bvx += substeps() * 10 * nc * (U * fabs((double)v.x) + res->nx_max * X / m);
         res->vy_max = fmax(res->vy_max, fabs((double)v.y));
         res->w_max = fmax(res->w_max, fabs((double)ga2d_body_angular_velocity(w, b)));
         res->x_max = fmax(res->x_max, fabs((double)ga2d_body_center(w, b).x));
@@ -991,25 +1086,31 @@ static void bodies_slide_a_chain_loop(void)
         if (res.nx_max == 0) CHECK(res.exact);
         if (ball) CHECK(res.vy_max <= res.bvy);
         if (verbose())
-            printf("shape_dynamics: %s slides a 100-segment loop across 25 joins: vx 5 exactly every step %d (|dvx| %.3g, "
-                   "bound %.3g; max |n.x| %.3g); max |vy| %.3g m/s (rounding bound %.3g%s), max |w| %.3g rad/s\n",
-                   ball ? "ball" : "box", res.exact, res.dvx, res.bvx, res.nx_max, res.vy_max, res.bvy,
+            printf("shape_dynamics: %s slides a 100-segment loop across 25 joins (up to %d contacts): vx 5 exactly every step %d "
+                   "(|dvx| %.3g, bound %.3g; max |n.x| %.3g); max |vy| %.3g m/s (rounding bound %.3g%s), max |w| %.3g rad/s\n",
+                   ball ? "ball" : "box", res.contacts_max, res.exact, res.dvx, res.bvx, res.nx_max, res.vy_max, res.bvy,
                    ball ? "" : ", not checked here", res.w_max);
     }
 }
 
 /* 4b. The box's vy across the joins against the rounding bound above.
    FAILS (left out of the suite): the box's vy reaches 2.4e-5 m/s (and w
-   2.4e-5 rad/s), in float and in double alike, against 1.3e-8 (float)
-   and 2.4e-17 (double): not rounding.  It is the solver's approximation,
-   not the joins' alone: on one long segment (no joins) the same slide
-   keeps a steady vy of -2.4e-6 and w of -1e-5 (the relax pass measures
-   the points' speeds at the moved midpoints, v dt / 2 = 4 cm from the
-   anchors the step's masses were made with, so its 2 x 2 solve leaves a
-   residual); at the joins the box stands on two contacts (two segments)
-   solved one after the other in the one relax pass, and the residual
-   grows as the load moves from one to the other (a point's impulse
-   reaching 0, every metre). */
+   2.4e-5 rad/s), in float and in double alike, against the bound's
+   3.2e-7 (float) and 5.9e-16 (double): not rounding.  Nor the joins'
+   alone: on one long segment (a lone ga2d_segment, no joins) or one
+   static box the same slide keeps a steady vy of -2.4e-6 m/s and w of
+   -1e-5 rad/s in double, growing as v^2 (2.6e-8, 1.0e-7, 4.1e-7, 2.4e-6
+   m/s at 0.5, 1, 2, 5 m/s): a residual of the soft step's relax pass for
+   a sliding box, likely because it measures the points' speeds at the
+   midpoints of anchors that slid apart within the step (v dt / 2 = 4 cm
+   at 5 m/s) while its 2 x 2 block uses the masses made from the step's
+   starting anchors (they are refreshed only under PGS_NGS).  At the
+   joins the box stands on two or three contacts (segments) solved one
+   after another in the one relax pass, and the residual grows to 2.4e-5
+   as the load moves from one to the next (once a metre, a point's
+   impulse reaching 0).  Whether that is a defect or the accepted
+   accuracy of the soft step is the library's call; the bound here is
+   rounding's, as asked. */
 static void box_slides_loop_at_rounding(void)
 {
     loop_result res;
@@ -1030,14 +1131,13 @@ void suite_shape_dynamics(void)
     test_run("shape_dynamics: hit events: one on landing at the discrete free-fall speed, none above the threshold",
              hit_events_on_landing);
     test_run("shape_dynamics: a box and a ball slide a chain loop across its joins keeping vx exactly", bodies_slide_a_chain_loop);
+    test_run("shape_dynamics: one landing, one hit, from every height", landing_reports_one_hit);
 #ifdef GA2D_TEST_KNOWN_BUGS
-    /* library bugs and solver limits, described at each: they fail */
-    test_run("shape_dynamics: known bug: a disc stopped by rolling resistance stays at rest", rolling_disc_stays_at_rest);
-    test_run("shape_dynamics: known bug: one landing, one hit, from every height", landing_reports_one_hit);
+    /* solver limits, described at each: they fail */
+    test_run("shape_dynamics: known limit: a disc stopped by rolling resistance at rest to rounding", rolling_disc_stays_at_rest);
     test_run("shape_dynamics: known limit: a box's vy across chain joins at rounding level", box_slides_loop_at_rounding);
 #else
     (void)rolling_disc_stays_at_rest;
-    (void)landing_reports_one_hit;
     (void)box_slides_loop_at_rounding;
 #endif
 }

@@ -10,7 +10,7 @@
 #   make fuzz                      every harness, 60 s each
 #   make fuzz FUZZ_SECONDS=600     longer
 #   make fuzz FUZZ_ONLY=world      one harness (or a list)
-#   make fuzz FUZZ_ONLY=shapes FUZZ_EXTRA=-DFUZZ_STRICT   open findings checked too
+#   make fuzz FUZZ_EXTRA=-DFUZZ_VERBOSE   extra flags (after make fuzz-clean)
 #   make fuzz-build                build only
 
 FUZZ_SECONDS ?= 60

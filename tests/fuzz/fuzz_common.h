@@ -33,16 +33,6 @@
         if (!(cond)) FUZZ_FAIL(__FILE__, __LINE__, #cond);     \
     } while (0)
 
-/* Findings still open in the header: each harness steps round them unless
-   its knob is set (listed at its top), so that fuzzing goes on past them
-   and `make test` passes while they wait for a fix.  FUZZ_STRICT sets them
-   all: make fuzz FUZZ_EXTRA=-DFUZZ_STRICT (after make fuzz-clean), or a
-   test build with -DFUZZ_STRICT, and the inputs kept for them in
-   tests/fuzz/regress/ fail.  A fixed finding loses its knob. */
-#ifdef FUZZ_STRICT
-#define FG_STRICT_COLLAPSED_HULL 1
-#endif
-
 #ifdef GA2D_DOUBLE
 #define FZ_EPS ((double)DBL_EPSILON)
 #define FZ_REAL_MAX ((double)DBL_MAX)

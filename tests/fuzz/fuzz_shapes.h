@@ -56,17 +56,13 @@
    from unit)) S: what two frames' roundings and two slightly non-unit
    rotors can move a point by.  Each bound is derived where it is used.
 
-   Open finding (a knob; FUZZ_STRICT in fuzz_common.h sets it, and its
-   input in tests/fuzz/regress/shapes/ then fails): without it the harness
-   leaves that pattern's order symmetry unchecked.
-     FG_STRICT_COLLAPSED_HULL  a polygon smaller than the rounding of its
-                               placement in the other's frame (its
-                               vertices collapse there) is measured wrongly
-                               in that order.
-   Fixed findings keep their inputs there: a round point a subnormal
-   distance away (a NaN normal), and two segments whose incident one stands
-   nearly perpendicular on the other's end (clipped to nothing in one
-   order). */
+   Findings, each fixed and its input kept in tests/fuzz/regress/shapes/:
+   a round point a subnormal distance away (a NaN normal); two segments
+   whose incident one stands nearly perpendicular on the other's end
+   (clipped to nothing in one order); a polygon smaller than the rounding
+   of its placement in the other's frame (its vertices collapse there,
+   its normals stay: measured against a circle along a face that had lost
+   its direction). */
 #ifndef GA2D_FUZZ_SHAPES_H
 #define GA2D_FUZZ_SHAPES_H
 
@@ -709,10 +705,21 @@ static void fg_oracle(const fg_side *A, const fg_side *B, const fg_expect *ex, i
         FUZZ_CHECK(fabs((double)m->points[0].separation - gap) <= 2 * d);
         if (sd > 64 * d) {
             /* from the core to the point, turned to run from A to B; off by
-               the position error over the distance, plus the rotor's */
+               the position error over the distance, plus the rotor's; and
+               by the face-or-vertex choice: the foot's place along a face
+               is t / L (t = d . e, d from the face's start to the point,
+               e the edge), and with d and e each off by the frames'
+               rounding (delta, 2 delta) it is off by up to 2 delta |d| / L
+               + delta: a foot that near an end may be taken for the end,
+               whose direction is off by that over sd (|d| ~ sd): 2 delta / L
+               + delta / sd, L the core's shortest edge */
+            double emin = 1e300;
+            int j;
+            for (j = 0; j < other->n && other->n >= 2; ++j)
+                emin = fmin(emin, fg_len(fg_sub(other->v[(j + 1) % other->n], other->v[j])));
             u = fg_scale(fg_sub(pt->v[0], q), 1 / sd);
             if (pt == &ca) u = fg_scale(u, -1);
-            FUZZ_CHECK(fg_len(fg_sub(fg_d(m->normal), u)) <= 4 * d / sd + ex->ndev + 64 * FZ_EPS);
+            FUZZ_CHECK(fg_len(fg_sub(fg_d(m->normal), u)) <= 5 * d / sd + 2 * d / emin + ex->ndev + 64 * FZ_EPS);
         }
         return;
     }
@@ -901,14 +908,10 @@ static void fg_collide(const fg_side *A, const fg_side *B, ga2d_real units)
            answers promise no symmetry */
         int formed = (A->in->oracle || (int)A->g->type != GA2D_SHAPE_POLYGON) &&
                      (B->in->oracle || (int)B->g->type != GA2D_SHAPE_POLYGON);
-#ifndef FG_STRICT_COLLAPSED_HULL
-        /* open finding (see the top): a polygon smaller than the rounding
-           of its placement in the other's frame (its vertices collapse
-           there) is measured wrongly in that order */
-        if (((int)A->g->type == GA2D_SHAPE_POLYGON && !(A->in->extent > 1e3 * ex.delta)) ||
-            ((int)B->g->type == GA2D_SHAPE_POLYGON && !(B->in->extent > 1e3 * ex.delta)))
-            formed = 0;
-#endif
+        /* and sizes whose squares the collider can form (its edge and
+           offset lengths squared: beyond sqrt of the real range they
+           overflow, and the header promises nothing there) */
+        if (!(ex.S <= 1e-3 * sqrt(FZ_REAL_MAX))) formed = 0;
         if (formed && (k1 == 0) != (k2 == 0)) {
             const ga2d_manifold *mm = k1 ? &m1 : &m2;
             double s = (double)mm->points[fg_min_point(mm)].separation;
