@@ -2776,8 +2776,9 @@ static ga2d_real ga2d__hull_nearest(const ga2d__hull *h, ga2d_vec c, ga2d_vec *q
     if ((best > 0 || h->count < 3) && (t <= 0 || t >= len2 || ga2d__face_collapsed(best, e, d))) {
         /* past an end of the face (a segment's core has no inside, so its
            ends count on its line too): that vertex is nearest */
-        int k = t <= 0 || (t < len2 && ga2d_dot(d, d) <= ga2d_dot(ga2d_vec_sub(c, h->v[i2]), ga2d_vec_sub(c, h->v[i2]))) ? face : i2;
-        ga2d_vec r = ga2d_vec_sub(c, h->v[k]);
+        ga2d_vec d2 = ga2d_vec_sub(c, h->v[i2]);
+        int k = t <= 0 || (t < len2 && ga2d_dot(d, d) <= ga2d_dot(d2, d2)) ? face : i2;
+        ga2d_vec r = k == face ? d : d2;
         ga2d_real dist = ga2d__length(r);
         *q = h->v[k];
         *feature = GA2D__VERTEX_FEATURE | k;

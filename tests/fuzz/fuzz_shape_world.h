@@ -117,8 +117,6 @@ struct fsw_state {
     int pending_oom;      /* an allocation failed in a destruction: the next step may say so */
     int has_pre_solve;
     ga2d_real hit_threshold;
-    ga2d_shape_id orphans[8]; /* lone chain segments ga2d_shape_create_checked made */
-    int norphans, ckpt_refusable; /* the checkpoint's world may not load (fsw_may_refuse) */
     int ckpt_substeps, ckpt_rk4, ckpt_passes; /* what the harness knew of the world at the checkpoint */
     int mass_set;         /* a body's mass was set by hand (or kept by a destroy): shapes' sums no longer show */
     int field_on;         /* the world has fw_field as its force callback (a snapshot does not carry it) */
@@ -163,26 +161,6 @@ static void fsw_guard_end(fsw_state *s, fsw_guard *g, ga2d_result r)
     }
     if (r == GA2D_ERR_OUT_OF_MEMORY) FUZZ_CHECK(s->base.alloc.failures != g->failures);
     free(g->before.p);
-}
-
-/* Whether the world's own snapshot may be refused: a lone chain segment
-   lives (none should: ga2d_shape_create_checked refuses them). */
-static int fsw_orphan_alive(const fsw_state *s);
-static int fsw_may_refuse(const fsw_state *s)
-{
-    return fsw_orphan_alive(s);
-}
-
-/* Whether a lone chain segment (one ga2d_shape_create_checked made, on no
-   chain) is alive: the loader refuses every snapshot of such a world
-   (BAD_SNAPSHOT: a chain segment must be on a live chain).  The maker
-   refuses them now (a fixed finding); the harness still tracks any. */
-static int fsw_orphan_alive(const fsw_state *s)
-{
-    int i;
-    for (i = 0; i < s->norphans; ++i)
-        if (ga2d_shape_is_valid(s->base.w, s->orphans[i])) return 1;
-    return 0;
 }
 
 /* ---------------------------------------------------------------- table */
@@ -747,7 +725,6 @@ static void fsw_shape_create(fsw_state *s)
         e.pre_solve = rd.enable_pre_solve_events != 0;
         e.hit = rd.enable_hit_events != 0;
         fsw_remember(s, &e);
-        if ((int)g.type == GA2D_SHAPE_CHAIN_SEGMENT && s->norphans < 8) s->orphans[s->norphans++] = id;
     }
 }
 
@@ -1006,8 +983,6 @@ static void fsw_forget_stale(fsw_state *s)
         if (!ga2d_shape_is_valid(w, s->shapes[i].id)) s->shapes[i--] = s->shapes[--s->nshapes];
     for (i = 0; i < s->nchains; ++i)
         if (ga2d_chain_get_segments(w, s->chains[i].id, NULL, 0) == 0) s->chains[i--] = s->chains[--s->nchains];
-    for (i = 0; i < s->norphans; ++i)
-        if (!ga2d_shape_is_valid(w, s->orphans[i])) s->orphans[i--] = s->orphans[--s->norphans];
     for (i = 0; i < s->base.nids; ++i)
         if (!ga2d_body_is_valid(w, s->base.ids[i])) s->base.ids[i--] = s->base.ids[--s->base.nids];
 }
@@ -1052,11 +1027,6 @@ static void fsw_replay(fsw_state *s)
     if (t) {
         ga2d_result r = ga2d_world_snapshot_load(t, s1.p, s1.n);
         FSW_TRACE((stderr, "replay: load %s, %d steps\n", ga2d_result_string(r), steps));
-        if (r == GA2D_ERR_BAD_SNAPSHOT && fsw_may_refuse(s)) {
-            ga2d_world_destroy(t);
-            free(s1.p);
-            return;
-        }
         FUZZ_CHECK(r == GA2D_OK);
         FUZZ_CHECK(fsw_save(t, &s2) && fsw_same(&s1, &s2));
         for (i = 0; i < steps && r == GA2D_OK; ++i) {
@@ -1086,7 +1056,6 @@ static void fsw_checkpoint(fsw_state *s)
     fw_state *b = &s->base;
     if (fz_u8(&b->rd) < 128 || s->ckpt.n == 0) {
         if (!fsw_save(b->w, &s->ckpt)) s->ckpt.n = 0;
-        s->ckpt_refusable = fsw_may_refuse(s);
         s->ckpt_substeps = b->substeps;
         s->ckpt_rk4 = b->rk4;
         s->ckpt_passes = b->passes;
@@ -1098,7 +1067,7 @@ static void fsw_checkpoint(fsw_state *s)
         r = ga2d_world_snapshot_load(b->w, s->ckpt.p, s->ckpt.n);
         FSW_TRACE((stderr, "rollback: %s\n", ga2d_result_string(r)));
         /* the world's own snapshot loads, unless memory runs out */
-        FUZZ_CHECK(r == GA2D_OK || r == GA2D_ERR_OUT_OF_MEMORY || (r == GA2D_ERR_BAD_SNAPSHOT && s->ckpt_refusable));
+        FUZZ_CHECK(r == GA2D_OK || r == GA2D_ERR_OUT_OF_MEMORY);
         fsw_guard_end(s, &gd, r);
         if (r == GA2D_OK) {
             fsw_buf again;
@@ -1128,7 +1097,7 @@ static void fsw_round_trip(fsw_state *s)
     if (fsw_save(s->base.w, &s1) && (t = fsw_twin(s, &ta, &tcb)) != NULL) {
         ga2d_result r = ga2d_world_snapshot_load(t, s1.p, s1.n);
         FSW_TRACE((stderr, "round trip: %zu bytes, load %s\n", s1.n, ga2d_result_string(r)));
-        FUZZ_CHECK(r == GA2D_OK || (r == GA2D_ERR_BAD_SNAPSHOT && fsw_may_refuse(s)));
+        FUZZ_CHECK(r == GA2D_OK);
         if (r == GA2D_OK) FUZZ_CHECK(fsw_save(t, &s2) && fsw_same(&s1, &s2));
         ga2d_world_destroy(t);
         FUZZ_CHECK(ta.live_bytes == 0 && ta.live_blocks == 0);
