@@ -3123,19 +3123,20 @@ typedef struct ga2d__held {
    2 * contact + side, side 0 on body a's list and 1 on body b's. */
 typedef struct ga2d__contact {
     /* first: what walking a body's list reads (the solver's order walks
-       every list each step), in one cache line */
+       every list each step) and what says which shapes it joins, in one
+       cache line */
     int a, b;                /* body slots: shape_a's body, shape_b's */
     int prev[2], next[2];    /* the bodies' list links, -1 at the ends */
     int touching;
     int next_free;           /* -2 while in use */
     int flags;               /* GA2D__CONTACT_*: what the narrowphase found, until book-kept */
+    int shape_a, shape_b;    /* shape slots, shape_a < shape_b */
+    int extras;              /* a shape is round, a conveyor, rolls with resistance or reports hits */
     ga2d_manifold manifold;
     ga2d_real friction, restitution;
     ga2d_vec end_normal;     /* an ended touch's new normal, while its end is reported */
     ga2d__held held;         /* the manifold in A's frame, while touching */
     uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
-    int shape_a, shape_b;    /* shape slots, shape_a < shape_b */
-    int extras;              /* a shape is round, a conveyor, rolls with resistance or reports hits */
 } ga2d__contact;
 
 /* What the narrowphase stage found of a contact, for the book-keeping
@@ -3269,7 +3270,9 @@ typedef struct ga2d__step_context {
     ga2d__soft soft, stiff;      /* contacts between moving bodies, and against a fixed one */
     ga2d_result error;           /* what the step will report */
     int error_slot;              /* the lowest slot it contained, or -1 */
-    ga2d__contact_constraint *constraints; /* the touching contacts, in canonical order */
+    int *order;                  /* the contacts to solve (pool indices), in canonical order */
+    int order_capacity;
+    ga2d__contact_constraint *constraints; /* theirs, in that order */
     int constraint_count, constraint_capacity;
     ga2d__group *groups;         /* the lane solver's, live during the substeps */
     int group_count, group_capacity;
@@ -5915,16 +5918,17 @@ typedef struct ga2d__cpoint {
 struct ga2d__contact_constraint {
     int contact, a, b;           /* pool index, body slots */
     ga2d_vec normal;
+    ga2d_vec d;                  /* B's centre less A's as the step began */
     ga2d_real friction, restitution;
     ga2d_real inv_ma, inv_ia, inv_mb, inv_ib;
-    int to_static;               /* the other body cannot move: stiffer */
-    int count;
+    unsigned char count;         /* points */
+    unsigned char to_static;     /* the other body cannot move: stiffer */
+    unsigned char hits;          /* a shape reports hits: the points' approach speeds are kept */
+    unsigned char needs_extras;  /* round, conveyor or rolling: its group needs extras */
     int lane;                    /* group * GA2D__LANES + lane in the lane solver */
     ga2d_real round_a, round_b;  /* the shapes' radii: their round parts (ga2d__point_now) */
-    int hits;                    /* a shape reports hits: the points' approach speeds are kept */
     ga2d_real tangent_speed;     /* the surfaces' sliding along (ny, -nx): friction's target */
     ga2d_real rolling;           /* the largest torque impulse per unit normal impulse: c r */
-    int needs_extras;            /* round, conveyor or rolling: its group needs extras */
     ga2d__cpoint p[2];
 };
 
@@ -6062,14 +6066,15 @@ struct ga2d__group_extra {
 struct ga2d__group {
     int a[GA2D__LANES], b[GA2D__LANES];
     /* beside the body slots, which every pass reads first */
-    int round;              /* a lane has a round shape: rax.. are core anchors, x->o.. what lies along n */
-    int conveyor;           /* a lane has a tangent speed (x->tspeed) */
-    int rolling;            /* a lane has rolling resistance (x->rr, rmass, rimp) */
-    int extras;             /* x's fields are written (ga2d__lane_extras) */
-    int con[GA2D__LANES];       /* the lane's constraint, -1 in an empty lane */
-    ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
+    unsigned char round;    /* a lane has a round shape: rax.. are core anchors, x->o.. what lies along n */
+    unsigned char conveyor; /* a lane has a tangent speed (x->tspeed) */
+    unsigned char rolling;  /* a lane has rolling resistance (x->rr, rmass, rimp) */
+    unsigned char extras;   /* x's fields are written (ga2d__lane_extras) */
     int count;              /* lanes in use */
     int skip;               /* when full: a later group to look at first */
+    ga2d__group_extra *x;   /* its extras while any lane of the step needs them, else NULL */
+    int contact[GA2D__LANES];   /* the lane's contact (pool index), -1 in an empty lane */
+    ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
     ga2d__w nx, ny, friction, ima, iia, imb, iib;
     ga2d__w dx, dy;         /* centre B - centre A when the step began */
     ga2d__w soft_rate, soft_mass, soft_impulse;
@@ -6078,7 +6083,6 @@ struct ga2d__group {
     ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
-    ga2d__group_extra *x;   /* its extras while any lane of the step needs them, else NULL */
 };
 
 /* A soft constraint seen by an implicit step (ga2d__make_soft). */
@@ -6172,37 +6176,6 @@ static int ga2d__pre_solve(ga2d_world *w, const ga2d__contact *ct)
                             w->def.pre_solve_context) != 0;
 }
 
-/* Book-keeping: a constraint for every touching contact with an awake
-   dynamic body, in canonical order, not the pool's: body slots ascending,
-   each body's own contacts (those where it is A) oldest first, as its
-   list holds them; a contact the pre-solve callback turns down is left
-   out.  Contacts elsewhere in the world, made
-   and freed, shuffle the pool but not this order, so a scene's bits do
-   not depend on them.  Oldest first matters: a pyramid's contacts, made
-   in key order, are then solved bottom up.  Out of memory, the step
-   reports it and solves the constraints listed so far. */
-static void ga2d__order_constraints(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int slot, link;
-    c->constraint_count = 0;
-    for (slot = 0; slot < w->body_used; ++slot) {
-        if (w->bodies[slot].type < 0) continue;
-        for (link = ga2d__first_edge(w, slot); link >= 0; link = ga2d__next_edge(w, link)) {
-            const ga2d__contact *ct = &w->contacts[link >> 1];
-            if ((link & 1) != 0 || !ct->touching) continue;
-            if (!ga2d__solver_moves(&w->bodies[ct->a]) && !ga2d__solver_moves(&w->bodies[ct->b])) continue;
-            if (w->def.pre_solve && !ga2d__pre_solve(w, ct)) continue;
-            if (!ga2d__grow(&w->mem, (void **)&c->constraints, &c->constraint_capacity, c->constraint_count + 1,
-                            sizeof *c->constraints)) {
-                c->error = GA2D_ERR_OUT_OF_MEMORY;
-                return;
-            }
-            c->constraints[c->constraint_count++].contact = link >> 1;
-        }
-    }
-}
-
 /* What only round shapes, conveyors, rolling resistance and hit events
    need of a constraint (a polygon world's contacts never come here). */
 static void ga2d__constraint_extras(ga2d_world *w, const ga2d__contact *ct, ga2d__contact_constraint *cc)
@@ -6231,21 +6204,24 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
     int n, i;
     for (n = begin; n < end; ++n) {
         ga2d__contact_constraint *cc = &c->constraints[n];
-        const ga2d__contact *ct = &w->contacts[cc->contact];
+        const ga2d__contact *ct = &w->contacts[c->order[n]];
         const ga2d__body *ba = &w->bodies[ct->a], *bb = &w->bodies[ct->b];
         const ga2d__body_sim *a = &ba->sim, *b = &bb->sim;
+        int ma = ga2d__solver_moves(ba), mb = ga2d__solver_moves(bb);
         ga2d_vec ca, cb;
+        cc->contact = c->order[n];
         cc->a = ct->a;
         cc->b = ct->b;
         cc->normal = ct->manifold.normal;
+        cc->d = ga2d_vec_sub(b->center, a->center);
         cc->friction = ct->friction;
         cc->restitution = ct->restitution;
-        cc->inv_ma = ga2d__solver_moves(ba) ? a->inv_mass : 0;
-        cc->inv_ia = ga2d__solver_moves(ba) ? a->inv_inertia : 0;
-        cc->inv_mb = ga2d__solver_moves(bb) ? b->inv_mass : 0;
-        cc->inv_ib = ga2d__solver_moves(bb) ? b->inv_inertia : 0;
+        cc->inv_ma = ma ? a->inv_mass : 0;
+        cc->inv_ia = ma ? a->inv_inertia : 0;
+        cc->inv_mb = mb ? b->inv_mass : 0;
+        cc->inv_ib = mb ? b->inv_inertia : 0;
         cc->to_static = cc->inv_ma == 0 || cc->inv_mb == 0;
-        cc->count = ct->manifold.count;
+        cc->count = (unsigned char)ct->manifold.count;
         cc->round_a = cc->round_b = cc->tangent_speed = cc->rolling = 0;
         cc->hits = cc->needs_extras = 0;
         if (ct->extras) ga2d__constraint_extras(w, ct, cc);
@@ -6270,6 +6246,62 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
                               ? -ga2d_dot(ga2d__relative_velocity(a, b, p->ra, p->rb), cc->normal) : 0;
         }
     }
+}
+
+/* The constraints listed from `begin` on, prepared; out of memory, none
+   is left. */
+static void ga2d__prepare_listed(ga2d__step_context *c, int begin)
+{
+    ga2d_world *w = c->world;
+    if (!ga2d__grow(&w->mem, (void **)&c->constraints, &c->constraint_capacity, c->constraint_count,
+                    sizeof *c->constraints)) {
+        c->constraint_count = 0;
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    ga2d__prepare_constraints(c, begin, c->constraint_count);
+}
+
+/* Book-keeping: a constraint for every touching contact with an awake
+   dynamic body, in canonical order, not the pool's: body slots ascending,
+   each body's own contacts (those where it is A) oldest first, as its
+   list holds them; a contact the pre-solve callback turns down is left
+   out.  Contacts elsewhere in the world, made
+   and freed, shuffle the pool but not this order, so a scene's bits do
+   not depend on them.  Oldest first matters: a pyramid's contacts, made
+   in key order, are then solved bottom up.  The listed constraints are
+   prepared (ga2d__prepare_constraints) a block at a time, while the
+   contacts and bodies just read are still in cache: a world too large for
+   the cache read them twice over when they were prepared after the whole
+   list.  Out of memory, the step reports it and solves no contact. */
+#define GA2D__PREPARE_BLOCK 32 /* constraints listed, then prepared */
+static void ga2d__order_constraints(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int slot, link, prepared = 0;
+    c->constraint_count = 0;
+    /* room for every contact at once (each has at most one constraint);
+       the order is kept apart from the constraints, so that listing it
+       does not pass over their memory once more */
+    if (!ga2d__grow(&w->mem, (void **)&c->order, &c->order_capacity, w->contact_count, sizeof *c->order)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    for (slot = 0; slot < w->body_used; ++slot) {
+        if (w->bodies[slot].type < 0) continue;
+        for (link = ga2d__first_edge(w, slot); link >= 0; link = ga2d__next_edge(w, link)) {
+            const ga2d__contact *ct = &w->contacts[link >> 1];
+            if ((link & 1) != 0 || !ct->touching) continue;
+            if (!ga2d__solver_moves(&w->bodies[ct->a]) && !ga2d__solver_moves(&w->bodies[ct->b])) continue;
+            if (w->def.pre_solve && !ga2d__pre_solve(w, ct)) continue;
+            c->order[c->constraint_count++] = link >> 1;
+            if (c->constraint_count - prepared < GA2D__PREPARE_BLOCK) continue;
+            ga2d__prepare_listed(c, prepared);
+            if (c->constraint_count == 0) return;
+            prepared = c->constraint_count;
+        }
+    }
+    ga2d__prepare_listed(c, prepared);
 }
 
 /* Stage, over the moving bodies: where each was when the step began (the
@@ -6779,7 +6811,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
     ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
 }
 
-static void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int bias_kind)
+static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int bias_kind)
 {
     ga2d_world *w = c->world;
     ga2d_real inv_h = c->inv_h, push = w->def.contact_push_max_velocity * w->def.length_units_per_meter;
@@ -6816,14 +6848,15 @@ static void ga2d__solve_baumgarte(ga2d__step_context *c, int begin, int end)
 }
 
 /* Lane l's fields for round shapes, conveyors and rolling resistance.
-   The first lane of a group that needs them zeroes them in the lanes
-   before it (their group is flagged from then on, so every later lane
-   writes its own); a group without them never writes them. */
+   The first lane of a group that needs them zeroes them in every other
+   lane (their group is flagged from then on, so every later lane writes
+   its own); a group without them never writes them. */
 static void ga2d__lane_extras(ga2d__group *g, int l, const ga2d__contact_constraint *c, const ga2d__contact_constraint *none)
 {
     int k, j;
     if (!g->extras) {
-        for (j = 0; j < l; ++j) {
+        for (j = 0; j < GA2D__LANES; ++j) {
+            if (j == l) continue;
             for (k = 0; k < 2; ++k)
                 GA2D__LANE(g->x->oax[k], j) = GA2D__LANE(g->x->oay[k], j) = GA2D__LANE(g->x->obx[k], j) = GA2D__LANE(g->x->oby[k], j) = 0;
             GA2D__LANE(g->x->tspeed, j) = GA2D__LANE(g->x->rr, j) = GA2D__LANE(g->x->rmass, j) = GA2D__LANE(g->x->rimp, j) = 0;
@@ -6856,8 +6889,10 @@ static void ga2d__lane_extras(ga2d__group *g, int l, const ga2d__contact_constra
 }
 
 /* Lane l of group g holds constraint c (d: B's centre less A's), every
-   field written: a point c lacks takes `none`'s (all zero), and so does an
-   empty lane (c = none), so their masses are zero. */
+   field a polygon world reads written: a point c lacks takes `none`'s (all
+   zero), and so does an empty lane (c = none), so their masses are zero.
+   The anchors are the points' own; a round side's are made core anchors
+   by ga2d__lane_extras. */
 static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constraint *c, ga2d_vec d, const ga2d__soft *sf,
                              const ga2d__contact_constraint *none)
 {
@@ -6875,18 +6910,12 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->soft_mass, l) = sf->mass_scale;
     GA2D__LANE(g->soft_impulse, l) = sf->impulse_scale;
     GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
-    /* what only round shapes, conveyors and rolling resistance use: a
-       polygon world writes none of it (ga2d__lane_extras) */
-    int extras = g->extras || c->needs_extras; /* then ga2d__lane_extras writes the anchors */
-    if (extras) ga2d__lane_extras(g, l, c, none);
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
-        if (!extras) {
-            GA2D__LANE(g->rax[k], l) = p->ra.x;
-            GA2D__LANE(g->ray[k], l) = p->ra.y;
-            GA2D__LANE(g->rbx[k], l) = p->rb.x;
-            GA2D__LANE(g->rby[k], l) = p->rb.y;
-        }
+        GA2D__LANE(g->rax[k], l) = p->ra.x;
+        GA2D__LANE(g->ray[k], l) = p->ra.y;
+        GA2D__LANE(g->rbx[k], l) = p->rb.x;
+        GA2D__LANE(g->rby[k], l) = p->rb.y;
         GA2D__LANE(g->adjust[k], l) =
             p->separation - ((d.x + (p->rb.x - p->ra.x)) * c->normal.x + (d.y + (p->rb.y - p->ra.y)) * c->normal.y);
         GA2D__LANE(g->has[k], l) = k < c->count ? 1 : 0;
@@ -6905,13 +6934,13 @@ static void ga2d__lane_put(ga2d__step_context *c, ga2d__group *g, int ci)
     int l = g->count++;
     g->a[l] = cc->a;
     g->b[l] = cc->b;
-    g->con[l] = ci;
+    g->contact[l] = cc->contact;
     GA2D__LANE(g->move_a, l) = -(cc->inv_ma != 0 || cc->inv_ia != 0);
     GA2D__LANE(g->move_b, l) = -(cc->inv_mb != 0 || cc->inv_ib != 0);
     cc->lane = (int)(g - c->groups) * GA2D__LANES + l;
 }
 
-/* A new group, no lane in use yet (ga2d__group_pad fills what stays empty). */
+/* A new group, no lane in use yet (ga2d__pad_groups fills what stays empty). */
 static void ga2d__group_open(ga2d__group *g)
 {
     g->count = 0;
@@ -7006,10 +7035,10 @@ static void ga2d__still_body(ga2d__step_context *c, int slot)
     s->dqc = 1;
 }
 
-/* Stage, over the groups: each lane takes its constraint's data (d: B's
-   centre less A's); the lanes a group was closed without take the dummy
-   slot and all zeros. */
-static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
+/* Stage, over the groups: each learns where its extras are, and the lanes
+   it was closed without take the dummy slot and all zeros.  Before
+   ga2d__fill_lanes, which writes a group's extras. */
+static void ga2d__pad_groups(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     ga2d__contact_constraint none;
@@ -7020,19 +7049,35 @@ static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
     for (gi = begin; gi < end; ++gi) {
         ga2d__group *g = &c->groups[gi];
         g->x = c->group_extras_on ? &c->group_extras[gi] : NULL;
-        for (l = 0; l < g->count; ++l) {
-            const ga2d__contact_constraint *cc = &c->constraints[g->con[l]];
-            const ga2d__body_sim *a = &w->bodies[cc->a].sim, *b = &w->bodies[cc->b].sim;
-            ga2d__lane_write(g, l, cc, ga2d_vec_sub(b->center, a->center), cc->to_static ? &c->stiff : &c->soft, &none);
-            ga2d__still_body(c, cc->a);
-            ga2d__still_body(c, cc->b);
-        }
-        for (; l < GA2D__LANES; ++l) {
+        for (l = g->count; l < GA2D__LANES; ++l) {
             g->a[l] = g->b[l] = w->body_used;
-            g->con[l] = -1;
+            g->contact[l] = -1;
             GA2D__LANE(g->move_a, l) = GA2D__LANE(g->move_b, l) = 0;
             ga2d__lane_write(g, l, &none, ga2d_vec_make(0, 0), &zero, &none);
         }
+    }
+}
+
+/* Stage, over the constraints: each one's data into its lane (in the
+   constraints' order, so the groups are written nearly in turn).  A side
+   the solver does not move gets its solver body here (a moving one's is
+   gathered before each run of passes). */
+static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
+{
+    ga2d__contact_constraint none;
+    int i;
+    memset(&none, 0, sizeof none);
+    for (i = begin; i < end; ++i) {
+        const ga2d__contact_constraint *cc = &c->constraints[i];
+        ga2d__group *g = &c->groups[cc->lane / GA2D__LANES];
+        int l = cc->lane % GA2D__LANES;
+        ga2d__lane_write(g, l, cc, cc->d, cc->to_static ? &c->stiff : &c->soft, &none);
+        /* what only round shapes, conveyors and rolling resistance use
+           (the anchors of a round side, over the ones just written): a
+           polygon world writes none of it */
+        if (g->extras || cc->needs_extras) ga2d__lane_extras(g, l, cc, &none);
+        if (cc->inv_ma == 0 && cc->inv_ia == 0) ga2d__still_body(c, cc->a);
+        if (cc->inv_mb == 0 && cc->inv_ib == 0) ga2d__still_body(c, cc->b);
     }
 }
 
@@ -7097,7 +7142,7 @@ static void ga2d__store_impulses(ga2d__step_context *c, int begin, int end)
     for (gi = begin; gi < end; ++gi) {
         const ga2d__group *g = &c->groups[gi];
         for (l = 0; l < g->count; ++l) {
-            ga2d_manifold *m = &w->contacts[c->constraints[g->con[l]].contact].manifold;
+            ga2d_manifold *m = &w->contacts[g->contact[l]].manifold;
             for (k = 0; k < m->count; ++k) {
                 m->points[k].normal_impulse = GA2D__LANE(g->nimp[k], l);
                 m->points[k].tangent_impulse = GA2D__LANE(g->timp[k], l);
@@ -7259,6 +7304,7 @@ static int ga2d__reserve_refits(ga2d_world *w, int n)
 static void ga2d__step_release(ga2d_world *w)
 {
     ga2d__step_context *c = &w->step;
+    ga2d__release(w, (void **)&c->order, &c->order_capacity, sizeof *c->order);
     ga2d__release(w, (void **)&c->constraints, &c->constraint_capacity, sizeof *c->constraints);
     c->constraint_count = 0;
     ga2d__release(w, (void **)&c->groups, &c->group_capacity, sizeof *c->groups);
@@ -7273,6 +7319,7 @@ static void ga2d__step_release(ga2d_world *w)
 static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
 {
     GA2D__FREE_ARRAY(a, c->rk4, c->rk4_capacity);
+    GA2D__FREE_ARRAY(a, c->order, c->order_capacity);
     GA2D__FREE_ARRAY(a, c->constraints, c->constraint_capacity);
     GA2D__FREE_ARRAY(a, c->groups, c->group_capacity);
     GA2D__FREE_ARRAY(a, c->group_extras, c->group_extra_capacity);
@@ -8058,12 +8105,12 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
         ga2d__contact_changes(c);
     }
     /* constraints, the collision phase, the lanes */
-    ga2d__order_constraints(c);
-    ga2d__run(c, ga2d__prepare_constraints, c->constraint_count);
+    ga2d__order_constraints(c); /* and prepares them, a block at a time */
     ga2d__run(c, ga2d__remember_start, w->moving_count);
     if (w->def.enable_restitution) ga2d__restitute(c);
     ga2d__assign_lanes(c);
-    ga2d__run(c, ga2d__fill_lanes, c->group_count);
+    ga2d__run(c, ga2d__pad_groups, c->group_count);
+    ga2d__run(c, ga2d__fill_lanes, c->group_count > 0 ? c->constraint_count : 0);
     /* the substeps */
     stages = ga2d__plan_substep(w, plan);
     for (s = 0; s < w->def.substeps; ++s) {
