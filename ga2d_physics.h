@@ -5922,7 +5922,6 @@ struct ga2d__contact_constraint {
     ga2d_real friction, restitution;
     ga2d_real inv_ma, inv_ia, inv_mb, inv_ib;
     unsigned char count;         /* points */
-    unsigned char to_static;     /* the other body cannot move: stiffer */
     unsigned char hits;          /* a shape reports hits: the points' approach speeds are kept */
     unsigned char needs_extras;  /* round, conveyor or rolling: its group needs extras */
     int lane;                    /* group * GA2D__LANES + lane in the lane solver */
@@ -6077,7 +6076,6 @@ struct ga2d__group {
     ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
     ga2d__w nx, ny, friction, ima, iia, imb, iib;
     ga2d__w dx, dy;         /* centre B - centre A when the step began */
-    ga2d__w soft_rate, soft_mass, soft_impulse;
     ga2d__w rax[2], ray[2], rbx[2], rby[2];
     ga2d__w adjust[2];      /* start separation - (d0 + rB - rA).n */
     ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
@@ -6220,7 +6218,6 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->inv_ia = ma ? a->inv_inertia : 0;
         cc->inv_mb = mb ? b->inv_mass : 0;
         cc->inv_ib = mb ? b->inv_inertia : 0;
-        cc->to_static = cc->inv_ma == 0 || cc->inv_mb == 0;
         cc->count = (unsigned char)ct->manifold.count;
         cc->round_a = cc->round_b = cc->tangent_speed = cc->rolling = 0;
         cc->hits = cc->needs_extras = 0;
@@ -6739,6 +6736,8 @@ enum { GA2D__BIAS_NONE, GA2D__BIAS_SOFT, GA2D__BIAS_BAUMGARTE };
 typedef struct ga2d__pass {
     int bias_kind, friction, fresh;
     ga2d__w zero, one, winv_h, low, slop, nslop, baumgarte;
+    ga2d__w soft_rate, soft_mass, soft_impulse;    /* between moving bodies */
+    ga2d__w stiff_rate, stiff_mass, stiff_impulse; /* against one the solver does not move */
 } ga2d__pass;
 
 /* One group's pass; `extras` (a constant where it is inlined) leaves a
@@ -6750,21 +6749,27 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
     ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
     ga2d__wbody A, B, A0, B0;
     ga2d__wanchors r[2];
-    ga2d__w inv_a[2], own[2], lambda[2];
+    ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero;
     int k;
     ga2d__wload(c->sbodies, g->a, &A);
     ga2d__wload(c->sbodies, g->b, &B);
     A0 = A;
     B0 = B;
+    if (bias_kind == GA2D__BIAS_SOFT) { /* the lanes that move both bodies are soft, the others stiff */
+        ga2d__wmask both = ga2d__wand(g->move_a, g->move_b);
+        soft_rate = ga2d__wsel(both, ps->soft_rate, ps->stiff_rate);
+        soft_mass = ga2d__wsel(both, ps->soft_mass, ps->stiff_mass);
+        soft_impulse = ga2d__wsel(both, ps->soft_impulse, ps->stiff_impulse);
+    }
     for (k = 0; k < 2; ++k) {
         ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k], extras);
         ga2d__wmask apart = ga2d__wgt(s, zero);
         ga2d__w bias = zero, mass_scale = one, impulse_scale = zero;
         if (bias_kind == GA2D__BIAS_SOFT) {
-            bias = ga2d__wmul(g->soft_rate, s);
+            bias = ga2d__wmul(soft_rate, s);
             bias = ga2d__wsel(ga2d__wgt(ps->low, bias), ps->low, bias);
-            mass_scale = ga2d__wsel(apart, one, g->soft_mass);
-            impulse_scale = ga2d__wsel(apart, zero, g->soft_impulse);
+            mass_scale = ga2d__wsel(apart, one, soft_mass);
+            impulse_scale = ga2d__wsel(apart, zero, soft_impulse);
         } else if (bias_kind == GA2D__BIAS_BAUMGARTE) {
             bias = ga2d__wmul(ps->baumgarte, ga2d__wadd(s, ps->slop));
             bias = ga2d__wsel(ga2d__wgt(ps->low, bias), ps->low, bias);
@@ -6831,6 +6836,12 @@ static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int
     ps.slop = ga2d__wsplat(w->slop);
     ps.nslop = ga2d__wsplat(-w->slop);
     ps.baumgarte = ga2d__wsplat(GA2D__R(0.2) * inv_h);
+    ps.soft_rate = ga2d__wsplat(c->soft.bias_rate);
+    ps.soft_mass = ga2d__wsplat(c->soft.mass_scale);
+    ps.soft_impulse = ga2d__wsplat(c->soft.impulse_scale);
+    ps.stiff_rate = ga2d__wsplat(c->stiff.bias_rate);
+    ps.stiff_mass = ga2d__wsplat(c->stiff.mass_scale);
+    ps.stiff_impulse = ga2d__wsplat(c->stiff.impulse_scale);
     for (gi = begin; gi < end; ++gi) {
         ga2d__group *g = &c->groups[gi];
         if (g->extras) ga2d__solve_group(c, g, &ps, 1);
@@ -6893,7 +6904,7 @@ static void ga2d__lane_extras(ga2d__group *g, int l, const ga2d__contact_constra
    zero), and so does an empty lane (c = none), so their masses are zero.
    The anchors are the points' own; a round side's are made core anchors
    by ga2d__lane_extras. */
-static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constraint *c, ga2d_vec d, const ga2d__soft *sf,
+static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constraint *c, ga2d_vec d,
                              const ga2d__contact_constraint *none)
 {
     int k;
@@ -6906,9 +6917,6 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->iib, l) = c->inv_ib;
     GA2D__LANE(g->dx, l) = d.x;
     GA2D__LANE(g->dy, l) = d.y;
-    GA2D__LANE(g->soft_rate, l) = sf->bias_rate;
-    GA2D__LANE(g->soft_mass, l) = sf->mass_scale;
-    GA2D__LANE(g->soft_impulse, l) = sf->impulse_scale;
     GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
@@ -7042,10 +7050,8 @@ static void ga2d__pad_groups(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     ga2d__contact_constraint none;
-    ga2d__soft zero;
     int gi, l;
     memset(&none, 0, sizeof none);
-    memset(&zero, 0, sizeof zero);
     for (gi = begin; gi < end; ++gi) {
         ga2d__group *g = &c->groups[gi];
         g->x = c->group_extras_on ? &c->group_extras[gi] : NULL;
@@ -7053,7 +7059,7 @@ static void ga2d__pad_groups(ga2d__step_context *c, int begin, int end)
             g->a[l] = g->b[l] = w->body_used;
             g->contact[l] = -1;
             GA2D__LANE(g->move_a, l) = GA2D__LANE(g->move_b, l) = 0;
-            ga2d__lane_write(g, l, &none, ga2d_vec_make(0, 0), &zero, &none);
+            ga2d__lane_write(g, l, &none, ga2d_vec_make(0, 0), &none);
         }
     }
 }
@@ -7071,7 +7077,7 @@ static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
         const ga2d__contact_constraint *cc = &c->constraints[i];
         ga2d__group *g = &c->groups[cc->lane / GA2D__LANES];
         int l = cc->lane % GA2D__LANES;
-        ga2d__lane_write(g, l, cc, cc->d, cc->to_static ? &c->stiff : &c->soft, &none);
+        ga2d__lane_write(g, l, cc, cc->d, &none);
         /* what only round shapes, conveyors and rolling resistance use
            (the anchors of a round side, over the ones just written): a
            polygon world writes none of it */
