@@ -2758,7 +2758,7 @@ static int ga2d__face_collapsed(ga2d_real sep, ga2d_vec e, ga2d_vec d)
    separation holds the nearest point, on it or at one of its ends. */
 static ga2d_real ga2d__hull_nearest(const ga2d__hull *h, ga2d_vec c, ga2d_vec *q, ga2d_vec *u, int *feature)
 {
-    ga2d_real best = -GA2D__MAX, t, len2;
+    ga2d_real best = -GA2D__MAX, t, upper;
     int i, face = 0, i2;
     ga2d_vec e, d;
     for (i = 0; i < h->count; ++i) {
@@ -2771,13 +2771,25 @@ static ga2d_real ga2d__hull_nearest(const ga2d__hull *h, ga2d_vec c, ga2d_vec *q
     i2 = face + 1 < h->count ? face + 1 : 0;
     e = ga2d_vec_sub(h->v[i2], h->v[face]);
     d = ga2d_vec_sub(c, h->v[face]);
-    t = ga2d_dot(d, e);
-    len2 = ga2d_dot(e, e);
-    if ((best > 0 || h->count < 3) && (t <= 0 || t >= len2 || ga2d__face_collapsed(best, e, d))) {
+    /* c's foot along the face, and the face's end, measured along the
+       face's normal turned +90 degrees (its edge's direction as the shape
+       gives it; the clipper measures a reference face so), not along the
+       placed edge e: e carries its ends' rounding (eps of their distance
+       from this frame's origin), which turns it by that over |e| and moves
+       the foot by that angle times |d|.  Seen from far off (|d| >> |e|)
+       the foot is lost: c 1e75 off a box 112 wide, 1.4 degrees off its
+       side's normal, has its foot 2.4e73 past the side's end, yet the
+       side's placed ends rounded to one x (e straight down) put it on the
+       face, whose height along the tilted normal falls short of the
+       distance by 1 - cos(1.4 degrees) = 3e-4 of 1e75.  Along the normal's
+       tangent the foot is off by the ends' and c's rounding alone */
+    t = ga2d_dot(d, ga2d_vec_perp(h->n[face]));
+    upper = ga2d_dot(e, ga2d_vec_perp(h->n[face]));
+    if ((best > 0 || h->count < 3) && (t <= 0 || t >= upper || ga2d__face_collapsed(best, e, d))) {
         /* past an end of the face (a segment's core has no inside, so its
            ends count on its line too): that vertex is nearest */
         ga2d_vec d2 = ga2d_vec_sub(c, h->v[i2]);
-        int k = t <= 0 || (t < len2 && ga2d_dot(d, d) <= ga2d_dot(d2, d2)) ? face : i2;
+        int k = t <= 0 || (t < upper && ga2d_dot(d, d) <= ga2d_dot(d2, d2)) ? face : i2;
         ga2d_vec r = k == face ? d : d2;
         ga2d_real dist = ga2d__length(r);
         *q = h->v[k];

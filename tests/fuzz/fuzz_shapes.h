@@ -62,7 +62,9 @@
    (clipped to nothing in one order); a polygon smaller than the rounding
    of its placement in the other's frame (its vertices collapse there,
    its normals stay: measured against a circle along a face that had lost
-   its direction). */
+   its direction); a huge circle's centre 1e75 off a box, past a side's end
+   at 1.4 degrees (the side's placed edge, its ends rounded to one x, put
+   the foot on the face: -3e71 in one order, nothing in the other). */
 #ifndef GA2D_FUZZ_SHAPES_H
 #define GA2D_FUZZ_SHAPES_H
 
