@@ -3577,6 +3577,23 @@ static int ga2d__edge_other(const ga2d_world *w, int link)
 }
 
 /* A contact for the shape pair sa < sb (their bodies differ). */
+/* A contact's friction: the geometric mean of its shapes' frictions.
+   Each is finite, and so is the mean, but their product can overflow (a
+   friction near the largest real against one above 1): an infinite
+   friction's cap on a tangent impulse is inf * 0 = NaN while the normal
+   impulse is 0, which clamps nothing, and the world's own snapshot is
+   refused (a contact's friction must be finite).  So an overflowing
+   product takes the mean root by root (the two roundings may carry it
+   just past the largest real: kept at that); a finite one is rooted as
+   ever, the same bits. */
+static ga2d_real ga2d__mix_friction(ga2d_real a, ga2d_real b)
+{
+    ga2d_real p = a * b;
+    if (ga2d__finite(p)) return GA2D__SQRT(p);
+    p = GA2D__SQRT(a) * GA2D__SQRT(b);
+    return ga2d__finite(p) ? p : GA2D__MAX;
+}
+
 static int ga2d__create_contact(ga2d_world *w, int sa, int sb)
 {
     const ga2d__shape *pa = &w->shapes[sa], *pb = &w->shapes[sb];
@@ -3601,7 +3618,7 @@ static int ga2d__create_contact(ga2d_world *w, int sa, int sb)
     c->shape_b = sb;
     c->next_free = -2;
     c->serial = w->contact_serial++;
-    c->friction = GA2D__SQRT(pa->friction * pb->friction);
+    c->friction = ga2d__mix_friction(pa->friction, pb->friction);
     c->restitution = pa->restitution > pb->restitution ? pa->restitution : pb->restitution;
     c->extras = pa->radius != 0 || pb->radius != 0 || pa->tangent_speed != 0 || pb->tangent_speed != 0 ||
                 pa->rolling_resistance != 0 || pb->rolling_resistance != 0 || pa->hit_events || pb->hit_events;
@@ -5322,7 +5339,7 @@ static void ga2d__shape_materials(ga2d_world *w, int k)
         ga2d__contact *ct = &w->contacts[link >> 1];
         const ga2d__shape *pa = &w->shapes[ct->shape_a], *pb = &w->shapes[ct->shape_b];
         if (ct->shape_a != k && ct->shape_b != k) continue;
-        ct->friction = GA2D__SQRT(pa->friction * pb->friction);
+        ct->friction = ga2d__mix_friction(pa->friction, pb->friction);
         ct->restitution = pa->restitution > pb->restitution ? pa->restitution : pb->restitution;
     }
 }

@@ -257,9 +257,69 @@ static void bad_snapshots_are_refused(void)
     ga2d_world_destroy(s.w);
 }
 
+/* A world's own snapshot loads into a fresh world and saves to the same
+   bytes. */
+static void round_trips(const ga2d_world *w)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_world *t = ga2d_world_create(&wd);
+    size_t size;
+    unsigned char *snap = save(w, &size);
+    CHECK(t != NULL && snap != NULL);
+    if (t && snap) {
+        CHECK_RESULT(ga2d_world_snapshot_load(t, snap, size), GA2D_OK);
+        CHECK(same_world(t, snap, size));
+    }
+    ga2d_world_destroy(t);
+    free(snap);
+}
+
+/* Frictions are any finite values >= 0, and a contact's is their
+   geometric mean, sqrt(mu_a mu_b): the largest real against 4 (at
+   creation) and against itself (set later, reaching the touching
+   contact) overflow the product, yet the mean is finite and the world's
+   snapshot, which refuses an infinite contact friction, must load.  (The
+   fuzz finding: frictions FLT_MAX and 1e8.)  A box resting on the ground
+   stays there, finite, stepped on. */
+static void huge_frictions_round_trip(void)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_world *w = ga2d_world_create(&wd);
+    ga2d_body_id box;
+    ga2d_shape_id shape;
+    ga2d_contact_data cd[4];
+    ga2d_vec v;
+    int i;
+    CHECK(w != NULL);
+    if (!w) return;
+    d.polygon = ga2d_polygon_box(5, 1);
+    d.position = ga2d_vec_make(0, -1);
+    d.friction = (ga2d_real)REAL_MAX;
+    CHECK(ga2d_body_is_valid(w, ga2d_body_create(w, &d)));
+    d.type = GA2D_BODY_DYNAMIC;
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+    d.position = ga2d_vec_make(0, (ga2d_real)0.5);
+    d.friction = 4;
+    box = ga2d_body_create(w, &d);
+    CHECK(ga2d_body_get_shapes(w, box, &shape, 1) == 1);
+    for (i = 0; i < 10; ++i) CHECK_RESULT(ga2d_world_step(w, (ga2d_real)1 / 60), GA2D_OK);
+    CHECK(ga2d_world_get_contacts(w, cd, 4) == 1);
+    round_trips(w);
+    CHECK_RESULT(ga2d_shape_set_friction(w, shape, (ga2d_real)REAL_MAX), GA2D_OK);
+    round_trips(w);
+    for (i = 0; i < 30; ++i) CHECK_RESULT(ga2d_world_step(w, (ga2d_real)1 / 60), GA2D_OK);
+    round_trips(w);
+    v = ga2d_body_velocity(w, box);
+    CHECK(ga2d_world_get_contacts(w, cd, 4) == 1);
+    CHECK(isfinite((double)v.x) && isfinite((double)v.y) && fabs((double)v.x) < 1e-3 && fabs((double)v.y) < 1e-3);
+    ga2d_world_destroy(w);
+}
+
 void suite_snapshot(void)
 {
     test_run("snapshot: load, then step, is bit-identical", load_then_step_is_bit_identical);
     test_run("snapshot: truncated, corrupted, other version refused, world unchanged", bad_snapshots_are_refused);
     test_run("snapshot: ga2d_world_compact keeps the bits and gives memory back", compact_keeps_bits_and_gives_memory_back);
+    test_run("snapshot: contacts between huge frictions (their product overflows) round-trip", huge_frictions_round_trip);
 }
