@@ -6203,6 +6203,11 @@ static int ga2d__pre_solve(ga2d_world *w, const ga2d__contact *ct)
                             w->def.pre_solve_context) != 0;
 }
 
+/* x, or the largest real of its sign where it overflowed: two legal
+   materials can multiply or add past the range (an infinite cap times a
+   zero impulse is NaN, and a NaN bound clamps nothing). */
+static ga2d_real ga2d__saturate(ga2d_real x) { return x > GA2D__MAX ? GA2D__MAX : (x < -GA2D__MAX ? -GA2D__MAX : x); }
+
 /* What only round shapes, conveyors, rolling resistance and hit events
    need of a constraint (a polygon world's contacts never come here). */
 static void ga2d__constraint_extras(ga2d_world *w, const ga2d__contact *ct, ga2d__contact_constraint *cc)
@@ -6215,10 +6220,10 @@ static void ga2d__constraint_extras(ga2d_world *w, const ga2d__contact *ct, ga2d
     cc->hits = sa->hit_events || sb->hit_events;
     /* A's surface slides along t = (ny, -nx) at its speed, B's (whose
        outward normal is -n) along -t: B relative to A, s_a + s_b less */
-    cc->tangent_speed = (sa->tangent_speed + sb->tangent_speed) * w->def.length_units_per_meter;
+    cc->tangent_speed = ga2d__saturate((sa->tangent_speed + sb->tangent_speed) * w->def.length_units_per_meter);
     /* rolling resistance: the larger coefficient at the rolling radius (a
        round side's; none between sharp shapes) */
-    cc->rolling = (rra > rrb ? rra : rrb) * (cc->round_a > cc->round_b ? cc->round_a : cc->round_b);
+    cc->rolling = ga2d__saturate((rra > rrb ? rra : rrb) * (cc->round_a > cc->round_b ? cc->round_a : cc->round_b));
     cc->needs_extras = cc->round_a != 0 || cc->round_b != 0 || cc->tangent_speed != 0 || cc->rolling != 0;
 }
 

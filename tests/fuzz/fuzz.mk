@@ -12,11 +12,28 @@
 #   make fuzz FUZZ_ONLY=world      one harness (or a list)
 #   make fuzz FUZZ_EXTRA=-DFUZZ_VERBOSE   extra flags (after make fuzz-clean)
 #   make fuzz-build                build only
+#   make fuzz FUZZ_FIXED=1         a reproducible campaign, as CI runs it:
+#                                  each harness runs FUZZ_RUNS_<kind> inputs
+#                                  from seed FUZZ_SEED (default 1), starting
+#                                  from the kept seeds and findings only (a
+#                                  fresh corpus), so a clean clone gives the
+#                                  same inputs here and on CI.  Exploring
+#                                  (the default: random seed, by time, the
+#                                  corpus kept) is what finds new inputs.
 
 FUZZ_SECONDS ?= 60
 FUZZ_CC      ?= clang
 FUZZ_EXTRA   ?=
 FUZZ_DIR     := $(BUILD)/fuzz
+FUZZ_FIXED   ?=
+FUZZ_SEED    ?= 1
+# inputs per harness in a fixed campaign: about a minute each here
+FUZZ_RUNS_polygon     ?= 3000000
+FUZZ_RUNS_world       ?= 40000
+FUZZ_RUNS_reentry     ?= 15000
+FUZZ_RUNS_snapshot    ?= 30000
+FUZZ_RUNS_shapes      ?= 3000000
+FUZZ_RUNS_shape_world ?= 6000
 FUZZ_FLAGS   := -std=c99 -O1 -g -ffp-contract=off -fsanitize=fuzzer,address,undefined \
                 -fno-sanitize-recover=all -fno-omit-frame-pointer
 # harness = input kind [+ _double for the double build]; the snapshot
@@ -46,9 +63,19 @@ fuzz: fuzz-build
 	@status=0; summary=""; \
 	for h in $(FUZZ_ONLY); do \
 	    kind=$${h%_double}; corpus=$(FUZZ_DIR)/corpus/$$h; log=$(FUZZ_DIR)/$$h.log; \
+	    if [ -n "$(FUZZ_FIXED)" ]; then \
+	        corpus=$(FUZZ_DIR)/fixed-corpus/$$h; rm -rf $$corpus; \
+	        case $$kind in \
+	        polygon) runs=$(FUZZ_RUNS_polygon);; world) runs=$(FUZZ_RUNS_world);; \
+	        reentry) runs=$(FUZZ_RUNS_reentry);; snapshot) runs=$(FUZZ_RUNS_snapshot);; \
+	        shapes) runs=$(FUZZ_RUNS_shapes);; *) runs=$(FUZZ_RUNS_shape_world);; esac; \
+	        limit="-runs=$$runs -seed=$(FUZZ_SEED)"; what="$$runs inputs from seed $(FUZZ_SEED)"; \
+	    else \
+	        limit="-max_total_time=$(FUZZ_SECONDS)"; what="$(FUZZ_SECONDS) s"; \
+	    fi; \
 	    mkdir -p $$corpus tests/fuzz/seeds/$$kind tests/fuzz/regress/$$kind; \
-	    echo "== fuzz $$h: $(FUZZ_SECONDS) s"; \
-	    ./$(FUZZ_DIR)/fuzz_$$h -max_total_time=$(FUZZ_SECONDS) -timeout=20 -max_len=4096 -print_final_stats=1 \
+	    echo "== fuzz $$h: $$what"; \
+	    ./$(FUZZ_DIR)/fuzz_$$h $$limit -timeout=20 -max_len=4096 -print_final_stats=1 \
 	        -artifact_prefix=$(FUZZ_DIR)/$$h- $$corpus tests/fuzz/seeds/$$kind tests/fuzz/regress/$$kind \
 	        > $$log 2>&1; rc=$$?; \
 	    done_line=$$(grep -E '^#[0-9]+[[:space:]]+DONE' $$log | tail -n 1); \
@@ -66,7 +93,7 @@ fuzz: fuzz-build
 	    fi; \
 	    echo "$$line"; summary="$$summary$$line\n"; \
 	done; \
-	echo "== fuzz summary ($(FUZZ_SECONDS) s per harness)"; printf "$$summary"; exit $$status
+	echo "== fuzz summary ($(if $(FUZZ_FIXED),fixed campaign from seed $(FUZZ_SEED),$(FUZZ_SECONDS) s per harness))"; printf "$$summary"; exit $$status
 
 fuzz-clean:
 	rm -rf $(FUZZ_DIR)
