@@ -2496,9 +2496,10 @@ static int ga2d__incident_edge(const ga2d__hull *inc, ga2d_vec n)
     return best;
 }
 
+#define GA2D__FEATURE_FLIP ((uint32_t)1 << 16) /* the reference face is B's */
 static uint32_t ga2d__feature_id(int flip, int ia, int ib)
 {
-    return ((uint32_t)(flip != 0) << 16) | ((uint32_t)ia << 8) | (uint32_t)ib;
+    return (flip ? GA2D__FEATURE_FLIP : 0) | ((uint32_t)ia << 8) | (uint32_t)ib;
 }
 
 /* Sets point k of m from a point in A's frame (pa: on the reference side,
@@ -2954,7 +2955,7 @@ static void ga2d__flip_manifold(ga2d_manifold *m)
         ga2d_vec t = p->anchor_a;
         p->anchor_a = p->anchor_b;
         p->anchor_b = t;
-        p->id ^= (uint32_t)1 << 16;
+        p->id ^= GA2D__FEATURE_FLIP;
     }
 }
 
@@ -5953,6 +5954,7 @@ struct ga2d__contact_constraint {
     unsigned char count;         /* points */
     unsigned char hits;          /* a shape reports hits: the points' approach speeds are kept */
     unsigned char needs_extras;  /* round, conveyor or rolling: its group needs extras */
+    unsigned char incident_b;    /* sharp sides: B's corners meet A's face (not A's B's) */
     int lane;                    /* group * GA2D__LANES + lane in the lane solver */
     ga2d_real round_a, round_b;  /* the shapes' radii: their round parts (ga2d__point_now) */
     ga2d_real tangent_speed;     /* the surfaces' sliding along (ny, -nx): friction's target */
@@ -6110,6 +6112,7 @@ struct ga2d__group {
     ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
+    ga2d__w share;          /* where the point lies from A's anchor to B's (ga2d__share) */
 };
 
 /* A soft constraint seen by an implicit step (ga2d__make_soft). */
@@ -6255,6 +6258,7 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->count = (unsigned char)ct->manifold.count;
         cc->round_a = cc->round_b = cc->tangent_speed = cc->rolling = 0;
         cc->hits = cc->needs_extras = 0;
+        cc->incident_b = ct->manifold.count > 0 && !(ct->manifold.points[0].id & GA2D__FEATURE_FLIP);
         if (ct->extras) ga2d__constraint_extras(w, ct, cc);
         /* anchors from the centres, taken from the origin-relative ones so
            that no large coordinates are subtracted */
@@ -6365,8 +6369,9 @@ static void ga2d__refresh_turns(ga2d__step_context *c, int begin, int end)
 /* Point p now.  Each body carries its anchor by its motion since the step
    began (r -> r dq, dq = q q0~ refreshed per pass); the separation is the start separation plus how far
    B's anchor point moved away from A's along the normal; and the impulse
-   acts at the midpoint of the two anchor points, the one point the pair
-   shares, so that the impulses -P on A and +P on B have no moment and
+   acts at one point on the way between the two anchor points
+   (ga2d__share), the one point the pair shares, so that the impulses -P
+   on A and +P on B have no moment and
    angular momentum about any point is kept.  Anchors are returned relative
    to each centre, built from the centre-to-centre vector so that nothing
    large is subtracted.  A round shape's anchor is a core point and its
@@ -6381,6 +6386,19 @@ static GA2D__HOT ga2d_vec ga2d__round_offset(const ga2d__contact_constraint *c, 
     ga2d_real rho = side ? c->round_b : c->round_a;
     if (rho == 0) return ga2d_vec_make(0, 0);
     return ga2d_vec_scale(c->normal, side ? -(rho + p->separation / 2) : rho + p->separation / 2);
+}
+
+/* Where on e (A's anchor to B's, both carried) the shared point lies:
+   between sharp sides, at the incident side's anchor: the corner that
+   meets the other's face, which slides along the face with its body (at
+   the midpoint, the point lagged the corner by half the slide, and the
+   relax pass's 2 x 2 block, its masses made at the step's start, left a
+   sliding box a vertical speed and a spin that grew as v^2); where a side
+   is round, midway, and along the surfaces the round side's (below). */
+static GA2D__HOT ga2d_real ga2d__share(const ga2d__contact_constraint *c)
+{
+    if (c->round_a != 0 || c->round_b != 0) return GA2D__R(0.5);
+    return c->incident_b ? 1 : 0;
 }
 
 static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__contact_constraint *c, const ga2d__body_sim *a, const ga2d__body_sim *b,
@@ -6400,7 +6418,7 @@ static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__contact_constraint *c, co
     ga2d_vec da = ga2d_vec_add(ga2d_vec_sub(a->center, a->center0), ga2d_vec_sub(ra1, p->ra));
     ga2d_vec db = ga2d_vec_add(ga2d_vec_sub(b->center, b->center0), ga2d_vec_sub(rb1, p->rb));
     ga2d_vec e = ga2d_vec_sub(ga2d_vec_add(d, rb1), ra1);
-    *ra = ga2d_vec_add(ra1, ga2d_vec_scale(e, GA2D__R(0.5)));
+    *ra = ga2d_vec_add(ra1, ga2d_vec_scale(e, ga2d__share(c)));
     if ((c->round_a != 0) != (c->round_b != 0)) {
         /* one side round: along the surfaces the point is the round
            side's (a disc's impulses pass through its bottom, where the
@@ -6605,9 +6623,8 @@ static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2
         rb1y = ga2d__wadd(rb1y, g->x->oby[k]);
     }
     ga2d__w ex = ga2d__wsub(ga2d__wadd(dx, rb1x), ra1x), ey = ga2d__wsub(ga2d__wadd(dy, rb1y), ra1y);
-    ga2d__w half = ga2d__wsplat(GA2D__R(0.5));
-    r->ax = ga2d__wadd(ra1x, ga2d__wmul(ex, half));
-    r->ay = ga2d__wadd(ra1y, ga2d__wmul(ey, half));
+    r->ax = ga2d__wadd(ra1x, ga2d__wmul(ex, g->share));
+    r->ay = ga2d__wadd(ra1y, ga2d__wmul(ey, g->share));
     if (extras && g->round) { /* along the surfaces, the round side's point */
         ga2d__w en = ga2d__wdot(ex, ey, g->nx, g->ny);
         r->ax = ga2d__wadd(r->ax, ga2d__wmul(g->x->tw, ga2d__wsub(ex, ga2d__wmul(en, g->nx))));
@@ -6952,6 +6969,7 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->dx, l) = d.x;
     GA2D__LANE(g->dy, l) = d.y;
     GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
+    GA2D__LANE(g->share, l) = ga2d__share(c);
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
         GA2D__LANE(g->rax[k], l) = p->ra.x;
