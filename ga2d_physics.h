@@ -3283,6 +3283,9 @@ typedef struct ga2d__step_context {
     ga2d__soft soft, stiff;      /* contacts between moving bodies, and against a fixed one */
     ga2d_result error;           /* what the step will report */
     int error_slot;              /* the lowest slot it contained, or -1 */
+    int end_lost;                /* a sensor end event since the last step found no room: reported
+                                    as OUT_OF_MEMORY after the step, which runs in full (its
+                                    stages read `error` as their own failures) */
     int *order;                  /* the contacts to solve (pool indices), in canonical order */
     int order_capacity;
     ga2d__contact_constraint *constraints; /* theirs, in that order */
@@ -6606,8 +6609,8 @@ static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, ga2d__wmask 
    the bodies' turns so far), the anchor points have moved apart by
    e - (d0 + rB - rA), so the separation now is that along n plus the
    start separation; the second term is constant over the step and kept
-   as `adjust`.  The anchors now are the midpoint's: rA' + e/2 and that
-   less d. */
+   as `adjust`.  The anchors now are the shared point's: rA' + share e
+   and that less d. */
 static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2d__wbody *A, const ga2d__wbody *B,
                                           ga2d__wanchors *r, int extras)
 {
@@ -8079,7 +8082,7 @@ static void ga2d__sensor_events_begin(ga2d_world *w)
     if (pending > 0) memmove(w->sensor_end, w->sensor_end + (w->sensor_end_count - pending), (size_t)pending * sizeof *w->sensor_end);
     w->sensor_end_count = pending;
     w->sensor_end_pending = 0;
-    if (w->sensor_end_lost) w->step.error = GA2D_ERR_OUT_OF_MEMORY;
+    w->step.end_lost = w->sensor_end_lost;
     w->sensor_end_lost = 0;
 }
 
@@ -8203,7 +8206,7 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
     w->lock = GA2D__LOCK_STEP;
     ga2d__enter(w);
     ga2d__step(w, dt, h);
-    r = w->step.error;
+    r = w->step.end_lost ? GA2D_ERR_OUT_OF_MEMORY : w->step.error;
     w->lock = 0;
     ga2d__leave(w); /* destroyed from the force callback or an allocator hook: gone now */
     return r;
@@ -9369,8 +9372,12 @@ VERSION HISTORY (newest first)
           default body def has no polygon (a body gets shapes, or
           def.polygon as a shortcut); makers that say why they refuse;
           snapshots version 7 (shapes, sensors' overlaps, chains); inside,
-          the body in parts (its integration state apart); one-polygon
-          worlds step bit for bit as 0.8.2.
+          the body in parts (its integration state apart).  Between two
+          sharp sides the shared point is the incident corner, no longer
+          the anchors' midpoint (a frictionless box sliding on flat ground
+          kept a spurious vertical speed and spin growing as v^2), so
+          polygon worlds step differently from 0.8.2 (new pinned hashes);
+          box scenes step as fast as in 0.8.2.
    0.8.2  a def zero-initialised by hand is the defaults, switches
           included (its enable_* fields read 0 as off, and friction, sleep,
           warm starting and restitution vanished); the default functions

@@ -27,6 +27,10 @@ FUZZ_EXTRA   ?=
 FUZZ_DIR     := $(BUILD)/fuzz
 FUZZ_FIXED   ?=
 FUZZ_SEED    ?= 1
+# a fixed campaign repeats only without address randomization (the
+# comparison tracer records pointers) and without rereading the corpus
+# folder on a timer
+FUZZ_NORAND  := $(shell setarch $$(uname -m) -R true >/dev/null 2>&1 && echo setarch $$(uname -m) -R)
 # inputs per harness in a fixed campaign: about a minute each here
 FUZZ_RUNS_polygon     ?= 3000000
 FUZZ_RUNS_world       ?= 40000
@@ -69,13 +73,14 @@ fuzz: fuzz-build
 	        polygon) runs=$(FUZZ_RUNS_polygon);; world) runs=$(FUZZ_RUNS_world);; \
 	        reentry) runs=$(FUZZ_RUNS_reentry);; snapshot) runs=$(FUZZ_RUNS_snapshot);; \
 	        shapes) runs=$(FUZZ_RUNS_shapes);; *) runs=$(FUZZ_RUNS_shape_world);; esac; \
-	        limit="-runs=$$runs -seed=$(FUZZ_SEED)"; what="$$runs inputs from seed $(FUZZ_SEED)"; \
+	        limit="-runs=$$runs -seed=$(FUZZ_SEED) -reload=0"; what="$$runs inputs from seed $(FUZZ_SEED)"; \
+	        run="$(FUZZ_NORAND)"; \
 	    else \
-	        limit="-max_total_time=$(FUZZ_SECONDS)"; what="$(FUZZ_SECONDS) s"; \
+	        limit="-max_total_time=$(FUZZ_SECONDS)"; what="$(FUZZ_SECONDS) s"; run=""; \
 	    fi; \
 	    mkdir -p $$corpus tests/fuzz/seeds/$$kind tests/fuzz/regress/$$kind; \
 	    echo "== fuzz $$h: $$what"; \
-	    ./$(FUZZ_DIR)/fuzz_$$h $$limit -timeout=20 -max_len=4096 -print_final_stats=1 \
+	    $$run ./$(FUZZ_DIR)/fuzz_$$h $$limit -timeout=20 -max_len=4096 -print_final_stats=1 \
 	        -artifact_prefix=$(FUZZ_DIR)/$$h- $$corpus tests/fuzz/seeds/$$kind tests/fuzz/regress/$$kind \
 	        > $$log 2>&1; rc=$$?; \
 	    done_line=$$(grep -E '^#[0-9]+[[:space:]]+DONE' $$log | tail -n 1); \
