@@ -6112,7 +6112,8 @@ struct ga2d__group {
     ga2d__w dx, dy;         /* centre B - centre A when the step began */
     ga2d__w rax[2], ray[2], rbx[2], rby[2];
     ga2d__w adjust[2];      /* start separation - (d0 + rB - rA).n */
-    ga2d__w has[2];         /* 1 where the lane has point k, else 0 */
+    ga2d__w has2;           /* 1 where the lane has a second point, else 0 (an empty lane's
+                               first point has zero masses of itself: no inverse mass) */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
     ga2d__w share;          /* where the point lies from A's anchor to B's (ga2d__share) */
@@ -6660,7 +6661,8 @@ static GA2D__HOT void ga2d__wapply(const ga2d__group *g, ga2d__wbody *A, ga2d__w
     B->w = ga2d__wadd(B->w, ga2d__wmul(g->iib, ga2d__wsub(ga2d__wmul(r->bx, py), ga2d__wmul(r->by, px))));
 }
 
-/* ga2d__effective_mass for the lanes, zero where the point is absent. */
+/* ga2d__effective_mass for the lanes, zero where the point is absent (a
+   second point by has2; an empty lane's first has no inverse mass). */
 static GA2D__HOT ga2d__w ga2d__weffective_mass(const ga2d__group *g, int k, const ga2d__wanchors *r, ga2d__w ux, ga2d__w uy)
 {
     ga2d__w wa = ga2d__wsub(ga2d__wmul(r->ax, uy), ga2d__wmul(r->ay, ux));
@@ -6669,7 +6671,8 @@ static GA2D__HOT ga2d__w ga2d__weffective_mass(const ga2d__group *g, int k, cons
                             ga2d__wmul(ga2d__wmul(g->iib, wb), wb));
     ga2d__w zero = ga2d__wsplat(0), one = ga2d__wsplat(1);
     ga2d__wmask pos = ga2d__wgt(kk, zero);
-    return ga2d__wmul(ga2d__wsel(pos, ga2d__wdiv(one, ga2d__wsel(pos, kk, one)), zero), g->has[k]);
+    ga2d__w m = ga2d__wsel(pos, ga2d__wdiv(one, ga2d__wsel(pos, kk, one)), zero);
+    return k == 0 ? m : ga2d__wmul(m, g->has2);
 }
 
 /* x clamped to [lo, hi] lane by lane, as the scalar x > hi ? hi : (x < lo ? lo : x) */
@@ -6687,7 +6690,7 @@ static GA2D__HOT ga2d__w ga2d__wcoupling(const ga2d__group *g, const ga2d__wanch
     ga2d__w b2 = ga2d__wsub(ga2d__wmul(r[1].bx, g->ny), ga2d__wmul(r[1].by, g->nx));
     ga2d__w k = ga2d__wadd(ga2d__wadd(ga2d__wadd(g->ima, g->imb), ga2d__wmul(ga2d__wmul(g->iia, a1), a2)),
                            ga2d__wmul(ga2d__wmul(g->iib, b1), b2));
-    return ga2d__wmul(ga2d__wmul(k, g->has[0]), g->has[1]);
+    return ga2d__wmul(k, g->has2);
 }
 
 /* The two normal points of each lane solved together, as the linear
@@ -6973,6 +6976,7 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->dy, l) = d.y;
     GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
     GA2D__LANE(g->share, l) = ga2d__share(c);
+    GA2D__LANE(g->has2, l) = c->count == 2 ? 1 : 0;
     for (k = 0; k < 2; ++k) {
         const ga2d__cpoint *p = k < c->count ? &c->p[k] : &none->p[0];
         GA2D__LANE(g->rax[k], l) = p->ra.x;
@@ -6981,7 +6985,6 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
         GA2D__LANE(g->rby[k], l) = p->rb.y;
         GA2D__LANE(g->adjust[k], l) =
             p->separation - ((d.x + (p->rb.x - p->ra.x)) * c->normal.x + (d.y + (p->rb.y - p->ra.y)) * c->normal.y);
-        GA2D__LANE(g->has[k], l) = k < c->count ? 1 : 0;
         GA2D__LANE(g->nmass[k], l) = p->normal_mass;
         GA2D__LANE(g->tmass[k], l) = p->tangent_mass;
         GA2D__LANE(g->nimp[k], l) = p->normal_impulse;
