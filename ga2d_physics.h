@@ -3580,7 +3580,11 @@ static int ga2d__edge_other(const ga2d_world *w, int link)
     return (link & 1) ? c->a : c->b;
 }
 
-/* A contact for the shape pair sa < sb (their bodies differ). */
+/* x, or the largest real of its sign where it overflowed: two legal
+   materials can multiply or add past the range (an infinite cap times a
+   zero impulse is NaN, and a NaN bound clamps nothing). */
+static ga2d_real ga2d__saturate(ga2d_real x) { return x > GA2D__MAX ? GA2D__MAX : (x < -GA2D__MAX ? -GA2D__MAX : x); }
+
 /* A contact's friction: the geometric mean of its shapes' frictions.
    Each is finite, and so is the mean, but their product can overflow (a
    friction near the largest real against one above 1): an infinite
@@ -3594,10 +3598,10 @@ static ga2d_real ga2d__mix_friction(ga2d_real a, ga2d_real b)
 {
     ga2d_real p = a * b;
     if (ga2d__finite(p)) return GA2D__SQRT(p);
-    p = GA2D__SQRT(a) * GA2D__SQRT(b);
-    return ga2d__finite(p) ? p : GA2D__MAX;
+    return ga2d__saturate(GA2D__SQRT(a) * GA2D__SQRT(b));
 }
 
+/* A contact for the shape pair sa < sb (their bodies differ). */
 static int ga2d__create_contact(ga2d_world *w, int sa, int sb)
 {
     const ga2d__shape *pa = &w->shapes[sa], *pb = &w->shapes[sb];
@@ -6209,11 +6213,6 @@ static int ga2d__pre_solve(ga2d_world *w, const ga2d__contact *ct)
     return w->def.pre_solve(ga2d__shape_id_of(w, ct->shape_a), ga2d__shape_id_of(w, ct->shape_b), &ct->manifold,
                             w->def.pre_solve_context) != 0;
 }
-
-/* x, or the largest real of its sign where it overflowed: two legal
-   materials can multiply or add past the range (an infinite cap times a
-   zero impulse is NaN, and a NaN bound clamps nothing). */
-static ga2d_real ga2d__saturate(ga2d_real x) { return x > GA2D__MAX ? GA2D__MAX : (x < -GA2D__MAX ? -GA2D__MAX : x); }
 
 /* What only round shapes, conveyors, rolling resistance and hit events
    need of a constraint (a polygon world's contacts never come here). */
