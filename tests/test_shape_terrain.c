@@ -137,6 +137,23 @@ static void join_arms(double turn, double e[2][2], double n[2][2])
     n[1][0] = sin(a), n[1][1] = cos(a);
 }
 
+/* The two-arm chain turning by `turn`, on a new static body, with its
+   arms' directions and normals (join_arms). */
+static void join_chain(ga2d_world *w, double turn, double friction, double e[2][2], double n[2][2])
+{
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_chain_def cd = ga2d_default_chain_def();
+    ga2d_vec pts[3];
+    join_arms(turn, e, n);
+    pts[0] = ga2d_vec_make((ga2d_real)(ARM * e[1][0]), (ga2d_real)(ARM * e[1][1]));
+    pts[1] = ga2d_vec_make(0, 0);
+    pts[2] = ga2d_vec_make((ga2d_real)(ARM * e[0][0]), (ga2d_real)(ARM * e[0][1]));
+    cd.points = pts;
+    cd.count = 3;
+    cd.friction = (ga2d_real)friction;
+    CHECK(ga2d_chain_get_segments(w, ga2d_chain_create(w, ga2d_body_create(w, &d), &cd), NULL, 0) == 2);
+}
+
 /* Runs one case for 1.5 s (sleep off) and returns how far the body's
    centre came into the ground: the least signed distance above an arm's
    line, taken while its foot lies on that arm (within 0.95 ARM of the
@@ -150,21 +167,11 @@ static double join_run(const join_case *jc)
     ga2d_world *w = flat_world();
     ga2d_body_def d = ga2d_default_body_def();
     ga2d_shape_def sd = ga2d_default_shape_def();
-    ga2d_chain_def cd = ga2d_default_chain_def();
     double e[2][2], n[2][2], least = 1e30;
-    ga2d_vec pts[3];
-    ga2d_body_id ground, b;
+    ga2d_body_id b;
     int i, k, seen = 0;
     if (!w) return -1e30;
-    join_arms(jc->turn, e, n);
-    pts[0] = ga2d_vec_make((ga2d_real)(ARM * e[1][0]), (ga2d_real)(ARM * e[1][1]));
-    pts[1] = ga2d_vec_make(0, 0);
-    pts[2] = ga2d_vec_make((ga2d_real)(ARM * e[0][0]), (ga2d_real)(ARM * e[0][1]));
-    ground = ga2d_body_create(w, &d);
-    cd.points = pts;
-    cd.count = 3;
-    cd.friction = (ga2d_real)jc->friction;
-    CHECK(ga2d_chain_get_segments(w, ga2d_chain_create(w, ground, &cd), NULL, 0) == 2);
+    join_chain(w, jc->turn, jc->friction, e, n);
     d.type = GA2D_BODY_DYNAMIC;
     if (jc->drop) { /* straight above the right arm 0.3 m out from the join, clear of it by 2 m */
         d.position = ga2d_vec_make((ga2d_real)(0.3 * e[0][0]), (ga2d_real)(0.3 * e[0][1] + (2 + jc->size * 1.5) / n[0][1]));
@@ -371,22 +378,13 @@ static void chain_hilltop_vertex_holds(void)
         ga2d_world *w = flat_world();
         ga2d_body_def d = ga2d_default_body_def();
         ga2d_shape_def sd = ga2d_default_shape_def();
-        ga2d_chain_def cd = ga2d_default_chain_def();
-        double e[2][2], n[2][2], least = 1e30, turn = -turns_deg[ti] * PI_D / 180;
-        ga2d_vec pts[3];
-        ga2d_body_id ground, b;
+        double e[2][2], n[2][2], least = 1e30;
+        ga2d_body_id b;
         ga2d_circle c;
         int i, off = 0, most = 0;
         CHECK(w != NULL);
         if (!w) return;
-        join_arms(turn, e, n);
-        pts[0] = ga2d_vec_make((ga2d_real)(ARM * e[1][0]), (ga2d_real)(ARM * e[1][1]));
-        pts[1] = ga2d_vec_make(0, 0);
-        pts[2] = ga2d_vec_make((ga2d_real)(ARM * e[0][0]), (ga2d_real)(ARM * e[0][1]));
-        ground = ga2d_body_create(w, &d);
-        cd.points = pts;
-        cd.count = 3;
-        CHECK(ga2d_chain_get_segments(w, ga2d_chain_create(w, ground, &cd), NULL, 0) == 2);
+        join_chain(w, -turns_deg[ti] * PI_D / 180, 0.6, e, n);
         d.type = GA2D_BODY_DYNAMIC;
         /* just left of the top (on the bisector both halves would tie) */
         d.position = ga2d_vec_make((ga2d_real)(-0.01 * r), (ga2d_real)(r * sqrt(1 - 1e-4)));
