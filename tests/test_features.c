@@ -310,13 +310,16 @@ static void sleep_switch(void)
    own bottom to -x.  Friction (mu 0.6) drives the sliding between the
    surfaces to zero, so the box ends at v_x = +s in both cases: carried by
    a belt ground, or walking on a still ground with its own belt.  It
-   slips at mu g = 6 m/s^2, so it reaches |s| <= 4 within 0.67 s; from
-   1.5 s on static friction holds it there: no force acts along the belt
-   (a force would accelerate it), and each substep's friction solve aims
-   the sliding at zero exactly, so what remains is rounding: the relax
-   pass adds some 8 terms to v_x per substep, each rounded at u (|v| +
-   g h), and the next substep solves that away again:
-   |v_x - s| <= 16 u (|s| + g h) per substep, not growing. */
+   slips at mu g = 6 m/s^2, so it reaches |s| <= 4 within 0.67 s; then
+   static friction holds it: no force acts along the belt (a force would
+   accelerate it), and each substep's friction solve aims the sliding at
+   zero.  What the slip's end leaves (the soft contact's own settling,
+   through the box's tilt) decays with the contact's slow mode,
+   omega / (2 zeta) = 2 pi 45 / 20 = 14 /s: from 4 s on, e^-46 of it, far
+   under rounding.  What remains is rounding: the relax pass adds some 8
+   terms to v_x per substep, each rounded at u (|v| + g h), and the next
+   substep solves that away again: |v_x - s| <= 16 u (|s| + g h), not
+   growing; checked over 4 s to 5 s. */
 static void conveyor_steady_state(void)
 {
     static const double speeds[5] = {-3, -1, 0.5, 2, 4};
@@ -345,9 +348,9 @@ static void conveyor_steady_state(void)
             box = dynamic_body(w, 0, 0.5);
             sd.tangent_speed = on_box ? (ga2d_real)s : 0;
             CHECK(!ga2d_shape_id_is_null(add_box(w, box, &sd, 0.5, 0.5)));
-            for (i = 0; i < 150; ++i) {
+            for (i = 0; i < 300; ++i) {
                 CHECK_RESULT(ga2d_world_step(w, (ga2d_real)DT), GA2D_OK);
-                if (i >= 90) {
+                if (i >= 240) {
                     double dv = fabs((double)ga2d_body_velocity(w, box).x - s);
                     if (dv > worst) worst = dv;
                 }
@@ -559,13 +562,13 @@ static void fall_and_slide(int set_late, double friction, double restitution, sc
             done = 1;
         }
         ga2d_world_step(w, (ga2d_real)DT);
-        if (i % 30 == 29) {
+        if (i % 40 == 39) { /* three records, one per 40 steps */
             ga2d_vec c = ga2d_body_center(w, box), v = ga2d_body_velocity(w, box);
-            out->s[i / 30][0] = (double)c.x;
-            out->s[i / 30][1] = (double)c.y;
-            out->s[i / 30][2] = (double)v.x;
-            out->s[i / 30][3] = (double)v.y;
-            out->s[i / 30][4] = (double)ga2d_body_angular_velocity(w, box);
+            out->s[i / 40][0] = (double)c.x;
+            out->s[i / 40][1] = (double)c.y;
+            out->s[i / 40][2] = (double)v.x;
+            out->s[i / 40][3] = (double)v.y;
+            out->s[i / 40][4] = (double)ga2d_body_angular_velocity(w, box);
         }
     }
     if (set_late) *premise &= done;
@@ -771,6 +774,63 @@ static void shape_fat_boxes(void)
     ga2d_world_destroy(w);
 }
 
+
+/* ============================================================ restitution threshold */
+/* A ball (r 0.25, restitution 0.8) dropped onto the ground at 0.7 and 1.4
+   times the world's restitution threshold T (1 m/s by default, and 2):
+   slower than T it must not bounce, faster it must.  Dropped from a gap
+   v^2 / (2 g), it lands at v.  A bounce leaves at e v, and the ball's
+   centre rises (e v)^2 / (2 g) above where it rests: at e v >= 0.8 * 1.4
+   m/s that is >= 6.3 cm above its lowest point; no bounce, and it rises
+   no more than a slop above its lowest point (a soft contact pushes out
+   overlap of under a slop, at most that much).  The check's line is half the bounce's rise, over 6 slops
+   from both answers.  1.4 m/s bounces at T = 1 and not at T = 2. */
+static double bounce_rise(double threshold, double v)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_world *w;
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_body_id ball;
+    double rise = 0, lowest = 1e30, gap = v * v / (2 * G);
+    int i;
+    wd.restitution_threshold = (ga2d_real)threshold;
+    wd.enable_sleep = 0;
+    w = ga2d_world_create(&wd);
+    if (!w) return -1;
+    static_box(w, 0, -0.5, 5, 0.5);
+    ball = dynamic_body(w, 0, 0.25 + gap);
+    sd.restitution = (ga2d_real)0.8;
+    add_circle(w, ball, &sd, 0.25);
+    for (i = 0; i < 120; ++i) {
+        double y;
+        ga2d_world_step(w, (ga2d_real)DT);
+        y = (double)ga2d_body_center(w, ball).y - 0.25;
+        if (y < lowest) lowest = y;
+        if (y - lowest > rise) rise = y - lowest; /* above the lowest point so far */
+    }
+    ga2d_world_destroy(w);
+    return rise;
+}
+
+static void restitution_threshold_decides_bounces(void)
+{
+    static const double thresholds[2] = {1, 2}, factors[2] = {0.7, 1.4};
+    int t, k;
+    for (t = 0; t < 2; ++t)
+        for (k = 0; k < 2; ++k) {
+            double v = thresholds[t] * factors[k], ev = 0.8 * 1.4 * thresholds[0];
+            double line = ev * ev / (2 * G) / 2, rise = bounce_rise(thresholds[t], v);
+            int bounced = rise > line;
+            if (bounced != (factors[k] > 1))
+                test_fail(__FILE__, __LINE__, "threshold %.0f m/s, landing at %.1f m/s: rose %.4f m (%s expected)", thresholds[t], v,
+                          rise, factors[k] > 1 ? "a bounce" : "no bounce");
+            if (!bounced) CHECK(rise <= SLOP);
+        }
+    /* the same speed on both sides of the two thresholds */
+    CHECK(bounce_rise(1, 1.4) > 0.5 * (0.8 * 1.4) * (0.8 * 1.4) / (2 * G));
+    CHECK(bounce_rise(2, 1.4) <= SLOP);
+}
+
 void suite_features(void)
 {
     test_run("features: sensors report what falls through them, at the predicted steps", sensor_free_fall);
@@ -783,4 +843,5 @@ void suite_features(void)
     test_run("features: chain segments, their ghosts, and chain destroy", chain_segments_and_destroy);
     test_run("features: aabb and multivector helpers", aabb_and_multivector_helpers);
     test_run("features: shape fat boxes", shape_fat_boxes);
+    test_run("features: the restitution threshold decides what bounces", restitution_threshold_decides_bounces);
 }
