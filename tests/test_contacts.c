@@ -319,13 +319,13 @@ static void teleport_and_new_static(void)
     ga2d_world_destroy(w);
 }
 
-/* An allocator that fails from the k-th call on. */
+/* An allocator that fails its fail_from-th call only. */
 typedef struct failing { long calls, fail_from, live; } failing;
 static void *fail_alloc(size_t size, void *ctx)
 {
     failing *f = (failing *)ctx;
     void *p;
-    if (++f->calls >= f->fail_from) return NULL;
+    if (++f->calls == f->fail_from) return NULL;
     p = malloc(size);
     if (p) ++f->live;
     return p;
@@ -340,12 +340,12 @@ static void fail_free(void *p, size_t size, void *ctx)
 /* Contacts grow during a step, so a step can run out of memory: it says so
    (OUT_OF_MEMORY), the world stays usable and, once memory is back, the
    missing pairs are found.  Every allocation of the scenario is failed in
-   turn.  A clean run first counts the allocations each of the three steps
-   makes (cum[i]: by the end of step i); the runs are the same call for
-   call up to the failed allocation k, so the steps that end before it
-   must say OK, and the step that makes it must say OUT_OF_MEMORY (a
-   failed allocation is never swallowed); later steps meet the allocator
-   still failing and may say either. */
+   turn, alone.  A clean run first counts the allocations each of the
+   three steps makes (cum[i]: by the end of step i); the runs are the same
+   call for call up to the failed allocation k, so the steps that end
+   before it must say OK, the step that makes it must say OUT_OF_MEMORY (a
+   failed allocation is never swallowed, even when the next one succeeds),
+   and the steps after it, with memory back, OK. */
 static ga2d_world *oom_scene(failing *f)
 {
     ga2d_world_def wd = ga2d_default_world_def();
@@ -390,12 +390,12 @@ static void step_out_of_memory(void)
         ga2d_world *w = oom_scene(&f);
         int oom = 0;
         if (!w) { CHECK(!"world"); continue; }
-        f.fail_from = f.calls + k; /* fail the k-th allocation from here on */
+        f.fail_from = f.calls + k; /* fail the k-th allocation from here, alone */
         for (i = 0; i < 3; ++i) {
             ga2d_result r = ga2d_world_step(w, (ga2d_real)(1.0 / 60));
             int makes_k = k <= cum[i] && (i == 0 || k > cum[i - 1]);
             CHECK(r == GA2D_OK || r == GA2D_ERR_OUT_OF_MEMORY);
-            if (k > cum[i]) CHECK_RESULT(r, GA2D_OK); /* before the failure: as the clean run */
+            if (!makes_k) CHECK_RESULT(r, GA2D_OK); /* before the failure: as the clean run; after: memory is back */
             if (makes_k && r != GA2D_ERR_OUT_OF_MEMORY)
                 test_fail(__FILE__, __LINE__, "allocation %ld failed in step %d, which said %s", k, i, ga2d_result_string(r));
             oom |= r == GA2D_ERR_OUT_OF_MEMORY;
