@@ -723,7 +723,7 @@ static void aabb_and_multivector_helpers(void)
     m = ga2d_mv_from_bivec(bv);
     CHECK(m.s == 0 && m.e1 == 0 && m.e2 == 0 && m.e12 == (ga2d_real)-2.5);
     x = ga2d_mv_make(1, 2, 3, 4);
-    y = ga2d_mv_make(8, -1, 0.5f, 6);
+    y = ga2d_mv_make(8, -1, (ga2d_real)0.5, 6);
     m = ga2d_mv_sub(x, y);
     CHECK(m.s == -7 && m.e1 == 3 && m.e2 == (ga2d_real)2.5 && m.e12 == -2);
     m = ga2d_mv_sub(y, x);
