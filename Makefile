@@ -8,6 +8,7 @@
 #   make trade    knob sweeps, tables and plots (tests/bench/trade.mk)
 #   make bench-peers  ga2d against Box2D 2.4.1 and Chipmunk 7 (tests/bench/peers.mk)
 #   make fuzz     libFuzzer harnesses, FUZZ_SECONDS each (tests/fuzz/fuzz.mk)
+#   make mutate   planted bugs (tests/mutate/mutants.txt) the suite must catch
 #   make clean
 # Test configurations are built in parallel; the README quick start is built
 # from README.md itself.
@@ -28,7 +29,7 @@ TEST_DEP := $(TEST_SRC) tests/test.h $(wildcard tests/*.h tests/fuzz/*.h) $(HEAD
 # sdl_demo.c needs SDL2: built by `make sdl`, not by `make`
 EXAMPLES := $(filter-out $(BUILD)/examples/sdl_demo,$(patsubst examples/%.c,$(BUILD)/examples/%,$(wildcard examples/*.c)))
 
-.PHONY: all examples demo sdl test test-build test-browser bench clean check
+.PHONY: all examples demo sdl test test-build test-browser bench clean check mutate
 
 all: examples
 examples: $(EXAMPLES)
@@ -149,6 +150,13 @@ $(BUILD)/bench/%: tests/bench/%.c $(HEADER)
 
 bench: $(BENCH_BINS)
 	@for b in $(BENCH_BINS); do echo "== $$b"; ./$$b $(BUILD)/bench/$$(basename $$b).csv || exit 1; done
+
+# --- mutation check: each planted bug of tests/mutate/mutants.txt, one at a
+#     time in a copy of the header, must make the suite fail (C99 float with
+#     gcc, or double where a mutant says so).  make mutate M="name ..." runs
+#     only those named.
+mutate:
+	@CC=gcc sh tests/mutate/run.sh $(M)
 
 # --- make trade (tests/bench/trade.mk), make bench-peers (tests/bench/peers.mk),
 #     make fuzz (tests/fuzz/fuzz.mk)

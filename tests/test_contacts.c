@@ -319,13 +319,13 @@ static void teleport_and_new_static(void)
     ga2d_world_destroy(w);
 }
 
-/* An allocator that fails from the k-th call on. */
+/* An allocator that fails its fail_from-th call only. */
 typedef struct failing { long calls, fail_from, live; } failing;
 static void *fail_alloc(size_t size, void *ctx)
 {
     failing *f = (failing *)ctx;
     void *p;
-    if (++f->calls >= f->fail_from) return NULL;
+    if (++f->calls == f->fail_from) return NULL;
     p = malloc(size);
     if (p) ++f->live;
     return p;
@@ -340,45 +340,74 @@ static void fail_free(void *p, size_t size, void *ctx)
 /* Contacts grow during a step, so a step can run out of memory: it says so
    (OUT_OF_MEMORY), the world stays usable and, once memory is back, the
    missing pairs are found.  Every allocation of the scenario is failed in
-   turn. */
+   turn, alone.  A clean run first counts the allocations each of the
+   three steps makes (cum[i]: by the end of step i); the runs are the same
+   call for call up to the failed allocation k, so the steps that end
+   before it must say OK, the step that makes it must say OUT_OF_MEMORY (a
+   failed allocation is never swallowed, even when the next one succeeds),
+   and the steps after it, with memory back, OK. */
+static ga2d_world *oom_scene(failing *f)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_world *w;
+    ga2d_body_def d = ga2d_default_body_def();
+    int i;
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+    f->fail_from = 1000000;
+    wd.allocator.alloc = fail_alloc;
+    wd.allocator.free = fail_free;
+    wd.allocator.ctx = f;
+    w = ga2d_world_create(&wd);
+    if (!w) return NULL;
+    d.type = GA2D_BODY_DYNAMIC;
+    for (i = 0; i < 60; ++i) {
+        d.position = ga2d_vec_make((ga2d_real)(0.3 * (i % 10)), (ga2d_real)(0.3 * (i / 10)));
+        ga2d_body_create(w, &d);
+    }
+    return w;
+}
+
 static void step_out_of_memory(void)
 {
-    long k;
-    for (k = 1; k < 400; ++k) {
+    long k, cum[3];
+    int i;
+    {
         failing f = {0, 0, 0};
-        ga2d_world_def wd = ga2d_default_world_def();
-        ga2d_world *w;
-        ga2d_body_def d = ga2d_default_body_def();
-        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
-        int i, stepped = 0, oom = 0;
-        f.fail_from = 1000000;
-        wd.allocator.alloc = fail_alloc;
-        wd.allocator.free = fail_free;
-        wd.allocator.ctx = &f;
-        w = ga2d_world_create(&wd);
-        if (!w) { CHECK(!"world"); continue; }
-        d.type = GA2D_BODY_DYNAMIC;
-        for (i = 0; i < 60; ++i) {
-            d.position = ga2d_vec_make((ga2d_real)(0.3 * (i % 10)), (ga2d_real)(0.3 * (i / 10)));
-            ga2d_body_create(w, &d);
+        ga2d_world *w = oom_scene(&f);
+        long start;
+        CHECK(w != NULL);
+        if (!w) return;
+        start = f.calls;
+        for (i = 0; i < 3; ++i) {
+            CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+            cum[i] = f.calls - start;
         }
-        f.fail_from = f.calls + k; /* fail the k-th allocation from here on */
+        ga2d_world_destroy(w);
+        CHECK(cum[0] > 0); /* the premise: the first step allocates */
+    }
+    for (k = 1; k <= cum[2] + 1; ++k) {
+        failing f = {0, 0, 0};
+        ga2d_world *w = oom_scene(&f);
+        int oom = 0;
+        if (!w) { CHECK(!"world"); continue; }
+        f.fail_from = f.calls + k; /* fail the k-th allocation from here, alone */
         for (i = 0; i < 3; ++i) {
             ga2d_result r = ga2d_world_step(w, (ga2d_real)(1.0 / 60));
+            int makes_k = k <= cum[i] && (i == 0 || k > cum[i - 1]);
             CHECK(r == GA2D_OK || r == GA2D_ERR_OUT_OF_MEMORY);
+            if (!makes_k) CHECK_RESULT(r, GA2D_OK); /* before the failure: as the clean run; after: memory is back */
+            if (makes_k && r != GA2D_ERR_OUT_OF_MEMORY)
+                test_fail(__FILE__, __LINE__, "allocation %ld failed in step %d, which said %s", k, i, ga2d_result_string(r));
             oom |= r == GA2D_ERR_OUT_OF_MEMORY;
-            stepped += r == GA2D_OK;
         }
+        CHECK(oom == (k <= cum[2]));
         f.fail_from = 1000000;
         CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
         /* all 60 overlapping boxes: every pair whose fat boxes overlap */
         CHECK(ga2d_world_get_pairs(w, NULL, 0) > 60);
-        CHECK(stepped + oom > 0);
         ga2d_world_destroy(w);
         CHECK(f.live == 0);
-        if (!oom) break; /* k is past the scenario's last allocation */
     }
-    CHECK(k > 3 && k < 400);
 }
 
 /* The debug draw: one polygon per live body, with its id and state

@@ -38,16 +38,18 @@ typedef int fuzz_one_fn(const uint8_t *data, size_t size);
 static int cmp_names(const void *a, const void *b) { return strcmp(*(const char *const *)a, *(const char *const *)b); }
 
 /* Runs every file of FUZZ_ROOT/<kind>/<harness>/ through fn; returns how
-   many, or -1 when the directory cannot be opened. */
-static int replay_dir(const char *kind, const char *harness, fuzz_one_fn *fn)
+   many it replayed, or -1 when the directory cannot be opened.  *listed
+   gets how many files the directory holds: every one must be replayed. */
+static int replay_dir(const char *kind, const char *harness, fuzz_one_fn *fn, int *listed)
 {
 #ifdef HAVE_DIRENT
     char path[512];
     char *names[MAX_FILES];
-    int n = 0, i;
+    int n = 0, i, replayed = 0;
     DIR *dir;
     struct dirent *e;
     uint8_t *buf = (uint8_t *)malloc(FUZZ_MAX_INPUT);
+    *listed = 0;
     if (!buf) return -1;
     snprintf(path, sizeof path, "%s/%s/%s", FUZZ_ROOT, kind, harness);
     dir = opendir(path);
@@ -55,11 +57,13 @@ static int replay_dir(const char *kind, const char *harness, fuzz_one_fn *fn)
         free(buf);
         return -1;
     }
-    while ((e = readdir(dir)) != NULL && n < MAX_FILES) {
+    while ((e = readdir(dir)) != NULL) {
         size_t len = strlen(e->d_name);
         if (e->d_name[0] == '.') continue;
+        ++*listed; /* counted even past MAX_FILES, which then fails the check */
+        if (n == MAX_FILES) continue;
         names[n] = (char *)malloc(len + 1);
-        if (!names[n]) break;
+        if (!names[n]) continue;
         memcpy(names[n], e->d_name, len + 1);
         ++n;
     }
@@ -74,33 +78,50 @@ static int replay_dir(const char *kind, const char *harness, fuzz_one_fn *fn)
         CHECK(f != NULL);
         if (f) {
             size = fread(buf, 1, FUZZ_MAX_INPUT, f);
+            CHECK(!ferror(f));
             fclose(f);
             fn(buf, size);
+            ++replayed;
         }
         free(names[i]);
     }
     free(buf);
-    return n;
+    return replayed;
 #else
     (void)kind;
     (void)harness;
     (void)fn;
+    *listed = 0;
     return -1;
 #endif
 }
 
 /* Each harness: its findings and its seeds (tests/fuzz itself must be
-   there: the suite runs from the repository root; a harness with no
-   finding has no regress directory, since git keeps no empty one). */
-static void replay(const char *harness, fuzz_one_fn *fn)
+   there: the suite runs from the repository root).  A replay that found
+   fewer inputs than the repository keeps is no replay: each harness
+   names the least number of findings and seeds it holds (inputs are only
+   ever added; a harness with no finding has no regress directory, since
+   git keeps no empty one), so a deleted or emptied directory, or a run
+   from elsewhere, fails here, and every file a directory lists must have
+   been read and replayed. */
+static void replay(const char *harness, fuzz_one_fn *fn, int min_findings, int min_seeds)
 {
-    int found = replay_dir("regress", harness, fn), seeds = replay_dir("seeds", harness, fn);
+    int listed_f = 0, listed_s = 0;
+    int found = replay_dir("regress", harness, fn, &listed_f), seeds = replay_dir("seeds", harness, fn, &listed_s);
 #ifdef HAVE_DIRENT
     DIR *root = opendir(FUZZ_ROOT);
     CHECK(root != NULL);
     if (root) closedir(root);
-    CHECK(seeds > 0); /* every harness keeps a few seeds */
     if (found < 0) found = 0;
+    if (seeds < 0) seeds = 0;
+    if (found < min_findings || seeds < min_seeds)
+        test_fail(__FILE__, __LINE__, "%s: replayed %d findings and %d seeds; the repository keeps at least %d and %d", harness,
+                  found, seeds, min_findings, min_seeds);
+    CHECK(found == listed_f);
+    CHECK(seeds == listed_s);
+#else
+    (void)min_findings;
+    (void)min_seeds;
 #endif
     {
         const char *v = getenv("GA2D_TEST_VERBOSE");
@@ -115,12 +136,14 @@ static int reentry_one(const uint8_t *data, size_t size) { return fuzz_reentry_o
 static int shapes_one(const uint8_t *data, size_t size) { return fuzz_shapes_one(data, size); }
 static int shape_world_one(const uint8_t *data, size_t size) { return fuzz_shape_world_one(data, size); }
 
-static void regress_polygon(void) { replay("polygon", polygon_one); }
-static void regress_world(void) { replay("world", world_one); }
-static void regress_snapshot(void) { replay("snapshot", snapshot_one); }
-static void regress_reentry(void) { replay("reentry", reentry_one); }
-static void regress_shapes(void) { replay("shapes", shapes_one); }
-static void regress_shape_world(void) { replay("shape_world", shape_world_one); }
+/* The least numbers of findings and seeds kept in tests/fuzz/regress/ and
+   tests/fuzz/seeds/ per harness: raise them when adding inputs. */
+static void regress_polygon(void) { replay("polygon", polygon_one, 13, 8); }
+static void regress_world(void) { replay("world", world_one, 9, 6); }
+static void regress_snapshot(void) { replay("snapshot", snapshot_one, 0, 5); }
+static void regress_reentry(void) { replay("reentry", reentry_one, 8, 5); }
+static void regress_shapes(void) { replay("shapes", shapes_one, 13, 9); }
+static void regress_shape_world(void) { replay("shape_world", shape_world_one, 8, 8); }
 
 /* The empty input and a few fixed ones, which need no files. */
 static void fixed_inputs(void)
