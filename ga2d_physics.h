@@ -218,8 +218,9 @@
    points solved as one block, contact after contact until nothing
    collides (so an impact runs down a touching row: Newton's cradle).
    Then, per substep: velocities, warm start (last step's impulses, matched
-   by feature id), one pass of sequential impulses with a soft bias,
-   positions, and a relax pass without bias.  The passes run on groups of
+   by feature id), one pass of sequential impulses with a soft bias
+   (normals only), positions, and a relax pass without bias (normals, then
+   friction and rolling resistance).  The passes run on groups of
    constraints that move no body in common, one per SIMD lane, each body's
    constraints in their canonical order: what one constraint at a time
    would compute, bit for bit, several at once.  The normal impulse at a point
@@ -614,6 +615,7 @@ typedef enum ga2d_rotation_update {
                     contact_damping_ratio, push-out capped at
                     contact_push_max_velocity), then a relax pass without
                     bias: the overlap never adds energy (the default).
+                    Friction acts in the relax pass and the warm start.
      PGS_BAUMGARTE  velocity_iterations rigid passes with a position error
                     feedback (Baumgarte, 0.2 / h of the overlap past slop).
      PGS_NGS        velocity_iterations rigid passes without feedback, then
@@ -6786,7 +6788,20 @@ enum { GA2D__BIAS_NONE, GA2D__BIAS_SOFT, GA2D__BIAS_BAUMGARTE };
    accumulated and kept >= 0; then Coulomb friction, the tangent impulse
    accumulated within +-mu times the point's normal impulse.  A point still
    apart (separation s > 0) may approach by s in this substep: that is the
-   speculative contact that catches fast bodies. */
+   speculative contact that catches fast bodies.
+   The soft step's soft pass solves no friction and no rolling resistance
+   against velocity: they act in the warm start and the relax pass.  The
+   soft pass's velocities carry the push-out (the bias), which the relax
+   pass takes away again along the normals; friction solved on them turned
+   that fictitious motion into tangent impulse that stayed (a light body
+   squeezed under a heavy one tilts, its deeper corner is pushed harder,
+   and the friction of that push drove the load sideways, the error
+   growing step after step: a 400:1 plank rocked its boxes and crept 7 cm
+   in 10 s).  The soft pass only keeps the warm-started tangent impulse
+   within mu times the normal impulse it has just found, so that a point
+   letting go lets go of its friction before the positions move (else the
+   warm start's friction would act over the substep and the relax pass
+   take it back at anchors moved since: energy from nothing). */
 /* What a pass's groups share: the bias kind, switches and splatted
    constants. */
 typedef struct ga2d__pass {
@@ -6846,12 +6861,16 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda[k]), ga2d__wmul(g->ny, lambda[k]));
     }
     for (k = 0; ps->friction && k < 2; ++k) {
-        ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty), dt, cap, total;
-        if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
-        if (fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
-        dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
-        cap = ga2d__wmul(g->friction, g->nimp[k]);
-        total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
+        ga2d__w cap = ga2d__wmul(g->friction, g->nimp[k]), dt, total;
+        if (bias_kind == GA2D__BIAS_SOFT) { /* the cone only: the pass's velocities carry the bias */
+            total = ga2d__wclamp(g->timp[k], ga2d__wsub(zero, cap), cap);
+        } else {
+            ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty);
+            if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
+            if (fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
+            dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
+            total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
+        }
         dt = ga2d__wsub(total, g->timp[k]);
         g->timp[k] = total;
         ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, dt), ga2d__wmul(ty, dt));
@@ -6859,9 +6878,10 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
     if (extras && g->rolling) {
         /* rolling resistance: a torque impulse against the bodies'
            relative spin, accumulated within +-c r times the normal
-           impulse (the points' sum) */
+           impulse (the points' sum); the soft pass only keeps it within
+           the cone, as friction */
         ga2d__w cap = ga2d__wmul(g->x->rr, ga2d__wadd(g->nimp[0], g->nimp[1]));
-        ga2d__w dl = ga2d__wsub(zero, ga2d__wmul(g->x->rmass, ga2d__wsub(B.w, A.w)));
+        ga2d__w dl = bias_kind == GA2D__BIAS_SOFT ? zero : ga2d__wsub(zero, ga2d__wmul(g->x->rmass, ga2d__wsub(B.w, A.w)));
         ga2d__w total = ga2d__wclamp(ga2d__wadd(g->x->rimp, dl), ga2d__wsub(zero, cap), cap);
         dl = ga2d__wsub(total, g->x->rimp);
         g->x->rimp = total;
