@@ -231,7 +231,11 @@
    (mu mixes as sqrt(mu_a mu_b), e as max(e_a, e_b)).  Soft contacts are
    springs of contact_hertz (45 Hz, at most a quarter of the substep rate,
    twice that against static bodies) and damping ratio 10; overlap is
-   pushed out at most contact_push_max_velocity (0.8 m/s) per contact.
+   pushed out at most contact_push_max_velocity (0.8 m/s) per contact:
+   the cap bounds the speed of the push, never the load a contact
+   carries, so a heavy body squashes a light one under it and does not
+   pass through (it sinks about the mass ratio times what a body sinks
+   into its equal: the spring is made for the light one's mass).
 
    Knobs: substeps; solver kind; contact_hertz; the switches for warm
    starting, friction, restitution and sleep; ga2d_accurate_world_def()
@@ -6820,7 +6824,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
     ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
     ga2d__wbody A, B, A0, B0;
     ga2d__wanchors r[2];
-    ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero;
+    ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero, vn;
     int k;
     ga2d__wload(c->sbodies, g->a, &A);
     ga2d__wload(c->sbodies, g->b, &B);
@@ -6836,23 +6840,45 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k], extras);
         ga2d__wmask apart = ga2d__wgt(s, zero);
         ga2d__w bias = zero, mass_scale = one, impulse_scale = zero;
+        if (fresh) g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
+        vn = ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny);
         if (bias_kind == GA2D__BIAS_SOFT) {
-            bias = ga2d__wmul(soft_rate, s);
-            bias = ga2d__wsel(ga2d__wgt(ps->low, bias), ps->low, bias);
+            /* the spring in impulse: its bias's push, and the part of
+               the impulse it carries that the soft step lets go each pass
+               (impulse_scale nimp).  The bias is capped at the push-out
+               speed, but never so far that the spring could not hold its
+               load: the sum is kept >= min(capped push + let go, 0).
+               Capping the bias alone capped the load a point carries at
+               m_eff a2 v_push / h (a2 = h w (2 zeta + h w),
+               ga2d__make_soft): what is let go grows with the load, the
+               capped push could not, and a heavier load sank through at
+               a steady speed (a circle of density 1000 passed through one
+               of density 1, and once the centres had crossed, the normal
+               pushed it on: they swapped).  A load under that is pushed
+               out as before (a column of overlapped boxes, whose pushes
+               add up, is no faster) */
+            ga2d__w spring, floor;
             mass_scale = ga2d__wsel(apart, one, soft_mass);
             impulse_scale = ga2d__wsel(apart, zero, soft_impulse);
-        } else if (bias_kind == GA2D__BIAS_BAUMGARTE) {
+            inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
+            spring = ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wmul(soft_rate, s)), ga2d__wmul(impulse_scale, g->nimp[k]));
+            floor = ga2d__wadd(ga2d__wmul(inv_a[k], ps->low), ga2d__wmul(impulse_scale, g->nimp[k]));
+            floor = ga2d__wsel(ga2d__wgt(floor, zero), zero, floor);
+            spring = ga2d__wsel(ga2d__wgt(floor, spring), floor, spring);
+            spring = ga2d__wsel(apart, ga2d__wmul(inv_a[k], ga2d__wmul(s, ps->winv_h)), spring);
+            own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], vn), spring));
+            continue;
+        }
+        if (bias_kind == GA2D__BIAS_BAUMGARTE) {
             bias = ga2d__wmul(ps->baumgarte, ga2d__wadd(s, ps->slop));
             bias = ga2d__wsel(ga2d__wgt(ps->low, bias), ps->low, bias);
             bias = ga2d__wsel(ga2d__wgt(ps->nslop, s), bias, zero);
         }
         bias = ga2d__wsel(apart, ga2d__wmul(s, ps->winv_h), bias);
-        if (fresh) g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
         /* the point's own update (its impulse alone, unclamped) and
            its share of the coupling, both in the point's own scale */
         inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
-        own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny), bias)),
-                                            ga2d__wmul(impulse_scale, g->nimp[k])));
+        own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(vn, bias)), ga2d__wmul(impulse_scale, g->nimp[k])));
     }
     if (fresh) g->k12 = ga2d__wcoupling(g, r);
     ga2d__wblock(g, inv_a, own, lambda);
