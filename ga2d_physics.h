@@ -218,8 +218,9 @@
    points solved as one block, contact after contact until nothing
    collides (so an impact runs down a touching row: Newton's cradle).
    Then, per substep: velocities, warm start (last step's impulses, matched
-   by feature id), one pass of sequential impulses with a soft bias,
-   positions, and a relax pass without bias.  The passes run on groups of
+   by feature id), one pass of sequential impulses with a soft bias
+   (normals only), positions, and a relax pass without bias (normals, then
+   friction and rolling resistance).  The passes run on groups of
    constraints that move no body in common, one per SIMD lane, each body's
    constraints in their canonical order: what one constraint at a time
    would compute, bit for bit, several at once.  The normal impulse at a point
@@ -230,7 +231,11 @@
    (mu mixes as sqrt(mu_a mu_b), e as max(e_a, e_b)).  Soft contacts are
    springs of contact_hertz (45 Hz, at most a quarter of the substep rate,
    twice that against static bodies) and damping ratio 10; overlap is
-   pushed out at most contact_push_max_velocity (0.8 m/s) per contact.
+   pushed out at most contact_push_max_velocity (0.8 m/s) per contact:
+   the cap bounds the speed of the push, never the load a contact
+   carries, so a heavy body squashes a light one under it and does not
+   pass through (it sinks about the mass ratio times what a body sinks
+   into its equal: the spring is made for the light one's mass).
 
    Knobs: substeps; solver kind; contact_hertz; the switches for warm
    starting, friction, restitution and sleep; ga2d_accurate_world_def()
@@ -614,6 +619,7 @@ typedef enum ga2d_rotation_update {
                     contact_damping_ratio, push-out capped at
                     contact_push_max_velocity), then a relax pass without
                     bias: the overlap never adds energy (the default).
+                    Friction acts in the relax pass and the warm start.
      PGS_BAUMGARTE  velocity_iterations rigid passes with a position error
                     feedback (Baumgarte, 0.2 / h of the overlap past slop).
      PGS_NGS        velocity_iterations rigid passes without feedback, then
@@ -6894,7 +6900,20 @@ enum { GA2D__BIAS_NONE, GA2D__BIAS_SOFT, GA2D__BIAS_BAUMGARTE };
    accumulated and kept >= 0; then Coulomb friction, the tangent impulse
    accumulated within +-mu times the point's normal impulse.  A point still
    apart (separation s > 0) may approach by s in this substep: that is the
-   speculative contact that catches fast bodies. */
+   speculative contact that catches fast bodies.
+   The soft step's soft pass solves no friction and no rolling resistance
+   against velocity: they act in the warm start and the relax pass.  The
+   soft pass's velocities carry the push-out (the bias), which the relax
+   pass takes away again along the normals; friction solved on them turned
+   that fictitious motion into tangent impulse that stayed (a light body
+   squeezed under a heavy one tilts, its deeper corner is pushed harder,
+   and the friction of that push drove the load sideways, the error
+   growing step after step: a 400:1 plank rocked its boxes and crept 7 cm
+   in 10 s).  The soft pass only keeps the warm-started tangent impulse
+   within mu times the normal impulse it has just found, so that a point
+   letting go lets go of its friction before the positions move (else the
+   warm start's friction would act over the substep and the relax pass
+   take it back at anchors moved since: energy from nothing). */
 /* What a pass's groups share: the bias kind, switches and splatted
    constants. */
 typedef struct ga2d__pass {
@@ -6913,7 +6932,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
     ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
     ga2d__wbody A, B, A0, B0;
     ga2d__wanchors r[2];
-    ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero;
+    ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero, vn;
     ga2d__wmask still = ps->fresh ? ga2d__wgt(zero, one) : ga2d__wge(one, zero); /* none, or every lane */
     int k, fresh = ps->fresh;
     ga2d__wload(c->sbodies, g->a, &A);
@@ -6938,23 +6957,45 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k], extras);
         ga2d__wmask apart = ga2d__wgt(s, zero);
         ga2d__w bias = zero, mass_scale = one, impulse_scale = zero;
+        if (fresh) g->nmass[k] = ga2d__wsel(still, g->nmass[k], ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny));
+        vn = ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny);
         if (bias_kind == GA2D__BIAS_SOFT) {
-            bias = ga2d__wmul(soft_rate, s);
-            bias = ga2d__wsel(ga2d__wgt(ps->low, bias), ps->low, bias);
+            /* the spring in impulse: its bias's push, and the part of
+               the impulse it carries that the soft step lets go each pass
+               (impulse_scale nimp).  The bias is capped at the push-out
+               speed, but never so far that the spring could not hold its
+               load: the sum is kept >= min(capped push + let go, 0).
+               Capping the bias alone capped the load a point carries at
+               m_eff a2 v_push / h (a2 = h w (2 zeta + h w),
+               ga2d__make_soft): what is let go grows with the load, the
+               capped push could not, and a heavier load sank through at
+               a steady speed (a circle of density 1000 passed through one
+               of density 1, and once the centres had crossed, the normal
+               pushed it on: they swapped).  A load under that is pushed
+               out as before (a column of overlapped boxes, whose pushes
+               add up, is no faster) */
+            ga2d__w spring, floor;
             mass_scale = ga2d__wsel(apart, one, soft_mass);
             impulse_scale = ga2d__wsel(apart, zero, soft_impulse);
-        } else if (bias_kind == GA2D__BIAS_BAUMGARTE) {
+            inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
+            spring = ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wmul(soft_rate, s)), ga2d__wmul(impulse_scale, g->nimp[k]));
+            floor = ga2d__wadd(ga2d__wmul(inv_a[k], ps->low), ga2d__wmul(impulse_scale, g->nimp[k]));
+            floor = ga2d__wsel(ga2d__wgt(floor, zero), zero, floor);
+            spring = ga2d__wsel(ga2d__wgt(floor, spring), floor, spring);
+            spring = ga2d__wsel(apart, ga2d__wmul(inv_a[k], ga2d__wmul(s, ps->winv_h)), spring);
+            own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], vn), spring));
+            continue;
+        }
+        if (bias_kind == GA2D__BIAS_BAUMGARTE) {
             bias = ga2d__wmul(ps->baumgarte, ga2d__wadd(s, ps->slop));
             bias = ga2d__wsel(ga2d__wgt(ps->low, bias), ps->low, bias);
             bias = ga2d__wsel(ga2d__wgt(ps->nslop, s), bias, zero);
         }
         bias = ga2d__wsel(apart, ga2d__wmul(s, ps->winv_h), bias);
-        if (fresh) g->nmass[k] = ga2d__wsel(still, g->nmass[k], ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny));
         /* the point's own update (its impulse alone, unclamped) and
            its share of the coupling, both in the point's own scale */
         inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
-        own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny), bias)),
-                                            ga2d__wmul(impulse_scale, g->nimp[k])));
+        own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(vn, bias)), ga2d__wmul(impulse_scale, g->nimp[k])));
     }
     if (fresh) g->k12 = ga2d__wsel(still, g->k12, ga2d__wcoupling(g, r));
     ga2d__wblock(g, inv_a, own, lambda);
@@ -6963,12 +7004,16 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda[k]), ga2d__wmul(g->ny, lambda[k]));
     }
     for (k = 0; ps->friction && k < 2; ++k) {
-        ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty), dt, cap, total;
-        if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
-        if (fresh) g->tmass[k] = ga2d__wsel(still, g->tmass[k], ga2d__weffective_mass(g, k, &r[k], tx, ty));
-        dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
-        cap = ga2d__wmul(g->friction, g->nimp[k]);
-        total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
+        ga2d__w cap = ga2d__wmul(g->friction, g->nimp[k]), dt, total;
+        if (bias_kind == GA2D__BIAS_SOFT) { /* the cone only: the pass's velocities carry the bias */
+            total = ga2d__wclamp(g->timp[k], ga2d__wsub(zero, cap), cap);
+        } else {
+            ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty);
+            if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
+            if (fresh) g->tmass[k] = ga2d__wsel(still, g->tmass[k], ga2d__weffective_mass(g, k, &r[k], tx, ty));
+            dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
+            total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
+        }
         dt = ga2d__wsub(total, g->timp[k]);
         g->timp[k] = total;
         ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, dt), ga2d__wmul(ty, dt));
@@ -6976,9 +7021,10 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
     if (extras && g->rolling) {
         /* rolling resistance: a torque impulse against the bodies'
            relative spin, accumulated within +-c r times the normal
-           impulse (the points' sum) */
+           impulse (the points' sum); the soft pass only keeps it within
+           the cone, as friction */
         ga2d__w cap = ga2d__wmul(g->x->rr, ga2d__wadd(g->nimp[0], g->nimp[1]));
-        ga2d__w dl = ga2d__wsub(zero, ga2d__wmul(g->x->rmass, ga2d__wsub(B.w, A.w)));
+        ga2d__w dl = bias_kind == GA2D__BIAS_SOFT ? zero : ga2d__wsub(zero, ga2d__wmul(g->x->rmass, ga2d__wsub(B.w, A.w)));
         ga2d__w total = ga2d__wclamp(ga2d__wadd(g->x->rimp, dl), ga2d__wsub(zero, cap), cap);
         dl = ga2d__wsub(total, g->x->rimp);
         g->x->rimp = total;
