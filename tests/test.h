@@ -65,6 +65,7 @@ void suite_shape_world(void);
 void suite_shape_terrain(void);
 void suite_shape_dynamics(void);
 void suite_features(void);
+void suite_settle(void);
 
 #ifdef __cplusplus
 }

@@ -93,6 +93,7 @@ int main(int argc, char **argv)
     suite_shape_terrain();
     suite_shape_dynamics();
     suite_features();
+    suite_settle();
     suite_determinism();
     suite_snapshot();
     suite_containment();
