@@ -257,16 +257,21 @@
    step knows something in the scene is blowing up.
 
    Calls from inside the library's callbacks.  User code runs inside the
-   library in four places: the force callback (during ga2d_world_step),
-   the debug-draw callbacks (during ga2d_world_draw), the allocator's
-   alloc and free (during any call that allocates, and ga2d_world_destroy),
-   and nowhere else.  From there, on the same world:
+   library in five places: the force callback and the pre-solve callback
+   (both during ga2d_world_step), the debug-draw callbacks (during
+   ga2d_world_draw), the allocator's alloc and free (during any call that
+   allocates, and ga2d_world_destroy), and nowhere else.  (The pre-solve
+   callback is handed no world and a copy of the manifold: its answer is
+   its only effect.  Through a world pointer of its own the rules below
+   hold, except that forces are refused there too.)  From there, on the
+   same world:
      - getters, counters, contact lists and ga2d_world_snapshot_size read
        the world as it is (mid-step, from the force callback or an
        allocation inside a step);
      - ga2d_body_apply_force, _apply_force_to_center and _apply_torque
-       work from the force callback (they add to the field's force) and
-       are refused elsewhere;
+       work from the force callback (they add to the field's force; on a
+       sleeping body, one that is not zero wakes its island at the end of
+       the step, for the next) and are refused elsewhere;
      - every other call that would change the world (creating or
        destroying bodies, setters, impulses, stepping, drawing, snapshot
        save and load, the world's set_ and enable_ calls) is refused with
@@ -642,7 +647,12 @@ typedef enum ga2d_body_type {
    (once per substep for symplectic Euler and Verlet, four times for RK4).
    Inside it, the getters (ga2d_body_center, _velocity, ...) return the
    state being evaluated and ga2d_world_time the time of that state;
-   ga2d_body_apply_force / _apply_torque add to the field's force.  Any
+   ga2d_body_apply_force / _apply_torque add to the field's force.  A
+   sleeping body is not evaluated: a push on it that is not zero wakes its
+   island at the end of the step, and the island joins the next step (a
+   field that holds resting bodies, a planet's pull, thus wakes them each
+   time they fall asleep: skip the bodies that sleep, ga2d_body_is_awake,
+   where that is not wanted).  Any
    other change to the world is refused with GA2D_ERR_LOCKED, and
    ga2d_world_destroy waits for the step to end (see ERRORS above). */
 typedef void ga2d_force_fn(ga2d_world *world, void *context);
@@ -901,7 +911,11 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def);
 GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id);
 GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id);
 /* A sleeping body costs nothing per step and keeps its state bit for bit.
-   Touches, forces, impulses and setters wake it with its whole island. */
+   Touches, forces, impulses and setters wake it with its whole island.  A
+   force or torque that is not zero from the force callback on a sleeping
+   body wakes its island at the end of that step (the step has begun
+   without it): the island joins the next step, where the callback's
+   force acts on it. */
 GA2D_API int ga2d_body_is_awake(const ga2d_world *w, ga2d_body_id id);
 GA2D_API ga2d_result ga2d_body_set_awake(ga2d_world *w, ga2d_body_id id, int awake);
 
@@ -922,9 +936,12 @@ GA2D_API ga2d_real ga2d_body_angular_velocity(const ga2d_world *w, ga2d_body_id 
 GA2D_API ga2d_vec ga2d_body_velocity_at(const ga2d_world *w, ga2d_body_id id, ga2d_vec p);
 GA2D_API ga2d_mass ga2d_body_mass_data(const ga2d_world *w, ga2d_body_id id); /* center in body frame */
 GA2D_API ga2d_real ga2d_body_kinetic_energy(const ga2d_world *w, ga2d_body_id id);
-/* Points into the world: valid until the next call that creates a body
-   or loads a snapshot (either may move the world's arrays), or until the
-   body or the world is destroyed.  Copy the polygon to keep it. */
+/* The body's first polygon shape, or NULL.  Points into the world's
+   shapes: valid until the next call that creates a shape on any body
+   (ga2d_shape_create_*, ga2d_chain_create, ga2d_body_create with a
+   polygon) or loads a snapshot (each may move the shapes), or until that
+   shape, its body or the world is destroyed.  Copy the polygon to keep
+   it. */
 GA2D_API const ga2d_polygon *ga2d_body_polygon(const ga2d_world *w, ga2d_body_id id);
 GA2D_API void *ga2d_body_user_data(const ga2d_world *w, ga2d_body_id id);
 
@@ -996,8 +1013,11 @@ GA2D_API ga2d_shape_def ga2d_default_shape_def(void);
    ga2d_polygon_make's, DEGENERATE (a capsule whose ends coincide within
    64 eps of its size is a circle: make a circle; a segment of zero
    length; a shape too small to give a dynamic body a mass and inertia
-   whose inverses are finite), OUT_OF_MEMORY.  A segment has no area: it
-   goes on static and kinematic bodies (INVALID_ARGUMENT on a dynamic one). */
+   whose inverses are finite), MASS_OVERFLOW (the body's mass, centre,
+   inertia or its centre's velocity, summed with the new shape, would not
+   be finite: shapes each accepted can sum past the range of ga2d_real),
+   OUT_OF_MEMORY.  A segment has no area: it goes on static and kinematic
+   bodies (INVALID_ARGUMENT on a dynamic one). */
 GA2D_API ga2d_shape_id ga2d_shape_create_circle(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_circle *c);
 GA2D_API ga2d_shape_id ga2d_shape_create_capsule(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_capsule *c);
 GA2D_API ga2d_shape_id ga2d_shape_create_polygon(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_polygon *p);
@@ -1008,7 +1028,9 @@ GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body,
                                               const ga2d_geometry *g, ga2d_shape_id *out);
 /* Destroys a shape (its contacts end without events, as a body's do);
    update_body_mass 0 keeps the body's mass as it was until the next
-   shape change or ga2d_body_set_mass_data. */
+   shape change or ga2d_body_set_mass_data.  With update_body_mass, the
+   sums without the shape are checked as a creation's are
+   (MASS_OVERFLOW, nothing destroyed). */
 GA2D_API ga2d_result ga2d_shape_destroy(ga2d_world *w, ga2d_shape_id id, int update_body_mass);
 GA2D_API int ga2d_shape_is_valid(const ga2d_world *w, ga2d_shape_id id);
 GA2D_API ga2d_body_id ga2d_shape_body(const ga2d_world *w, ga2d_shape_id id);   /* null if stale */
@@ -1048,7 +1070,9 @@ GA2D_API ga2d_chain_def ga2d_default_chain_def(void);
    TOO_FEW_POINTS (under 2, or 3 for a loop), REPEATED_POINTS (two
    consecutive points within 64 eps of their size), INVALID_ARGUMENT (NULL,
    a dynamic body, negative friction or restitution), NOT_FINITE,
-   TOO_LARGE, STALE_ID, LOCKED, OUT_OF_MEMORY. */
+   TOO_LARGE, MASS_OVERFLOW (see ga2d_shape_create_checked), STALE_ID,
+   LOCKED, OUT_OF_MEMORY.  Every segment is checked as the snapshot loader
+   checks it, so a world with the chain saves a snapshot that loads. */
 GA2D_API ga2d_chain_id ga2d_chain_create(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def);
 GA2D_API ga2d_result ga2d_chain_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def, ga2d_chain_id *out);
 /* Destroys the chain's segments (a chain segment cannot be destroyed on

@@ -64,6 +64,7 @@ void suite_shape_collide(void);
 void suite_shape_world(void);
 void suite_shape_terrain(void);
 void suite_shape_dynamics(void);
+void suite_accepted(void);
 
 #ifdef __cplusplus
 }

@@ -92,6 +92,7 @@ int main(int argc, char **argv)
     suite_shape_world();
     suite_shape_terrain();
     suite_shape_dynamics();
+    suite_accepted();
     suite_determinism();
     suite_snapshot();
     suite_containment();
