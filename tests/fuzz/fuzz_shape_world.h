@@ -905,29 +905,29 @@ static void fsw_chain_points(fsw_state *s, ga2d_vec *pts, int n, int loop)
     int i;
     pts[0].x = fz_narrow((double)(int8_t)fz_u8(rd) / 16);
     pts[0].y = fz_narrow((double)(int8_t)fz_u8(rd) / 16);
-    if (kind < 4) {
+    if (kind < 3) {
         for (i = 1; i < n; ++i) {
             double a = (double)fz_u8(rd) * (6.283185307179586 / 256), len = (double)(4 + fz_u8(rd) % 60) / 32;
             pts[i] = ga2d_vec_add(pts[i - 1], ga2d_vec_make(fz_narrow(len * cos(a)), fz_narrow(len * sin(a))));
         }
-    } else if (kind < 6) {
+    } else if (kind < 5) {
         /* valleys: x steps on, y goes down and up by the slope */
         double slope = (double)(1 + fz_u8(rd) % 64) / 16, dx = (double)(4 + fz_u8(rd) % 60) / 16, dir = (kind & 1) ? -1 : 1;
         for (i = 1; i < n; ++i)
             pts[i] = ga2d_vec_add(pts[i - 1], ga2d_vec_make(fz_narrow(dir * dx), fz_narrow((i & 1 ? -1 : 1) * slope * dx)));
-    } else if (kind == 6 || !loop) {
-        /* a star round pts[0] (its first point moved out), either way */
+    } else if (kind >= 6 && !loop) {
+        /* the grid: coordinates -M, -M/2, 0, M/2, M, from a corner (where
+           an end's made-up ghost is likeliest out of range) */
+        static const unsigned corner[4] = {0, 4, 20, 24};
+        for (i = 0; i < n; ++i) {
+            unsigned g = i == 0 ? corner[fz_u8(rd) & 3] : fz_u8(rd);
+            pts[i] = ga2d_vec_make(fz_narrow((double)GA2D_MAX_COORDINATE * (double)((int)(g % 5) - 2) / 2),
+                                   fz_narrow((double)GA2D_MAX_COORDINATE * (double)((int)(g / 5 % 5) - 2) / 2));
+        }
+    } else if (kind == 5) {
+        /* a star round pts[0], either way round */
         double r1 = (double)(8 + fz_u8(rd) % 56) / 16, r2 = r1 * (double)(2 + fz_u8(rd) % 13) / 16, sense = (fz_u8(rd) & 1) ? -1 : 1;
         ga2d_vec c = pts[0];
-        if (kind == 7) {
-            /* the grid: coordinates -M, -M/2, 0, M/2, M */
-            for (i = 0; i < n; ++i) {
-                unsigned g = fz_u8(rd);
-                pts[i] = ga2d_vec_make(fz_narrow((double)GA2D_MAX_COORDINATE * (double)((int)(g % 5) - 2) / 2),
-                                       fz_narrow((double)GA2D_MAX_COORDINATE * (double)((int)(g / 5 % 5) - 2) / 2));
-            }
-            return;
-        }
         for (i = 0; i < n; ++i) {
             double a = sense * 6.283185307179586 * i / n, rr = (i & 1) ? r2 : r1;
             pts[i] = ga2d_vec_add(c, ga2d_vec_make(fz_narrow(rr * cos(a)), fz_narrow(rr * sin(a))));
