@@ -5636,10 +5636,11 @@ static void ga2d__chain_free(ga2d_world *w, int k)
 /* Segment i of a chain of n points: its ends and ghosts.  An open chain's
    end turns down a right angle (its ghost lies behind it), so the end is
    rounded over as a lone segment's is.  The made-up ghost is twice the
-   end segment's length away: apart from the end whenever the segment's
-   two points are (ga2d__ends_apart, the end's own size and the ghost's
-   being at most the two points' and twice the length), and within
-   GA2D__GHOST_BOUND, so the world's snapshot loads what it made. */
+   end segment e's length away: apart from the end whenever the two points
+   are (ga2d__ends_apart: 2|e| > 64 eps (S0 + Sg) follows from |e| > 64
+   eps (S0 + S1), the sizes S being L1 norms, as S0 <= S1 + sqrt2 |e| and
+   Sg <= S0 + 2 sqrt2 |e|), and within GA2D__GHOST_BOUND, so the world's
+   snapshot loads what it made. */
 static ga2d_chain_segment ga2d__chain_segment_at(const ga2d_chain_def *d, int i)
 {
     ga2d_chain_segment cs;
