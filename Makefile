@@ -36,16 +36,16 @@ examples: $(EXAMPLES)
 
 $(BUILD)/examples/%: examples/%.c $(HEADER) $(wildcard examples/*.h)
 	@mkdir -p $(dir $@)
-	gcc -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
+	$(CC) -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
 
 demo: $(BUILD)/examples/pyramid
 	./$(BUILD)/examples/pyramid
 
-# The interactive SDL2 demo (scenes 1-5, drag, throw, toggles; see the file).
+# The interactive SDL2 demo (ten scenes, keys 1-9 and 0; drag, throw, toggles; see the file).
 sdl: examples/sdl_demo.c $(HEADER)
 	@command -v sdl2-config >/dev/null 2>&1 || { echo "make sdl needs SDL2 development files: apt-get install libsdl2-dev"; exit 1; }
 	@mkdir -p $(BUILD)/examples
-	gcc -std=c99 $(OPT) $(WARN) $(INC) examples/sdl_demo.c -o $(BUILD)/examples/sdl_demo $$(sdl2-config --cflags --libs) $(LIBS)
+	$(CC) -std=c99 $(OPT) $(WARN) $(INC) examples/sdl_demo.c -o $(BUILD)/examples/sdl_demo $$(sdl2-config --cflags --libs) $(LIBS)
 
 # The pyramid's SVG in headless Chromium (needs chromium and imagemagick).
 test-browser: demo
@@ -83,8 +83,19 @@ $(BUILD)/readme/quickstart.c: README.md
 	awk '/^## Quick start/{q=1} q&&/^```c$$/{f=1;next} f&&/^```$$/{exit} f' README.md > $@
 	@test -s $@ || { echo "README.md has no quick start block"; exit 1; }
 $(BUILD)/readme/quickstart: $(BUILD)/readme/quickstart.c $(HEADER)
-	gcc -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
-	g++ -std=c++11 -x c++ $(OPT) $(WARN) $(INC) $< -x none -o $@-cxx $(LIBS)
+	$(CC) -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
+	$(CXX) -std=c++11 -x c++ $(OPT) $(WARN) $(INC) $< -x none -o $@-cxx $(LIBS)
+
+# The README's shapes snippet (a ball, a chain on a ground, a sensor), cut
+# out of README.md, runs inside tests/readme_shapes.c: it must build as C99
+# and C++11 and make what it says.
+$(BUILD)/readme/shapes_snippet.inc: README.md
+	@mkdir -p $(dir $@)
+	awk '/^### Shapes:/{q=1} q&&/^```c$$/{f=1;next} f&&/^```$$/{exit} f' README.md > $@
+	@test -s $@ || { echo "README.md has no shapes block"; exit 1; }
+$(BUILD)/readme/shapes: tests/readme_shapes.c $(BUILD)/readme/shapes_snippet.inc $(HEADER)
+	$(CC) -std=c99 $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -o $@ $(LIBS)
+	$(CXX) -std=c++11 -x c++ $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -x none -o $@-cxx $(LIBS)
 
 # Determinism (issue 8): the mixed scene of tests/determinism_scene.h must
 # hash the same in every build of one precision: gcc and clang, C and C++,
@@ -115,13 +126,14 @@ $(BUILD)/det/%: tests/determinism.c tests/determinism_scene.h $(HEADER)
 	@mkdir -p $(dir $@)
 	$(DET_CC_$(word 2,$(subst -, ,$*))) $(DET_FLAGS_$(word 1,$(subst -, ,$*))) -$(word 3,$(subst -, ,$*)) -ffp-contract=off $(WARN) $(INC) $< -x none -o $@ $(LIBS)
 
-test-build: $(TEST_BINS) $(BUILD)/readme/quickstart $(DET_BINS)
+test-build: $(TEST_BINS) $(BUILD)/readme/quickstart $(BUILD)/readme/shapes $(DET_BINS)
 
 # Runs every configuration (built in parallel), prints each one's summary,
 # and ends with the total line "N passed, N failed".
 test:
 	@$(MAKE) --no-print-directory -j$(NPROC) test-build
 	@echo "README quick start:" && ./$(BUILD)/readme/quickstart && ./$(BUILD)/readme/quickstart-cxx >/dev/null
+	@./$(BUILD)/readme/shapes && ./$(BUILD)/readme/shapes-cxx && echo "README shapes snippet: built and ran (C99, C++11)"
 	@echo "determinism: one hash per precision over $(words $(DET_BINS)) builds" && \
 	  for p in float double; do \
 	    for b in $(BUILD)/det/$$p-*; do ./$$b || { echo "  $$b: churn changed the scene"; exit 1; }; done | sort | uniq -c; \
@@ -146,7 +158,7 @@ BENCH_BINS := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
 $(BUILD)/bench/%: tests/bench/%.c $(HEADER)
 	@mkdir -p $(dir $@)
-	gcc -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
+	$(CC) -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
 
 bench: $(BENCH_BINS)
 	@for b in $(BENCH_BINS); do echo "== $$b"; ./$$b $(BUILD)/bench/$$(basename $$b).csv || exit 1; done

@@ -262,16 +262,21 @@
    step knows something in the scene is blowing up.
 
    Calls from inside the library's callbacks.  User code runs inside the
-   library in four places: the force callback (during ga2d_world_step),
-   the debug-draw callbacks (during ga2d_world_draw), the allocator's
-   alloc and free (during any call that allocates, and ga2d_world_destroy),
-   and nowhere else.  From there, on the same world:
+   library in five places: the force callback and the pre-solve callback
+   (both during ga2d_world_step), the debug-draw callbacks (during
+   ga2d_world_draw), the allocator's alloc and free (during any call that
+   allocates, and ga2d_world_destroy), and nowhere else.  (The pre-solve
+   callback is handed no world and a copy of the manifold: its answer is
+   its only effect.  Through a world pointer of its own the rules below
+   hold, except that forces are refused there too.)  From there, on the
+   same world:
      - getters, counters, contact lists and ga2d_world_snapshot_size read
        the world as it is (mid-step, from the force callback or an
        allocation inside a step);
      - ga2d_body_apply_force, _apply_force_to_center and _apply_torque
-       work from the force callback (they add to the field's force) and
-       are refused elsewhere;
+       work from the force callback (they add to the field's force; on a
+       sleeping body, one that is not zero wakes its island at the end of
+       the step, for the next) and are refused elsewhere;
      - every other call that would change the world (creating or
        destroying bodies, setters, impulses, stepping, drawing, snapshot
        save and load, the world's set_ and enable_ calls) is refused with
@@ -350,6 +355,8 @@ typedef enum ga2d_result {
     GA2D_ERR_BAD_SNAPSHOT,      /* truncated, corrupted, another version or
                                    another build's snapshot                 */
     GA2D_ERR_BUFFER_TOO_SMALL,  /* the snapshot does not fit the buffer     */
+    GA2D_ERR_MASS_OVERFLOW,     /* a body's mass, centre or inertia summed
+                                   over its shapes would not be finite      */
     GA2D_RESULT_COUNT
 } ga2d_result;
 
@@ -446,7 +453,10 @@ typedef struct ga2d_segment { ga2d_vec point1, point2; } ga2d_segment;
 /* A segment of a chain: its neighbours' far ends (ghost1 before point1,
    ghost2 after point2) let a body slide across the joins without catching.
    One-sided: it pushes only toward its left, the side its normal
-   (point2 - point1) e12 points to. */
+   (point2 - point1) e12 points to.  A ghost gives only a direction: at an
+   open end of a chain it is made up, at a right angle behind the end and
+   twice the end segment's length from it, so it may lie up to
+   5 GA2D_MAX_COORDINATE out (the end's M plus twice a segment's 2 M). */
 typedef struct ga2d_chain_segment { ga2d_vec ghost1; ga2d_segment segment; ga2d_vec ghost2; } ga2d_chain_segment;
 
 typedef enum ga2d_shape_type {
@@ -643,7 +653,12 @@ typedef enum ga2d_body_type {
    (once per substep for symplectic Euler and Verlet, four times for RK4).
    Inside it, the getters (ga2d_body_center, _velocity, ...) return the
    state being evaluated and ga2d_world_time the time of that state;
-   ga2d_body_apply_force / _apply_torque add to the field's force.  Any
+   ga2d_body_apply_force / _apply_torque add to the field's force.  A
+   sleeping body is not evaluated: a push on it that is not zero wakes its
+   island at the end of the step, and the island joins the next step (a
+   field that holds resting bodies, a planet's pull, thus wakes them each
+   time they fall asleep: skip the bodies that sleep, ga2d_body_is_awake,
+   where that is not wanted).  Any
    other change to the world is refused with GA2D_ERR_LOCKED, and
    ga2d_world_destroy waits for the step to end (see ERRORS above). */
 typedef void ga2d_force_fn(ga2d_world *world, void *context);
@@ -724,7 +739,8 @@ typedef void ga2d_force_fn(ga2d_world *world, void *context);
    before B; the normal points from A to B) and the manifold: return 0 and
    the contact does not push this step (a one-way platform: 0 when the
    body comes from below, normal.y of the platform's side < 0).  The world
-   is locked: read it, change nothing. */
+   is locked: read it, change nothing.  The manifold is a copy, the
+   callback's own while it runs: what it writes there reaches nothing. */
 struct ga2d_manifold;
 typedef int ga2d_pre_solve_fn(ga2d_shape_id shape_a, ga2d_shape_id shape_b, const struct ga2d_manifold *m, void *context);
 
@@ -901,7 +917,11 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def);
 GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id);
 GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id);
 /* A sleeping body costs nothing per step and keeps its state bit for bit.
-   Touches, forces, impulses and setters wake it with its whole island. */
+   Touches, forces, impulses and setters wake it with its whole island.  A
+   force or torque that is not zero from the force callback on a sleeping
+   body wakes its island at the end of that step (the step has begun
+   without it): the island joins the next step, where the callback's
+   force acts on it. */
 GA2D_API int ga2d_body_is_awake(const ga2d_world *w, ga2d_body_id id);
 GA2D_API ga2d_result ga2d_body_set_awake(ga2d_world *w, ga2d_body_id id, int awake);
 
@@ -922,9 +942,12 @@ GA2D_API ga2d_real ga2d_body_angular_velocity(const ga2d_world *w, ga2d_body_id 
 GA2D_API ga2d_vec ga2d_body_velocity_at(const ga2d_world *w, ga2d_body_id id, ga2d_vec p);
 GA2D_API ga2d_mass ga2d_body_mass_data(const ga2d_world *w, ga2d_body_id id); /* center in body frame */
 GA2D_API ga2d_real ga2d_body_kinetic_energy(const ga2d_world *w, ga2d_body_id id);
-/* Points into the world: valid until the next call that creates a body
-   or loads a snapshot (either may move the world's arrays), or until the
-   body or the world is destroyed.  Copy the polygon to keep it. */
+/* The body's first polygon shape, or NULL.  Points into the world's
+   shapes: valid until the next call that creates a shape on any body
+   (ga2d_shape_create_*, ga2d_chain_create, ga2d_body_create with a
+   polygon) or loads a snapshot (each may move the shapes), or until that
+   shape, its body or the world is destroyed.  Copy the polygon to keep
+   it. */
 GA2D_API const ga2d_polygon *ga2d_body_polygon(const ga2d_world *w, ga2d_body_id id);
 GA2D_API void *ga2d_body_user_data(const ga2d_world *w, ga2d_body_id id);
 
@@ -996,8 +1019,11 @@ GA2D_API ga2d_shape_def ga2d_default_shape_def(void);
    ga2d_polygon_make's, DEGENERATE (a capsule whose ends coincide within
    64 eps of its size is a circle: make a circle; a segment of zero
    length; a shape too small to give a dynamic body a mass and inertia
-   whose inverses are finite), OUT_OF_MEMORY.  A segment has no area: it
-   goes on static and kinematic bodies (INVALID_ARGUMENT on a dynamic one). */
+   whose inverses are finite), MASS_OVERFLOW (the body's mass, centre,
+   inertia or its centre's velocity, summed with the new shape, would not
+   be finite: shapes each accepted can sum past the range of ga2d_real),
+   OUT_OF_MEMORY.  A segment has no area: it goes on static and kinematic
+   bodies (INVALID_ARGUMENT on a dynamic one). */
 GA2D_API ga2d_shape_id ga2d_shape_create_circle(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_circle *c);
 GA2D_API ga2d_shape_id ga2d_shape_create_capsule(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_capsule *c);
 GA2D_API ga2d_shape_id ga2d_shape_create_polygon(ga2d_world *w, ga2d_body_id body, const ga2d_shape_def *def, const ga2d_polygon *p);
@@ -1008,7 +1034,9 @@ GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body,
                                               const ga2d_geometry *g, ga2d_shape_id *out);
 /* Destroys a shape (its contacts end without events, as a body's do);
    update_body_mass 0 keeps the body's mass as it was until the next
-   shape change or ga2d_body_set_mass_data. */
+   shape change or ga2d_body_set_mass_data.  With update_body_mass, the
+   sums without the shape are checked as a creation's are
+   (MASS_OVERFLOW, nothing destroyed). */
 GA2D_API ga2d_result ga2d_shape_destroy(ga2d_world *w, ga2d_shape_id id, int update_body_mass);
 GA2D_API int ga2d_shape_is_valid(const ga2d_world *w, ga2d_shape_id id);
 GA2D_API ga2d_body_id ga2d_shape_body(const ga2d_world *w, ga2d_shape_id id);   /* null if stale */
@@ -1048,7 +1076,9 @@ GA2D_API ga2d_chain_def ga2d_default_chain_def(void);
    TOO_FEW_POINTS (under 2, or 3 for a loop), REPEATED_POINTS (two
    consecutive points within 64 eps of their size), INVALID_ARGUMENT (NULL,
    a dynamic body, negative friction or restitution), NOT_FINITE,
-   TOO_LARGE, STALE_ID, LOCKED, OUT_OF_MEMORY. */
+   TOO_LARGE, MASS_OVERFLOW (see ga2d_shape_create_checked), STALE_ID,
+   LOCKED, OUT_OF_MEMORY.  Every segment is checked as the snapshot loader
+   checks it, so a world with the chain saves a snapshot that loads. */
 GA2D_API ga2d_chain_id ga2d_chain_create(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def);
 GA2D_API ga2d_result ga2d_chain_create_checked(ga2d_world *w, ga2d_body_id body, const ga2d_chain_def *def, ga2d_chain_id *out);
 /* Destroys the chain's segments (a chain segment cannot be destroyed on
@@ -1331,6 +1361,7 @@ GA2D_API const char *ga2d_result_string(ga2d_result r)
     case GA2D_ERR_LOCKED: return "the world is locked while it steps";
     case GA2D_ERR_BAD_SNAPSHOT: return "snapshot is truncated, corrupted or from another version or build";
     case GA2D_ERR_BUFFER_TOO_SMALL: return "buffer too small for the snapshot";
+    case GA2D_ERR_MASS_OVERFLOW: return "the body's mass, centre or inertia summed over its shapes would not be finite";
     case GA2D_RESULT_COUNT: break;
     }
     return "unknown result";
@@ -3305,6 +3336,7 @@ typedef struct ga2d__body {
     int shape_head, shape_tail;  /* its shapes in creation order (ga2d__shape.next), or -1 */
     int shape_count;
     int island;                  /* union-find parent while islands form */
+    int wake_request;            /* asleep, pushed by the force field: wakes at the step's end */
     ga2d_real sleep_time, island_rest;
     void *user_data;
     /* its mass */
@@ -3434,6 +3466,7 @@ struct ga2d_world {
     double time, eval_time;
     int lock;                    /* GA2D__LOCK_* bits: why changes are refused now */
     int depth;                   /* entry points under way that may run user code */
+    int wake_requests;           /* bodies with wake_request set, this step */
     int destroy_pending;         /* ga2d_world_destroy came from user code: at depth 0 */
     ga2d_allocator mem;          /* the user's allocator behind the lock (ga2d__hook_alloc) */
     uint32_t tag;                /* this world's mark in its body ids */
@@ -4701,6 +4734,20 @@ static int ga2d__ends_apart(ga2d_vec p1, ga2d_vec p2)
     return ga2d_vec_length(ga2d_vec_sub(p2, p1)) > 64 * GA2D__EPS * size && ga2d_vec_normalize(ga2d_vec_sub(p2, p1), NULL) != 0;
 }
 
+/* How far out a chain's ghost may lie, per axis: a made-up one is an end
+   (within M) less twice its segment turned (within 2 M per axis), and
+   rounding never passes the bound, 5 M being exact in ga2d_real. */
+#define GA2D__GHOST_BOUND (5 * GA2D__R(GA2D_MAX_COORDINATE))
+
+/* A ghost beside its end: finite, within GA2D__GHOST_BOUND, and apart
+   from the end so that the two make a direction. */
+static ga2d_result ga2d__ghost_check(ga2d_vec ghost, ga2d_vec end)
+{
+    if (!ga2d__finite_vec(ghost)) return GA2D_ERR_NOT_FINITE;
+    if (!(GA2D__FABS(ghost.x) <= GA2D__GHOST_BOUND && GA2D__FABS(ghost.y) <= GA2D__GHOST_BOUND)) return GA2D_ERR_TOO_LARGE;
+    return ga2d__ends_apart(ghost, end) ? GA2D_OK : GA2D_ERR_REPEATED_POINTS;
+}
+
 /* A shape's geometry and density on a body of the given type, checked
    into *out (a polygon rebuilt from its vertices, as ga2d_polygon_make
    would make it).  A dynamic body's shape of positive density must have a
@@ -4741,12 +4788,11 @@ static ga2d_result ga2d__geometry_check(const ga2d_geometry *g, int body_type, g
     case GA2D_SHAPE_CHAIN_SEGMENT: {
         const ga2d_chain_segment *cs = &g->as.chain_segment;
         c.as.chain_segment = *cs;
-        if ((r = ga2d__point_check(cs->ghost1)) == GA2D_OK && (r = ga2d__point_check(cs->segment.point1)) == GA2D_OK &&
-            (r = ga2d__point_check(cs->segment.point2)) == GA2D_OK && (r = ga2d__point_check(cs->ghost2)) == GA2D_OK)
+        if ((r = ga2d__point_check(cs->segment.point1)) == GA2D_OK && (r = ga2d__point_check(cs->segment.point2)) == GA2D_OK &&
+            (r = ga2d__ghost_check(cs->ghost1, cs->segment.point1)) == GA2D_OK &&
+            (r = ga2d__ghost_check(cs->ghost2, cs->segment.point2)) == GA2D_OK)
             r = body_type == GA2D_BODY_DYNAMIC ? GA2D_ERR_INVALID_ARGUMENT
-                : ga2d__ends_apart(cs->segment.point1, cs->segment.point2) && ga2d__ends_apart(cs->ghost1, cs->segment.point1) &&
-                        ga2d__ends_apart(cs->segment.point2, cs->ghost2)
-                    ? GA2D_OK : GA2D_ERR_REPEATED_POINTS;
+                : ga2d__ends_apart(cs->segment.point1, cs->segment.point2) ? GA2D_OK : GA2D_ERR_REPEATED_POINTS;
         memset(&m, 0, sizeof m);
         break;
     }
@@ -4850,53 +4896,126 @@ static ga2d_real ga2d__shape_reach(const ga2d__shape *s, ga2d_vec c)
     }
 }
 
-/* The body's mass, centre and inertia as the sum over its shapes, about
-   the first shape's centre c0 so that one shape's data are taken as they
-   are: M = sum m_i, C = c0 + sum m_i (c_i - c0) / M, and by parallel axes
-   I = sum I_i + m_i |c_i - C|^2.  Static and kinematic bodies take the
-   centroid of their shapes' areas (density 1) and no mass.  A dynamic body
-   whose shapes have no mass gets mass 1 and no inertia (it does not turn)
-   until a shape or ga2d_body_set_mass_data gives it some.  The origin
-   stays where it is (the centre moves with the rigid motion, so its
-   velocity becomes v + (C' - C) Omega), and the extent is refreshed. */
+/* The shapes a body's mass sums: its list less shape `skip` and the
+   segments of chain `skip_chain` (-1: none), then `extra` (NULL: none), a
+   shape about to join the list's tail. */
+typedef struct ga2d__shape_walk {
+    const ga2d_world *w;
+    int k, skip, skip_chain;
+    const ga2d__shape *extra;
+} ga2d__shape_walk;
+
+static const ga2d__shape *ga2d__walk_next(ga2d__shape_walk *it)
+{
+    const ga2d__shape *e = it->extra;
+    while (it->k >= 0) {
+        const ga2d__shape *sh = &it->w->shapes[it->k];
+        int k = it->k;
+        it->k = sh->next;
+        if (k != it->skip && (it->skip_chain < 0 || sh->chain != it->skip_chain)) return sh;
+    }
+    it->extra = NULL;
+    return e;
+}
+
+/* A body's mass properties as its shapes sum them, and its centre's new
+   place and velocity. */
+typedef struct ga2d__mass_sum {
+    ga2d_real mass, inertia;   /* as the body keeps them */
+    ga2d_vec local_center, center, v;
+} ga2d__mass_sum;
+
+/* The body's mass, centre and inertia as the sum over its shapes (those
+   ga2d__walk_next gives), about the first shape's centre c0 so that one
+   shape's data are taken as they are: M = sum m_i, C = c0 + sum m_i (c_i
+   - c0) / M, and by parallel axes I = sum I_i + m_i |c_i - C|^2.  Static
+   and kinematic bodies take the centroid of their shapes' areas (density
+   1) and no mass.  A dynamic body whose shapes have no mass gets mass 1
+   and no inertia (it does not turn) until a shape or
+   ga2d_body_set_mass_data gives it some.  The origin stays where it is
+   (the centre moves with the rigid motion, so its velocity becomes v +
+   (C' - C) Omega).  GA2D_ERR_MASS_OVERFLOW when a sum, the centre, its
+   place or velocity, or an inverse would not be finite: shapes each
+   accepted (each finite, within the coordinate bound) can sum past the
+   range of ga2d_real, and the step could not recover from it. */
+static ga2d_result ga2d__mass_sum_of(const ga2d_world *w, int slot, ga2d_vec origin, int skip, int skip_chain,
+                                     const ga2d__shape *extra, ga2d__mass_sum *out)
+{
+    const ga2d__body *b = &w->bodies[slot];
+    int dynamic = b->type == GA2D_BODY_DYNAMIC, count = 0;
+    ga2d_real M = 0, I = 0;
+    ga2d_vec c0 = ga2d_vec_make(0, 0), C, moment = ga2d_vec_make(0, 0);
+    const ga2d__shape *sh;
+    ga2d__shape_walk it;
+    it.w = w;
+    it.k = b->shape_head;
+    it.skip = skip;
+    it.skip_chain = skip_chain;
+    it.extra = extra;
+    while ((sh = ga2d__walk_next(&it)) != NULL) {
+        ga2d_mass m = ga2d__shape_mass(sh, sh->is_sensor ? 0 : dynamic ? sh->density : 1);
+        if (count++ == 0) c0 = m.center;
+        else moment = ga2d_vec_add(moment, ga2d_vec_scale(ga2d_vec_sub(m.center, c0), m.mass));
+        M += m.mass;
+    }
+    if (M > 0 && count > 1 && !ga2d__finite_vec(moment) && ga2d__finite(M)) {
+        /* the moment about c0 passed the range (a heavy shape far from a
+           light first one) while the centre need not: sum m_i / M (c_i -
+           c0) instead, each term within the shapes' span (the plain sum
+           keeps its bits wherever it is finite) */
+        moment = ga2d_vec_make(0, 0);
+        it.k = b->shape_head;
+        it.extra = extra;
+        while ((sh = ga2d__walk_next(&it)) != NULL) {
+            ga2d_mass m = ga2d__shape_mass(sh, sh->is_sensor ? 0 : dynamic ? sh->density : 1);
+            moment = ga2d_vec_add(moment, ga2d_vec_scale(ga2d_vec_sub(m.center, c0), m.mass / M));
+        }
+        C = ga2d_vec_add(c0, moment);
+    } else {
+        C = M > 0 && count > 1 ? ga2d_vec_add(c0, ga2d_vec_scale(moment, 1 / M)) : c0;
+    }
+    it.k = b->shape_head;
+    it.extra = extra;
+    while (dynamic && (sh = ga2d__walk_next(&it)) != NULL) {
+        ga2d_mass m = ga2d__shape_mass(sh, sh->is_sensor ? 0 : sh->density);
+        I += count > 1 ? m.inertia + m.mass * ga2d_vec_length_sq(ga2d_vec_sub(m.center, C)) : m.inertia;
+    }
+    out->local_center = C;
+    out->center = ga2d_vec_add(origin, ga2d_rotate(b->sim.q, C));
+    out->v = ga2d_vec_add(b->sim.v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(out->center, b->sim.center)), b->sim.w));
+    out->mass = dynamic ? (M > 0 ? M : 1) : 0;
+    out->inertia = dynamic && M > 0 ? I : 0;
+    if (!ga2d__finite(M) || !ga2d__finite(I) || !ga2d__finite_vec(C) || !ga2d__finite_vec(out->center) || !ga2d__finite_vec(out->v) ||
+        (dynamic && (!ga2d__finite(1 / out->mass) || (out->inertia > 0 && !ga2d__finite(1 / out->inertia)))))
+        return GA2D_ERR_MASS_OVERFLOW;
+    return GA2D_OK;
+}
+
+/* The body takes its shapes' mass properties (ga2d__mass_sum_of, checked
+   by the caller), and its extent is refreshed. */
 static void ga2d__update_mass(ga2d_world *w, int slot, ga2d_vec origin)
 {
     ga2d__body *b = &w->bodies[slot];
-    int dynamic = b->type == GA2D_BODY_DYNAMIC, k;
-    ga2d_real M = 0, I = 0;
-    ga2d_vec c0 = ga2d_vec_make(0, 0), C, center, moment = ga2d_vec_make(0, 0);
-    for (k = b->shape_head; k >= 0; k = w->shapes[k].next) {
-        const ga2d__shape *sh = &w->shapes[k];
-        ga2d_mass m = ga2d__shape_mass(sh, sh->is_sensor ? 0 : dynamic ? sh->density : 1);
-        if (k == b->shape_head) c0 = m.center;
-        M += m.mass;
-        if (k != b->shape_head) moment = ga2d_vec_add(moment, ga2d_vec_scale(ga2d_vec_sub(m.center, c0), m.mass));
-    }
-    C = M > 0 && b->shape_count > 1 ? ga2d_vec_add(c0, ga2d_vec_scale(moment, 1 / M)) : c0;
-    if (!(M > 0) && b->shape_count > 1) C = c0;
-    for (k = b->shape_head; k >= 0 && dynamic; k = w->shapes[k].next) {
-        const ga2d__shape *sh = &w->shapes[k];
-        ga2d_mass m = ga2d__shape_mass(sh, sh->is_sensor ? 0 : sh->density);
-        I += b->shape_count > 1 ? m.inertia + m.mass * ga2d_vec_length_sq(ga2d_vec_sub(m.center, C)) : m.inertia;
-    }
-    b->sim.local_center = C;
-    center = ga2d_vec_add(origin, ga2d_rotate(b->sim.q, C));
-    b->sim.v = ga2d_vec_add(b->sim.v, ga2d_vec_scale(ga2d_vec_perp(ga2d_vec_sub(center, b->sim.center)), b->sim.w));
-    b->sim.center = center;
-    b->sim.center0 = center;
+    ga2d__mass_sum s;
+    int k;
+    ga2d__mass_sum_of(w, slot, origin, -1, -1, NULL, &s);
+    b->sim.local_center = s.local_center;
+    b->sim.v = s.v;
+    b->sim.center = s.center;
+    b->sim.center0 = s.center;
     b->sim.q0 = b->sim.q;
     b->sim.dq = ga2d_rotor_identity();
-    b->mass = b->inertia = b->sim.inv_mass = b->sim.inv_inertia = 0;
-    if (dynamic) {
-        b->mass = M > 0 ? M : 1;
+    b->mass = s.mass;
+    b->inertia = s.inertia;
+    b->sim.inv_mass = b->sim.inv_inertia = 0;
+    if (b->type == GA2D_BODY_DYNAMIC) {
         b->sim.inv_mass = 1 / b->mass;
-        b->inertia = M > 0 ? I : 0;
         b->sim.inv_inertia = b->fixed_rotation || !(b->inertia > 0) ? 0 : 1 / b->inertia;
         if (b->fixed_rotation) b->sim.w = 0;
     }
     b->extent = 0;
     for (k = b->shape_head; k >= 0; k = w->shapes[k].next) {
-        ga2d_real d = ga2d__shape_reach(&w->shapes[k], C);
+        ga2d_real d = ga2d__shape_reach(&w->shapes[k], s.local_center);
         b->extent = d > b->extent ? d : b->extent;
     }
     b->sim.field_valid = 0;
@@ -5331,6 +5450,17 @@ GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body,
         return GA2D_ERR_NOT_FINITE;
     if (d.density < 0 || d.friction < 0 || d.restitution < 0 || d.rolling_resistance < 0) return GA2D_ERR_INVALID_ARGUMENT;
     if ((r = ga2d__geometry_check(g, b->type, d.density, &clean)) != GA2D_OK) return r;
+    {
+        /* the body's sums with the shape added must stay finite */
+        ga2d__shape extra;
+        ga2d__mass_sum s;
+        memset(&extra, 0, sizeof extra);
+        extra.geom = clean;
+        extra.density = d.density;
+        extra.is_sensor = d.is_sensor != 0;
+        extra.chain = -1;
+        if ((r = ga2d__mass_sum_of(w, ga2d__slot(body), ga2d__body_origin(b), -1, -1, &extra, &s)) != GA2D_OK) return r;
+    }
     ga2d__enter(w);
     if (!ga2d__shape_reserve(w, b->type != GA2D_BODY_STATIC)) {
         ga2d__leave(w);
@@ -5390,6 +5520,13 @@ GA2D_API ga2d_result ga2d_shape_destroy(ga2d_world *w, ga2d_shape_id id, int upd
     if (r != GA2D_OK) return r;
     if (sh->type == GA2D_SHAPE_CHAIN_SEGMENT) return GA2D_ERR_INVALID_ARGUMENT; /* ga2d_chain_destroy */
     slot = sh->body;
+    if (update_body_mass) {
+        /* the sums without it must stay finite too (they are taken about
+           another first shape, and the centre moves) */
+        ga2d__mass_sum s;
+        r = ga2d__mass_sum_of(w, slot, ga2d__body_origin(&w->bodies[slot]), (int)id.index1 - 1, -1, NULL, &s);
+        if (r != GA2D_OK) return r;
+    }
     ga2d__enter(w); /* sensors, the tree and waking allocate and free through the hooks */
     ga2d__shape_remove(w, (int)id.index1 - 1);
     if (update_body_mass) ga2d__update_mass(w, slot, ga2d__body_origin(&w->bodies[slot]));
@@ -5603,7 +5740,12 @@ static void ga2d__chain_free(ga2d_world *w, int k)
 
 /* Segment i of a chain of n points: its ends and ghosts.  An open chain's
    end turns down a right angle (its ghost lies behind it), so the end is
-   rounded over as a lone segment's is. */
+   rounded over as a lone segment's is.  The made-up ghost is twice the
+   end segment e's length away: apart from the end whenever the two points
+   are (ga2d__ends_apart: 2|e| > 64 eps (S0 + Sg) follows from |e| > 64
+   eps (S0 + S1), the sizes S being L1 norms, as S0 <= S1 + sqrt2 |e| and
+   Sg <= S0 + 2 sqrt2 |e|), and within GA2D__GHOST_BOUND, so the world's
+   snapshot loads what it made. */
 static ga2d_chain_segment ga2d__chain_segment_at(const ga2d_chain_def *d, int i)
 {
     ga2d_chain_segment cs;
@@ -5616,8 +5758,8 @@ static ga2d_chain_segment ga2d__chain_segment_at(const ga2d_chain_def *d, int i)
         cs.ghost2 = p[(i + 2) % n];
     } else {
         ga2d_vec e0 = ga2d_vec_sub(p[1], p[0]), e1 = ga2d_vec_sub(p[n - 1], p[n - 2]);
-        cs.ghost1 = i > 0 ? p[i - 1] : ga2d_vec_sub(p[0], ga2d__left(e0));
-        cs.ghost2 = i + 2 < n ? p[i + 2] : ga2d_vec_sub(p[n - 1], ga2d__left(e1));
+        cs.ghost1 = i > 0 ? p[i - 1] : ga2d_vec_sub(p[0], ga2d_vec_scale(ga2d__left(e0), 2));
+        cs.ghost2 = i + 2 < n ? p[i + 2] : ga2d_vec_sub(p[n - 1], ga2d_vec_scale(ga2d__left(e1), 2));
     }
     return cs;
 }
@@ -5637,6 +5779,26 @@ GA2D_API ga2d_result ga2d_chain_create_checked(ga2d_world *w, ga2d_body_id body,
     ga2d__resolve_chain_def(def, &d);
     if ((r = ga2d__chain_def_check(&d)) != GA2D_OK) return r;
     n = d.is_loop ? d.count : d.count - 1;
+    /* each segment as the snapshot loader will check it: what a world
+       makes, its snapshot loads */
+    for (i = 0; i < n; ++i) {
+        ga2d_geometry g;
+        memset(&g, 0, sizeof g);
+        g.type = GA2D_SHAPE_CHAIN_SEGMENT;
+        g.as.chain_segment = ga2d__chain_segment_at(&d, i);
+        if ((r = ga2d__geometry_check(&g, b->type, 0, &g)) != GA2D_OK) return r;
+        if (i == 0) {
+            /* segments have no area: the body's sums with the chain are
+               those with its first segment alone (its centre when the
+               body has no area yet) */
+            ga2d__shape extra;
+            ga2d__mass_sum s;
+            memset(&extra, 0, sizeof extra);
+            extra.geom = g;
+            extra.chain = -1;
+            if ((r = ga2d__mass_sum_of(w, ga2d__slot(body), ga2d__body_origin(b), -1, -1, &extra, &s)) != GA2D_OK) return r;
+        }
+    }
     moves = b->type != GA2D_BODY_STATIC;
     /* every allocation first: the shapes as if none were free, their
        queue entries, proxies, the chain slot and its list */
@@ -5704,6 +5866,11 @@ GA2D_API ga2d_result ga2d_chain_destroy(ga2d_world *w, ga2d_chain_id id)
     if (w->lock) return GA2D_ERR_LOCKED;
     if (!(c = ga2d__chain_lookup(w, id))) return GA2D_ERR_STALE_ID;
     slot = c->body;
+    {
+        ga2d__mass_sum s;
+        ga2d_result r = ga2d__mass_sum_of(w, slot, ga2d__body_origin(&w->bodies[slot]), -1, (int)id.index1 - 1, NULL, &s);
+        if (r != GA2D_OK) return r;
+    }
     ga2d__enter(w);
     for (i = 0; i < c->count; ++i) ga2d__shape_remove(w, c->shapes[i]);
     ga2d__chain_free(w, (int)id.index1 - 1);
@@ -5963,6 +6130,20 @@ static ga2d_result ga2d__force_target(ga2d_world *w, ga2d_body_id id, ga2d__body
     return *out ? GA2D_OK : GA2D_ERR_STALE_ID;
 }
 
+/* A push from the force field on a sleeping body (the step is under way
+   and the body is in none of its arrays): a push that is not zero wakes
+   the body's island at the step's end (ga2d__grant_wakes), and the
+   island joins the next step, where the field pushes it again.  Nothing
+   is added to the sleeping body's state. */
+static ga2d_result ga2d__field_wakes(ga2d_world *w, ga2d__body *b, int pushes)
+{
+    if (pushes && !b->wake_request) {
+        b->wake_request = 1;
+        ++w->wake_requests;
+    }
+    return GA2D_OK;
+}
+
 GA2D_API ga2d_result ga2d_body_apply_force(ga2d_world *w, ga2d_body_id id, ga2d_vec force, ga2d_vec point)
 {
     ga2d__body *b;
@@ -5972,6 +6153,7 @@ GA2D_API ga2d_result ga2d_body_apply_force(ga2d_world *w, ga2d_body_id id, ga2d_
     if (!ga2d__finite_vec(force) || !ga2d__finite_vec(point)) return GA2D_ERR_NOT_FINITE;
     if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
     tau = ga2d_wedge(ga2d_vec_sub(point, b->sim.center), force); /* r ^ F */
+    if (!b->awake && (w->lock & GA2D__LOCK_FIELD)) return ga2d__field_wakes(w, b, force.x != 0 || force.y != 0 || tau != 0);
     {
         ga2d_vec *f = (w->lock & GA2D__LOCK_FIELD) ? &b->sim.field_force : &b->sim.force;
         ga2d_real *t = (w->lock & GA2D__LOCK_FIELD) ? &b->sim.field_torque : &b->sim.torque;
@@ -6001,6 +6183,7 @@ GA2D_API ga2d_result ga2d_body_apply_torque(ga2d_world *w, ga2d_body_id id, ga2d
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(torque)) return GA2D_ERR_NOT_FINITE;
     if (b->type != GA2D_BODY_DYNAMIC) return GA2D_OK;
+    if (!b->awake && (w->lock & GA2D__LOCK_FIELD)) return ga2d__field_wakes(w, b, torque != 0);
     {
         ga2d_real *t = (w->lock & GA2D__LOCK_FIELD) ? &b->sim.field_torque : &b->sim.torque;
         if (!ga2d__finite(*t + torque)) return GA2D_ERR_NOT_FINITE;
@@ -6310,12 +6493,16 @@ static ga2d_vec ga2d__free_accel(const ga2d_world *w, const ga2d__body *b)
 static int ga2d__solver_moves(const ga2d__body *b) { return b->type == GA2D_BODY_DYNAMIC && b->awake; }
 
 /* The pre-solve callback's answer for a contact one of whose shapes asks
-   for it (1 otherwise, or once the world is being destroyed from it). */
+   for it (1 otherwise, or once the world is being destroyed from it).  It
+   reads a copy of the manifold: its answer is its only effect, whatever
+   it writes through the pointer (a count past 2, a NaN point). */
 static int ga2d__pre_solve(ga2d_world *w, const ga2d__contact *ct)
 {
+    ga2d_manifold copy;
     if (!w->shapes[ct->shape_a].pre_solve_events && !w->shapes[ct->shape_b].pre_solve_events) return 1;
     if (w->destroy_pending) return 1;
-    return w->def.pre_solve(ga2d__shape_id_of(w, ct->shape_a), ga2d__shape_id_of(w, ct->shape_b), &ct->manifold,
+    copy = ct->manifold;
+    return w->def.pre_solve(ga2d__shape_id_of(w, ct->shape_a), ga2d__shape_id_of(w, ct->shape_b), &copy,
                             w->def.pre_solve_context) != 0;
 }
 
@@ -8352,6 +8539,21 @@ static void ga2d__hit_events(ga2d__step_context *c)
     }
 }
 
+/* Book-keeping: the sleeping bodies the force field pushed in this step
+   wake, with their islands, as ga2d_body_set_awake would wake them after
+   it.  (Only steps with such a push pay for the walk over the slots.) */
+static void ga2d__grant_wakes(ga2d_world *w)
+{
+    int i;
+    for (i = 0; i < w->body_used && w->wake_requests > 0; ++i) {
+        ga2d__body *b = &w->bodies[i];
+        if (!b->wake_request) continue;
+        b->wake_request = 0;
+        --w->wake_requests;
+        if (b->type >= 0) ga2d__wake(w, i);
+    }
+}
+
 /* The step, stage by stage (a stage run with ga2d__run works over a range
    of its items; the others are book-keeping, in order). */
 static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
@@ -8392,6 +8594,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     w->counters.constraint_count = c->constraint_count;
     w->time = c->t0 + (double)dt;
     if (w->def.enable_sleep) ga2d__update_sleep(c);
+    if (w->wake_requests > 0) ga2d__grant_wakes(w);
     if (w->sensor_count > 0) ga2d__update_sensors(c);
     ++w->counters.step_count;
 }

@@ -66,6 +66,7 @@ void suite_shape_terrain(void);
 void suite_shape_dynamics(void);
 void suite_features(void);
 void suite_settle(void);
+void suite_accepted(void);
 
 #ifdef __cplusplus
 }
