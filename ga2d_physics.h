@@ -762,8 +762,8 @@ typedef struct ga2d_world_def {
     ga2d_real contact_push_max_velocity;  /* m/s per contact; 0 means 0.8 (pushes
                                              add up along a stack: at 0.8 ten
                                              boxes overlapped 25% part in 0.8 s,
-                                             none faster than 4.4 m/s; at 3,
-                                             Box2D's, the top one flies at 15) */
+                                             none faster than 5.7 m/s; at 3,
+                                             Box2D's, the top one flies at 17) */
     ga2d_real restitution_threshold;      /* m/s of approach; 0 means 1 */
     int enable_sleep;                     /* islands at rest sleep (default 1) */
     int enable_warm_starting;             /* reuse last step's impulses (default 1) */
@@ -5601,6 +5601,7 @@ GA2D_API ga2d_result ga2d_shape_set_friction(ga2d_world *w, ga2d_shape_id id, ga
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(friction)) return GA2D_ERR_NOT_FINITE;
     if (friction < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    ga2d__wake(w, sh->body); /* a body at rest on a slope may slide now */
     sh->friction = friction;
     ga2d__shape_materials(w, (int)id.index1 - 1);
     return GA2D_OK;
@@ -7132,25 +7133,29 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         if (bias_kind == GA2D__BIAS_SOFT) {
             /* the spring in impulse: its bias's push, and the part of
                the impulse it carries that the soft step lets go each pass
-               (impulse_scale nimp).  The bias is capped at the push-out
-               speed, but never so far that the spring could not hold its
-               load: the sum is kept >= min(capped push + let go, 0).
-               Capping the bias alone capped the load a point carries at
-               m_eff a2 v_push / h (a2 = h w (2 zeta + h w),
-               ga2d__make_soft): what is let go grows with the load, the
-               capped push could not, and a heavier load sank through at
-               a steady speed (a circle of density 1000 passed through one
-               of density 1, and once the centres had crossed, the normal
-               pushed it on: they swapped).  A load under that is pushed
-               out as before (a column of overlapped boxes, whose pushes
-               add up, is no faster) */
+               (impulse_scale nimp).  Their sum is what the pass adds
+               beyond holding the point's load: at rest under a load the
+               two cancel (the spring sits at its deflection), and -sum /
+               m_eff is the speed the pass drives the point apart at.  That
+               speed is capped at the push-out speed: sum >= m_eff
+               (-v_push).  The cap limits how fast a point pushes out,
+               never the load it holds (the spring stays linear: a load
+               sinks as M g / k at any mass ratio).  Capping the bias alone
+               capped the load a point carries at m_eff a2 v_push / h (a2 =
+               h w (2 zeta + h w), ga2d__make_soft), and a heavier load sank
+               through at a steady speed (a circle of density 1000 passed
+               through one of density 1); keeping the sum at or above
+               min(capped push + let go, 0) held any load but left a dead
+               band past the spring's deflection in which nothing pushed
+               back: a 1000:1 plank on two boxes bobbed 2.4 cm for ever.
+               Pushes add up along a column of overlapped boxes, each
+               contact's within the cap. */
             ga2d__w spring, floor;
             mass_scale = ga2d__wsel(apart, one, soft_mass);
             impulse_scale = ga2d__wsel(apart, zero, soft_impulse);
             inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
             spring = ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wmul(soft_rate, s)), ga2d__wmul(impulse_scale, g->nimp[k]));
-            floor = ga2d__wadd(ga2d__wmul(inv_a[k], ps->low), ga2d__wmul(impulse_scale, g->nimp[k]));
-            floor = ga2d__wsel(ga2d__wgt(floor, zero), zero, floor);
+            floor = ga2d__wmul(inv_a[k], ps->low);
             spring = ga2d__wsel(ga2d__wgt(floor, spring), floor, spring);
             spring = ga2d__wsel(apart, ga2d__wmul(inv_a[k], ga2d__wmul(s, ps->winv_h)), spring);
             own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], vn), spring));
@@ -7565,10 +7570,17 @@ static void ga2d__push_apart(ga2d__step_context *c, int begin, int end)
             fix = fix < -max_fix ? -max_fix : (fix > 0 ? 0 : fix);
             lambda = -ga2d__effective_mass(cc, ra, rb, cc->normal) * fix; /* at the anchors as they are now */
             P = ga2d_vec_scale(cc->normal, lambda);
-            a->center = ga2d_vec_sub(a->center, ga2d_vec_scale(P, cc->inv_ma));
-            b->center = ga2d_vec_add(b->center, ga2d_vec_scale(P, cc->inv_mb));
-            a->dp = ga2d_vec_sub(a->dp, ga2d_vec_scale(P, cc->inv_ma));
-            b->dp = ga2d_vec_add(b->dp, ga2d_vec_scale(P, cc->inv_mb));
+            /* a body that does not move is not written: P can overflow
+               (two huge masses), and inf * 0 would leave a static body's
+               centre NaN, where containment (moving bodies) never looks */
+            if (cc->inv_ma != 0) {
+                a->center = ga2d_vec_sub(a->center, ga2d_vec_scale(P, cc->inv_ma));
+                a->dp = ga2d_vec_sub(a->dp, ga2d_vec_scale(P, cc->inv_ma));
+            }
+            if (cc->inv_mb != 0) {
+                b->center = ga2d_vec_add(b->center, ga2d_vec_scale(P, cc->inv_mb));
+                b->dp = ga2d_vec_add(b->dp, ga2d_vec_scale(P, cc->inv_mb));
+            }
             if (cc->inv_ia != 0) {
                 a->q = ga2d__turn(a->q, -cc->inv_ia * ga2d_wedge(ra, P), GA2D_ROTATION_LINEAR);
                 a->dq = ga2d_rotor_mul(a->q, ga2d_rotor_inverse(a->q0));
@@ -7805,6 +7817,7 @@ static void ga2d__contain(ga2d_world *w, int slot)
     b->sim.center = b->sim.center0;
     b->sim.dp = ga2d_vec_make(0, 0);
     b->sim.q = b->sim.q0;
+    b->sim.dq = ga2d_rotor_identity(); /* a snapshot refuses a NaN here too */
     b->sim.v = ga2d_vec_make(0, 0);
     b->sim.w = 0;
     b->sim.force = ga2d_vec_make(0, 0);
@@ -8688,21 +8701,16 @@ static int ga2d__find(ga2d_world *w, int s)
     return s;
 }
 
-/* A contact overlapped deeper than this (in slops: the speculative
-   distance) keeps its bodies awake: the solver pushes overlap out over
-   several steps, and the relax pass takes the push-out speed out of v, so
-   a body still being pushed out looks at rest.  Resting contacts settle
-   within one slop (the soft contact's target); a 100:1 plank on two boxes
-   settles 1.6 slops deep and sleeps, a 200:1 one 3.2 slops deep sleeps
-   too, a 300:1 one (6.8 slops) stays awake, still being pushed. */
-#define GA2D__SLEEP_MAX_OVERLAP 4
-
 /* Islands of awake dynamic bodies joined by touching contacts (static and
    kinematic bodies do not join them).  A body rests while max(|v|,
-   extent |w|) stays under 5 cm/s (in metres) and none of its contacts is
-   overlapped by more than GA2D__SLEEP_MAX_OVERLAP slops; an island whose
+   extent |w|, |dp| / dt) stays under 5 cm/s (in metres); an island whose
    every body has rested for 0.5 s falls asleep and costs nothing until
-   woken.  Book-keeping: it puts bodies to sleep. */
+   woken.  dp, the step's displacement, is there for a body being pushed
+   out of an overlap: the relax pass takes the push-out speed out of v, so
+   such a body looks at rest by v alone.  (An overlap's depth is no
+   measure of that: a heavy load rests on its springs as deep as its mass
+   ratio says, a 400:1 plank 8 slops, and is still.)  Book-keeping: it
+   puts bodies to sleep. */
 static void ga2d__update_sleep(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
@@ -8715,16 +8723,9 @@ static void ga2d__update_sleep(ga2d__step_context *c)
         ga2d_real speed2 = ga2d_dot(b->sim.v, b->sim.v), spin = b->extent * b->sim.w;
         b->island = s;
         if (b->type != GA2D_BODY_DYNAMIC) continue;
-        if (speed2 > tol * tol || spin * spin > tol * tol) b->sleep_time = 0;
+        if (speed2 > tol * tol || spin * spin > tol * tol || ga2d_dot(b->sim.dp, b->sim.dp) > tol * tol * dt * dt)
+            b->sleep_time = 0;
         else b->sleep_time += dt;
-    }
-    for (i = 0; i < c->constraint_count; ++i) {
-        const ga2d__contact_constraint *cc = &c->constraints[i];
-        for (k = 0; k < cc->count; ++k)
-            if (cc->p[k].separation < -GA2D__SLEEP_MAX_OVERLAP * w->slop) {
-                w->bodies[cc->a].sleep_time = 0; /* static ones never sleep: harmless */
-                w->bodies[cc->b].sleep_time = 0;
-            }
     }
     for (i = 0; i < c->constraint_count; ++i) {
         const ga2d__contact_constraint *cc = &c->constraints[i];

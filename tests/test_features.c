@@ -192,11 +192,11 @@ static void sensor_free_fall(void)
    awake at once (before any step): the body, and through their touching
    contact, its island. */
 enum { WAKE_SET_AWAKE, WAKE_TRANSFORM, WAKE_VELOCITY, WAKE_ANGULAR_VELOCITY, WAKE_MASS_DATA, WAKE_GRAVITY_SCALE,
-       WAKE_BODY_FILTER, WAKE_SHAPE_FILTER, WAKE_FORCE, WAKE_FORCE_TO_CENTER, WAKE_TORQUE, WAKE_IMPULSE,
+       WAKE_BODY_FILTER, WAKE_SHAPE_FILTER, WAKE_SHAPE_FRICTION, WAKE_FORCE, WAKE_FORCE_TO_CENTER, WAKE_TORQUE, WAKE_IMPULSE,
        WAKE_ANGULAR_IMPULSE, WAKE_KINDS };
 static const char *const wake_names[WAKE_KINDS] = {"set_awake", "set_transform", "set_velocity", "set_angular_velocity",
                                                    "set_mass_data", "set_gravity_scale", "body set_filter",
-                                                   "shape set_filter", "apply_force", "apply_force_to_center",
+                                                   "shape set_filter", "shape set_friction", "apply_force", "apply_force_to_center",
                                                    "apply_torque", "apply_impulse", "apply_angular_impulse"};
 
 static ga2d_result wake_by(ga2d_world *w, ga2d_body_id b, int kind)
@@ -214,6 +214,9 @@ static ga2d_result wake_by(ga2d_world *w, ga2d_body_id b, int kind)
     case WAKE_SHAPE_FILTER:
         if (ga2d_body_get_shapes(w, b, &sh, 1) != 1) return GA2D_ERR_INVALID_ARGUMENT;
         return ga2d_shape_set_filter(w, sh, ga2d_default_filter());
+    case WAKE_SHAPE_FRICTION:
+        if (ga2d_body_get_shapes(w, b, &sh, 1) != 1) return GA2D_ERR_INVALID_ARGUMENT;
+        return ga2d_shape_set_friction(w, sh, (ga2d_real)0.1);
     case WAKE_FORCE: return ga2d_body_apply_force(w, b, v2(0, 1), c);
     case WAKE_FORCE_TO_CENTER: return ga2d_body_apply_force_to_center(w, b, v2(0, 1));
     case WAKE_TORQUE: return ga2d_body_apply_torque(w, b, (ga2d_real)0.01);
@@ -223,34 +226,69 @@ static ga2d_result wake_by(ga2d_world *w, ga2d_body_id b, int kind)
     }
 }
 
+/* Two boxes stacked on a static ground, asleep together; NULL world if
+   they never slept (a failed premise, reported). */
+static ga2d_world *sleeping_pair(ga2d_body_id *lower, ga2d_body_id *upper)
+{
+    ga2d_world *w = ga2d_world_create(NULL);
+    ga2d_body_def d = ga2d_default_body_def();
+    int i, slept = -1;
+    CHECK(w != NULL);
+    if (!w) return NULL;
+    CHECK(!ga2d_body_id_is_null(static_box(w, 0, -0.5, 5, 0.5)));
+    d.type = GA2D_BODY_DYNAMIC;
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+    d.position = v2(0, 0.5);
+    *lower = ga2d_body_create(w, &d);
+    d.position = v2(0, 1.5);
+    *upper = ga2d_body_create(w, &d);
+    /* at rest from the start: asleep after the 0.5 s rest time, well
+       within 3 s (the premise) */
+    for (i = 0; i < 180 && slept < 0; ++i) {
+        CHECK_RESULT(ga2d_world_step(w, (ga2d_real)DT), GA2D_OK);
+        if (!ga2d_body_is_awake(w, *lower) && !ga2d_body_is_awake(w, *upper)) slept = i;
+    }
+    CHECK(slept >= 0);
+    if (slept < 0) {
+        ga2d_world_destroy(w);
+        return NULL;
+    }
+    return w;
+}
+
 static void every_setter_and_push_wakes_the_island(void)
 {
     int kind;
     for (kind = 0; kind < WAKE_KINDS; ++kind) {
-        ga2d_world *w = ga2d_world_create(NULL);
-        ga2d_body_def d = ga2d_default_body_def();
         ga2d_body_id lower, upper;
-        int i, slept = -1;
-        CHECK(w != NULL);
+        ga2d_world *w = sleeping_pair(&lower, &upper);
         if (!w) return;
-        CHECK(!ga2d_body_id_is_null(static_box(w, 0, -0.5, 5, 0.5)));
-        d.type = GA2D_BODY_DYNAMIC;
-        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
-        d.position = v2(0, 0.5);
-        lower = ga2d_body_create(w, &d);
-        d.position = v2(0, 1.5);
-        upper = ga2d_body_create(w, &d);
-        /* at rest from the start: asleep after the 0.5 s rest time, well
-           within 3 s (the premise) */
-        for (i = 0; i < 180 && slept < 0; ++i) {
-            CHECK_RESULT(ga2d_world_step(w, (ga2d_real)DT), GA2D_OK);
-            if (!ga2d_body_is_awake(w, lower) && !ga2d_body_is_awake(w, upper)) slept = i;
-        }
-        CHECK(slept >= 0);
         CHECK_RESULT(wake_by(w, upper, kind), GA2D_OK);
         if (!ga2d_body_is_awake(w, upper) || !ga2d_body_is_awake(w, lower))
             test_fail(__FILE__, __LINE__, "%s left the %s asleep", wake_names[kind],
                       ga2d_body_is_awake(w, upper) ? "rest of the island" : "body");
+        ga2d_world_destroy(w);
+    }
+}
+
+/* The README's other half: damping, restitution and user data change
+   nothing for a body at rest, and leave its island asleep (waking it would
+   cost a game its sleeping piles each time it tags a body). */
+static void setters_that_change_nothing_at_rest_leave_it_asleep(void)
+{
+    int kind;
+    for (kind = 0; kind < 3; ++kind) {
+        static const char *const names[3] = {"set_damping", "shape set_restitution", "set_user_data"};
+        ga2d_body_id lower, upper;
+        ga2d_shape_id sh;
+        ga2d_world *w = sleeping_pair(&lower, &upper);
+        if (!w) return;
+        CHECK(ga2d_body_get_shapes(w, upper, &sh, 1) == 1);
+        if (kind == 0) CHECK_RESULT(ga2d_body_set_damping(w, upper, (ga2d_real)0.5, (ga2d_real)0.5), GA2D_OK);
+        if (kind == 1) CHECK_RESULT(ga2d_shape_set_restitution(w, sh, (ga2d_real)0.5), GA2D_OK);
+        if (kind == 2) CHECK_RESULT(ga2d_body_set_user_data(w, upper, &lower), GA2D_OK);
+        if (ga2d_body_is_awake(w, upper) || ga2d_body_is_awake(w, lower))
+            test_fail(__FILE__, __LINE__, "%s woke a body at rest", names[kind]);
         ga2d_world_destroy(w);
     }
 }
@@ -836,6 +874,8 @@ void suite_features(void)
 {
     test_run("features: sensors report what falls through them, at the predicted steps", sensor_free_fall);
     test_run("features: every setter and push wakes a sleeping island", every_setter_and_push_wakes_the_island);
+    test_run("features: damping, restitution and user data leave a sleeping island asleep",
+             setters_that_change_nothing_at_rest_leave_it_asleep);
     test_run("features: the sleep switch", sleep_switch);
     test_run("features: a belt carries a box at its speed at steady state", conveyor_steady_state);
     test_run("features: filters decide contacts in a world", filters_in_a_world);

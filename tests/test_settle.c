@@ -186,7 +186,13 @@ static void settle_pile(unsigned long seed, int steps, double *vmax, double *dri
    fixes, seed 7 (the issue's pile) kept a capsule in a 16-step cycle at
    1.6e-2 m/s, and seed 23 a box kicked every hundred steps at 1e-2 (3e-3
    with warm starting by place alone); 10 000 steps is past where both
-   began. */
+   began.  In double, seed 7 leaves a capsule on one point of another
+   tilted at 30.96 degrees: tan = 0.6001 against friction 0.6, on the edge
+   of the cone.  It holds to rounding until step 9000, then slides off,
+   rightly (once it slips the slope only steepens: its turn grows by e
+   every 13 steps, with no sign change, as a tipping body's does), and the
+   pile rests to rounding again from step 9650: double runs 12 000 steps,
+   judged over the last 10 s as float. */
 static void poured_pile_settles(void)
 {
 #ifdef GA2D_DOUBLE
@@ -201,7 +207,11 @@ static void poured_pile_settles(void)
     size_t k;
     for (k = 0; k < sizeof seeds / sizeof seeds[0]; ++k) {
         double vmax, drift;
+#ifdef GA2D_DOUBLE
+        settle_pile(seeds[k], 12000, &vmax, &drift);
+#else
         settle_pile(seeds[k], 10000, &vmax, &drift);
+#endif
         if (!(vmax <= vbound)) test_fail(__FILE__, __LINE__, "seed %lu: last 10 s max speed %.3g > %.3g m/s", seeds[k], vmax, vbound);
         if (!(drift <= dbound)) test_fail(__FILE__, __LINE__, "seed %lu: drift over the last 10 s %.3g > %.3g m", seeds[k], drift, dbound);
     }
