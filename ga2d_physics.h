@@ -671,9 +671,12 @@ typedef void ga2d_force_fn(ga2d_world *world, void *context);
    the contact under a resting body could no longer hold it within the
    slop, and a stack sinks.  At g = 10 that is h <= 22 ms (dt <= 89 ms
    with 4 substeps); raise substeps for longer steps.  GA2D_MAX_GRAVITY is
-   the most that 1024 substeps of the longest step keep within that. */
+   the most that GA2D_MAX_SUBSTEPS of the longest step keep within that.
+   Substeps and solver iterations are each at most GA2D_MAX_SUBSTEPS. */
 #define GA2D_MAX_TIME_STEP 0.5
-#define GA2D_MAX_GRAVITY (GA2D_LINEAR_SLOP * (1024 / GA2D_MAX_TIME_STEP) * (1024 / GA2D_MAX_TIME_STEP))
+#define GA2D_MAX_SUBSTEPS 1024
+#define GA2D_MAX_GRAVITY \
+    (GA2D_LINEAR_SLOP * (GA2D_MAX_SUBSTEPS / GA2D_MAX_TIME_STEP) * (GA2D_MAX_SUBSTEPS / GA2D_MAX_TIME_STEP))
 
 /* Defaults, in metres, kilograms and seconds (a world scales lengths by
    its length_units_per_meter).  ga2d_default_world_def() and
@@ -838,8 +841,8 @@ typedef struct ga2d_world_counters {
 
 GA2D_API ga2d_world_def ga2d_default_world_def(void);
 /* Why a def would be refused: NOT_FINITE gravity, INVALID_ARGUMENT for a
-   bad enum, substeps outside [0, 1024], a negative length unit or half an
-   allocator. */
+   bad enum, substeps outside [0, GA2D_MAX_SUBSTEPS], a negative length
+   unit or half an allocator. */
 GA2D_API ga2d_result ga2d_world_def_validate(const ga2d_world_def *def);
 GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def); /* NULL on failure; def NULL = defaults */
 GA2D_API void ga2d_world_destroy(ga2d_world *w);
@@ -1323,6 +1326,17 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
    length_units_per_meter where used) */
 #define GA2D__MAX_SPEED GA2D__R(GA2D_MAX_LINEAR_SPEED)
 #define GA2D__MAX_TURN GA2D__R(GA2D_MAX_ROTATION)
+
+/* The solver's and sleep's fixed numbers, with their units (lengths in
+   metres are scaled by length_units_per_meter where used). */
+#define GA2D__SLEEP_SPEED GA2D__R(0.05)         /* m/s: a body slower than this rests */
+#define GA2D__TIME_TO_SLEEP GA2D__R(0.5)        /* s: an island at rest this long sleeps */
+#define GA2D__BAUMGARTE GA2D__R(0.2)            /* of the overlap past slop, fed back per substep */
+#define GA2D__NGS_FRACTION GA2D__R(0.2)         /* of the overlap past slop, moved per NGS pass */
+#define GA2D__NGS_MAX_MOVE GA2D__R(0.2)         /* m: the most an NGS pass moves a point */
+#define GA2D__RESTITUTION_PASSES 32             /* restitution's passes, at most, a step */
+#define GA2D__HERTZ_CAP GA2D__R(0.25)           /* contact_hertz's cap, of the substep rate */
+#define GA2D__DRAW_CENTER_SIZE GA2D__R(0.05)    /* m: debug draw's centre of mass marker */
 
 /* Helpers that run once per body or contact point and pass, hundreds of
    thousands of times a step: inlined into their callers (the solver's
@@ -3404,7 +3418,6 @@ typedef struct ga2d__step_context {
     double t0, t;                /* world time at the step's and the substep's start */
     ga2d__soft soft, stiff;      /* contacts between moving bodies, and against a fixed one */
     ga2d_result error;           /* what the step will report */
-    int error_slot;              /* the lowest slot it contained, or -1 */
     int end_lost;                /* a sensor end event since the last step found no room: reported
                                     as OUT_OF_MEMORY after the step, which runs in full (its
                                     stages read `error` as their own failures) */
@@ -3490,6 +3503,7 @@ struct ga2d_world {
     int hit_count, hit_capacity;
     ga2d_real slop, speculative, aabb_margin; /* scaled by length units */
     ga2d__step_context step;
+    int error_slot;              /* the lowest slot the last step contained, or -1 */
     int *wake_queue;             /* one entry per body slot */
     int wake_capacity;
 };
@@ -3561,15 +3575,36 @@ static uint32_t ga2d__world_tag(const ga2d_world *w) { return ga2d__hash((uint64
 /* The slot an id names (the null id's is -1); ga2d__lookup checks it. */
 static int ga2d__slot(ga2d_body_id id) { return (int)id.index1 - 1; }
 
-/* The live body an id names, or NULL: out-of-range, free and reused slots
-   are all refused by the index and generation check. */
+/* Slots.  Bodies, shapes and chains live in pools: an entry's `type` is
+   -1 while its slot is free, and its `generation` counts the slot's
+   reuses.  An id is the slot + 1 and the generation mixed with the world's
+   tag.  The entry an id names, or NULL: null, out-of-range, free and
+   reused slots, and another world's ids are all refused here. */
+static void *ga2d__live_slot(void *pool, size_t size, int used, size_t type_at, size_t generation_at, uint32_t tag,
+                             uint32_t index1, uint32_t generation)
+{
+    unsigned char *entry;
+    int type;
+    uint32_t g;
+    if (index1 == 0 || index1 > (uint32_t)used) return NULL;
+    entry = (unsigned char *)pool + (size_t)(index1 - 1) * size;
+    memcpy(&type, entry + type_at, sizeof type);
+    memcpy(&g, entry + generation_at, sizeof g);
+    return type < 0 || (g ^ tag) != generation ? NULL : entry;
+}
+#define GA2D__LIVE(w, T, pool, used, id)                                                                               \
+    ((w) ? (T *)ga2d__live_slot((w)->pool, sizeof(T), (w)->used, offsetof(T, type), offsetof(T, generation), (w)->tag, \
+                                (id).index1, (id).generation)                                                          \
+         : (T *)NULL)
+
+/* The generation a freed slot takes: never 0, so no id of a live entry
+   is ever the null one's. */
+static uint32_t ga2d__next_generation(uint32_t g) { return g + 1 ? g + 1 : 1; }
+
+/* The live body an id names, or NULL. */
 static ga2d__body *ga2d__lookup(const ga2d_world *w, ga2d_body_id id)
 {
-    ga2d__body *b;
-    if (!w || id.index1 == 0 || id.index1 > (uint32_t)w->body_used) return NULL;
-    b = &w->bodies[id.index1 - 1];
-    if (b->type < 0 || (b->generation ^ w->tag) != id.generation) return NULL;
-    return b;
+    return GA2D__LIVE(w, ga2d__body, bodies, body_used, id);
 }
 
 /* Position, rotor and velocities all finite. */
@@ -3787,14 +3822,10 @@ static ga2d_shape_id ga2d__shape_id_of(const ga2d_world *w, int k)
     return id;
 }
 
-/* The live shape an id names, or NULL (as ga2d__lookup for bodies). */
+/* The live shape an id names, or NULL. */
 static ga2d__shape *ga2d__shape_lookup(const ga2d_world *w, ga2d_shape_id id)
 {
-    ga2d__shape *sh;
-    if (!w || id.index1 == 0 || id.index1 > (uint32_t)w->shape_used) return NULL;
-    sh = &w->shapes[id.index1 - 1];
-    if (sh->type < 0 || (sh->generation ^ w->tag) != id.generation) return NULL;
-    return sh;
+    return GA2D__LIVE(w, ga2d__shape, shapes, shape_used, id);
 }
 
 static void ga2d__contact_data(const ga2d_world *w, const ga2d__contact *c, ga2d_contact_data *out)
@@ -4365,7 +4396,7 @@ static int ga2d__gravity_ok(ga2d_vec g, ga2d_real units)
 static ga2d_result ga2d__world_def_check(const ga2d_world_def *d)
 {
     if (!ga2d__finite_vec(d->gravity) || !ga2d__finite(d->length_units_per_meter)) return GA2D_ERR_NOT_FINITE;
-    if (d->substeps < 0 || d->substeps > 1024) return GA2D_ERR_INVALID_ARGUMENT;
+    if (d->substeps < 0 || d->substeps > GA2D_MAX_SUBSTEPS) return GA2D_ERR_INVALID_ARGUMENT;
     if ((int)d->integrator < 0 || (int)d->integrator >= GA2D_INTEGRATOR_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
     if ((int)d->rotation_update < 0 || (int)d->rotation_update >= GA2D_ROTATION_COUNT) return GA2D_ERR_INVALID_ARGUMENT;
     if (d->length_units_per_meter < 0) return GA2D_ERR_INVALID_ARGUMENT;
@@ -4376,7 +4407,7 @@ static ga2d_result ga2d__world_def_check(const ga2d_world_def *d)
         !ga2d__finite(d->hit_event_threshold))
         return GA2D_ERR_NOT_FINITE;
     if ((int)d->solver < 0 || (int)d->solver >= GA2D_SOLVER_COUNT || d->velocity_iterations < 0 ||
-        d->velocity_iterations > 1024 || d->position_iterations < 0 || d->position_iterations > 1024 ||
+        d->velocity_iterations > GA2D_MAX_SUBSTEPS || d->position_iterations < 0 || d->position_iterations > GA2D_MAX_SUBSTEPS ||
         d->contact_hertz < 0 || d->contact_damping_ratio < 0 || d->contact_push_max_velocity < 0 ||
         d->restitution_threshold < 0 || d->hit_event_threshold < 0)
         return GA2D_ERR_INVALID_ARGUMENT;
@@ -4413,7 +4444,7 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     w->trees[1].root = w->trees[1].free_list = -1;
     w->contact_free = -1;
     w->step.world = w;
-    w->step.error_slot = -1;
+    w->error_slot = -1;
     w->slop = GA2D__R(GA2D_LINEAR_SLOP) * d.length_units_per_meter;
     w->speculative = GA2D__R(GA2D_SPECULATIVE_DISTANCE) * d.length_units_per_meter;
     w->aabb_margin = GA2D__R(GA2D_AABB_MARGIN) * d.length_units_per_meter;
@@ -4431,7 +4462,7 @@ static void ga2d__destroy_now(ga2d_world *w)
     memset(w, 0, sizeof *w);
     w->def = dead.def;
     w->mem = dead.mem;
-    w->free_head = w->contact_free = w->step.error_slot = -1;
+    w->free_head = w->contact_free = w->error_slot = -1;
     w->trees[0].root = w->trees[0].free_list = w->trees[1].root = w->trees[1].free_list = -1;
     w->lock = GA2D__LOCK_DEAD;
     w->depth = 1; /* a destroy from a free hook changes nothing */
@@ -4483,8 +4514,8 @@ GA2D_API void ga2d_world_destroy(ga2d_world *w)
 GA2D_API ga2d_body_id ga2d_world_error_body(const ga2d_world *w)
 {
     ga2d_body_id id = ga2d_body_id_null();
-    if (!w || w->step.error_slot < 0 || w->step.error_slot >= w->body_used || w->bodies[w->step.error_slot].type < 0) return id;
-    return ga2d__id_of(w, w->step.error_slot);
+    if (!w || w->error_slot < 0 || w->error_slot >= w->body_used || w->bodies[w->error_slot].type < 0) return id;
+    return ga2d__id_of(w, w->error_slot);
 }
 
 GA2D_API double ga2d_world_time(const ga2d_world *w)
@@ -4534,7 +4565,7 @@ GA2D_API ga2d_result ga2d_world_set_substeps(ga2d_world *w, int substeps)
 {
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
     if (w->lock) return GA2D_ERR_LOCKED;
-    if (substeps < 1 || substeps > 1024) return GA2D_ERR_INVALID_ARGUMENT;
+    if (substeps < 1 || substeps > GA2D_MAX_SUBSTEPS) return GA2D_ERR_INVALID_ARGUMENT;
     w->def.substeps = substeps;
     return GA2D_OK;
 }
@@ -5346,7 +5377,7 @@ static void ga2d__shape_free(ga2d_world *w, int k)
     w->hit_shapes -= sh->hit_events;
     sh->in_move = 0;
     sh->type = -1;
-    sh->generation = sh->generation + 1 ? sh->generation + 1 : 1;
+    sh->generation = ga2d__next_generation(sh->generation);
     sh->next_free = w->shape_free;
     w->shape_free = k;
 }
@@ -5378,7 +5409,7 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
     }
     ga2d__moving_remove(w, slot);
     b->type = -1;
-    b->generation = b->generation + 1 ? b->generation + 1 : 1;
+    b->generation = ga2d__next_generation(b->generation);
     b->next_free = w->free_head;
     w->free_head = slot;
     --w->body_count;
@@ -5716,13 +5747,10 @@ static ga2d_chain_id ga2d__chain_id_of(const ga2d_world *w, int k)
     return id;
 }
 
+/* The live chain an id names, or NULL. */
 static ga2d__chain *ga2d__chain_lookup(const ga2d_world *w, ga2d_chain_id id)
 {
-    ga2d__chain *c;
-    if (!w || id.index1 == 0 || id.index1 > (uint32_t)w->chain_used) return NULL;
-    c = &w->chains[id.index1 - 1];
-    if (c->type < 0 || (c->generation ^ w->tag) != id.generation) return NULL;
-    return c;
+    return GA2D__LIVE(w, ga2d__chain, chains, chain_used, id);
 }
 
 /* A chain slot's segments are gone: the slot is freed. */
@@ -5733,7 +5761,7 @@ static void ga2d__chain_free(ga2d_world *w, int k)
     c->shapes = NULL;
     c->count = 0;
     c->type = -1;
-    c->generation = c->generation + 1 ? c->generation + 1 : 1;
+    c->generation = ga2d__next_generation(c->generation);
     c->next_free = w->chain_free;
     w->chain_free = k;
     --w->chain_count;
@@ -7229,7 +7257,7 @@ static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int
     ps.low = ga2d__wsplat(-push);
     ps.slop = ga2d__wsplat(w->slop);
     ps.nslop = ga2d__wsplat(-w->slop);
-    ps.baumgarte = ga2d__wsplat(GA2D__R(0.2) * inv_h);
+    ps.baumgarte = ga2d__wsplat(GA2D__BAUMGARTE * inv_h);
     ps.soft_rate = ga2d__wsplat(c->soft.bias_rate);
     ps.soft_mass = ga2d__wsplat(c->soft.mass_scale);
     ps.soft_impulse = ga2d__wsplat(c->soft.impulse_scale);
@@ -7558,7 +7586,7 @@ static void ga2d__store_impulses(ga2d__step_context *c, int begin, int end)
 static void ga2d__push_apart(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
-    ga2d_real max_fix = GA2D__R(0.2) * w->def.length_units_per_meter;
+    ga2d_real max_fix = GA2D__NGS_MAX_MOVE * w->def.length_units_per_meter;
     int i, k;
     for (i = begin; i < end; ++i) {
         ga2d__contact_constraint *cc = &c->constraints[i];
@@ -7566,7 +7594,7 @@ static void ga2d__push_apart(ga2d__step_context *c, int begin, int end)
         for (k = 0; k < cc->count; ++k) {
             ga2d__cpoint *p = &cc->p[k];
             ga2d_vec ra, rb, P;
-            ga2d_real s = ga2d__point_now(cc, a, b, p, &ra, &rb), fix = GA2D__R(0.2) * (s + w->slop), lambda;
+            ga2d_real s = ga2d__point_now(cc, a, b, p, &ra, &rb), fix = GA2D__NGS_FRACTION * (s + w->slop), lambda;
             fix = fix < -max_fix ? -max_fix : (fix > 0 ? 0 : fix);
             lambda = -ga2d__effective_mass(cc, ra, rb, cc->normal) * fix; /* at the anchors as they are now */
             P = ga2d_vec_scale(cc->normal, lambda);
@@ -7612,7 +7640,7 @@ static void ga2d__restitute(ga2d__step_context *c)
     ga2d_real threshold = w->def.restitution_threshold * w->def.length_units_per_meter;
     ga2d_real h = c->h, look = c->dt + h;
     int i, k, pass, busy = 1, euler = w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER;
-    for (pass = 0; pass < 32 && busy; ++pass) {
+    for (pass = 0; pass < GA2D__RESTITUTION_PASSES && busy; ++pass) {
         busy = 0;
         for (i = 0; i < c->constraint_count; ++i) {
             ga2d__contact_constraint *cc = &c->constraints[i];
@@ -7844,7 +7872,7 @@ static void ga2d__contain(ga2d_world *w, int slot)
         }
     }
     if (w->step.error == GA2D_OK) w->step.error = GA2D_ERR_NOT_FINITE;
-    if (w->step.error_slot < 0 || slot < w->step.error_slot) w->step.error_slot = slot;
+    if (w->error_slot < 0 || slot < w->error_slot) w->error_slot = slot;
 }
 
 /* Shortens *v to length max if longer (returns 1 then); the length is
@@ -8505,10 +8533,10 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     c->inv_h = 1 / h;
     c->t0 = c->t = w->time;
     c->error = GA2D_OK;
-    c->error_slot = -1;
+    w->error_slot = -1;
     w->begin_count = w->end_count = w->hit_count = 0; /* this step's events */
     ga2d__sensor_events_begin(w);
-    hz = w->def.contact_hertz < GA2D__R(0.25) * c->inv_h ? w->def.contact_hertz : GA2D__R(0.25) * c->inv_h;
+    hz = w->def.contact_hertz < GA2D__HERTZ_CAP * c->inv_h ? w->def.contact_hertz : GA2D__HERTZ_CAP * c->inv_h;
     c->soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
     c->stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
     w->counters.integrated_bodies = 0;
@@ -8715,7 +8743,7 @@ static void ga2d__update_sleep(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     ga2d_real dt = c->dt;
-    ga2d_real tol = GA2D__R(0.05) * w->def.length_units_per_meter;
+    ga2d_real tol = GA2D__SLEEP_SPEED * w->def.length_units_per_meter;
     int k, i, islands = 0;
     for (k = 0; k < w->moving_count; ++k) {
         int s = w->moving[k];
@@ -8755,7 +8783,7 @@ static void ga2d__update_sleep(ga2d__step_context *c)
     /* moving_remove swaps the last entry in: walk down */
     for (k = w->moving_count - 1; k >= 0; --k) {
         int s = w->moving[k];
-        if (w->bodies[s].type == GA2D_BODY_DYNAMIC && w->bodies[ga2d__find(w, s)].island_rest >= GA2D__R(0.5))
+        if (w->bodies[s].type == GA2D_BODY_DYNAMIC && w->bodies[ga2d__find(w, s)].island_rest >= GA2D__TIME_TO_SLEEP)
             ga2d__put_to_sleep(w, s);
     }
 }
@@ -9748,7 +9776,7 @@ static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
         for (j = b->shape_head; j >= 0 && d->draw_aabbs && d->aabb && !w->destroy_pending; j = w->shapes[j].next)
             d->aabb(ga2d__fat_box(w, &w->shapes[j]), GA2D_COLOR_AABB, d->context);
         if (d->draw_centers && d->point && !w->destroy_pending)
-            d->point(b->sim.center, GA2D__R(0.05) * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
+            d->point(b->sim.center, GA2D__DRAW_CENTER_SIZE * w->def.length_units_per_meter, ga2d__state_color(b), d->context);
     }
     if (d->draw_contacts && d->contact)
         for (ci = 0; ci < w->contact_used && !w->destroy_pending; ++ci) {
