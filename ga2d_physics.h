@@ -837,6 +837,9 @@ typedef struct ga2d_world_counters {
                                step (0 in a world without sensors) */
     int round_contacts;     /* contacts solved in the last step with a
                                round shape (the solver's round-anchor work) */
+    int joint_count;        /* live joints */
+    int joints_solved;      /* joints the last step solved (0 in a world
+                               without joints, or with all of them asleep) */
 } ga2d_world_counters;
 
 GA2D_API ga2d_world_def ga2d_default_world_def(void);
@@ -1090,6 +1093,97 @@ GA2D_API ga2d_result ga2d_chain_destroy(ga2d_world *w, ga2d_chain_id id);
 /* Up to `capacity` of the chain's segments in order; returns how many. */
 GA2D_API int ga2d_chain_get_segments(const ga2d_world *w, ga2d_chain_id id, ga2d_shape_id *out, int capacity);
 
+/* ----------------------------------------------------------------- joints */
+/* A joint holds two bodies together: anchors given in each body's own
+   frame, relative to its origin (ga2d_body_local_point turns a world
+   point into one).  Joints are solved with the contacts in every substep
+   (DESIGN section 11): rigid by default, a spring where asked for.  They
+   join islands (a body hanging from another sleeps and wakes with it),
+   are saved in snapshots, drawn by ga2d_world_draw, and a world without
+   joints pays nothing for them.  Revolute joints so far; the other kinds
+   of ga2d_joint_type are names reserved for them. */
+typedef struct ga2d_joint_id { uint32_t index1; uint32_t generation; } ga2d_joint_id; /* zero: null */
+GA2D_API ga2d_joint_id ga2d_joint_id_null(void);
+GA2D_API int ga2d_joint_id_is_null(ga2d_joint_id id);
+GA2D_API int ga2d_joint_id_equal(ga2d_joint_id a, ga2d_joint_id b);
+
+typedef enum ga2d_joint_type {
+    GA2D_JOINT_DISTANCE,
+    GA2D_JOINT_REVOLUTE,
+    GA2D_JOINT_PRISMATIC,
+    GA2D_JOINT_WELD,
+    GA2D_JOINT_WHEEL,
+    GA2D_JOINT_MOTOR,
+    GA2D_JOINT_TYPE_COUNT
+} ga2d_joint_type;
+
+/* A hinge: B's anchor stays on A's, and B turns freely about it, or
+   within [lower_angle, upper_angle] (radians, B's angle relative to A's
+   less reference_angle), driven by a motor toward motor_speed (rad/s)
+   with at most max_motor_torque (N m), or pulled toward the reference
+   angle by a rotational spring of `hertz` and damping_ratio (hertz 0: no
+   spring).  Defaults: anchors at both origins, everything off, the
+   bodies' shapes do not collide with each other (collide_connected 0). */
+typedef struct ga2d_revolute_joint_def {
+    ga2d_body_id body_a, body_b;
+    ga2d_vec local_anchor_a, local_anchor_b;
+    int collide_connected;
+    void *user_data;
+    ga2d_real reference_angle;
+    int enable_limit;
+    ga2d_real lower_angle, upper_angle;
+    int enable_motor;
+    ga2d_real motor_speed, max_motor_torque;
+    int enable_spring;
+    ga2d_real hertz, damping_ratio;
+    int internal_cookie;      /* set by ga2d_default_revolute_joint_def(); leave it */
+} ga2d_revolute_joint_def;
+GA2D_API ga2d_revolute_joint_def ga2d_default_revolute_joint_def(void);
+
+/* The null id on failure (the world unchanged); the _checked form says
+   why: INVALID_ARGUMENT (NULL, a joint between a body and itself, two
+   bodies of which neither is dynamic, a negative max_motor_torque, hertz
+   or damping_ratio, lower_angle above upper_angle when the limit is on),
+   STALE_ID (either body), NOT_FINITE (any number), TOO_LARGE (an anchor
+   beyond GA2D_MAX_COORDINATE), LOCKED (from a callback or a step),
+   OUT_OF_MEMORY.  Creating a joint wakes both bodies; with
+   collide_connected 0 their contacts end (no end event: they never touch
+   again while joined). */
+GA2D_API ga2d_result ga2d_revolute_joint_create_checked(ga2d_world *w, const ga2d_revolute_joint_def *def,
+                                                        ga2d_joint_id *out);
+GA2D_API ga2d_joint_id ga2d_revolute_joint_create(ga2d_world *w, const ga2d_revolute_joint_def *def);
+/* Destroys a joint and wakes its bodies.  Destroying a body destroys its
+   joints (their ids go stale). */
+GA2D_API ga2d_result ga2d_joint_destroy(ga2d_world *w, ga2d_joint_id id);
+GA2D_API int ga2d_joint_is_valid(const ga2d_world *w, ga2d_joint_id id);
+GA2D_API ga2d_joint_type ga2d_joint_get_type(const ga2d_world *w, ga2d_joint_id id); /* TYPE_COUNT if stale */
+GA2D_API ga2d_body_id ga2d_joint_body_a(const ga2d_world *w, ga2d_joint_id id);      /* null if stale */
+GA2D_API ga2d_body_id ga2d_joint_body_b(const ga2d_world *w, ga2d_joint_id id);
+GA2D_API void *ga2d_joint_user_data(const ga2d_world *w, ga2d_joint_id id);
+GA2D_API int ga2d_joint_collide_connected(const ga2d_world *w, ga2d_joint_id id);
+/* What the joint did to B in the last step (N and N m, world frame): the
+   impulses of its last substep over the substep.  Zero if stale. */
+GA2D_API ga2d_vec ga2d_joint_reaction_force(const ga2d_world *w, ga2d_joint_id id);
+GA2D_API ga2d_real ga2d_joint_reaction_torque(const ga2d_world *w, ga2d_joint_id id);
+/* B's angle relative to A's less the reference angle (radians, within
+   (-pi, pi]), and B's spin relative to A's (rad/s). */
+GA2D_API ga2d_real ga2d_revolute_joint_angle(const ga2d_world *w, ga2d_joint_id id);
+GA2D_API ga2d_real ga2d_revolute_joint_speed(const ga2d_world *w, ga2d_joint_id id);
+/* What a game changes at run time.  Each wakes the bodies; INVALID_ARGUMENT
+   for a joint of another kind or a value as create refuses it, STALE_ID,
+   NOT_FINITE, LOCKED. */
+GA2D_API ga2d_result ga2d_revolute_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_revolute_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed);
+GA2D_API ga2d_result ga2d_revolute_joint_set_max_motor_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque);
+GA2D_API ga2d_result ga2d_revolute_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_revolute_joint_set_limits(ga2d_world *w, ga2d_joint_id id, ga2d_real lower, ga2d_real upper);
+GA2D_API ga2d_result ga2d_revolute_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_revolute_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio);
+GA2D_API ga2d_real ga2d_revolute_joint_motor_torque(const ga2d_world *w, ga2d_joint_id id); /* N m, last step */
+/* A world point in the body's frame, relative to its origin: an anchor.
+   Zero for a stale id. */
+GA2D_API ga2d_vec ga2d_body_local_point(const ga2d_world *w, ga2d_body_id id, ga2d_vec world_point);
+
 /* -------------------------------------------------------------- collision */
 /* Tolerances, in metres; a world scales them by its length_units_per_meter.
    Linear slop: the overlap the solver allows to keep contacts steady.
@@ -1245,6 +1339,7 @@ GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_c
 #define GA2D_COLOR_ASLEEP 0x9E9E9Eu
 #define GA2D_COLOR_CONTACT 0xE53F3Fu
 #define GA2D_COLOR_AABB 0xBF3FBFu
+#define GA2D_COLOR_JOINT 0x4CB2E5u
 
 /* What ga2d_world_draw hands a renderer: any callback may be NULL, and the
    switches choose what is drawn.  A shape comes with its body's id (and a
@@ -1266,6 +1361,9 @@ typedef struct ga2d_debug_draw {
     int draw_contacts;   /* default 0 */
     int draw_aabbs;      /* default 0: the broadphase's fat boxes */
     int draw_centers;    /* default 0: centres of mass, as points */
+    int draw_joints;     /* default 1: each joint's anchors, and the line
+                            from A's centre to its anchor, to B's anchor,
+                            to B's centre */
     void *context;
 } ga2d_debug_draw;
 
@@ -1337,6 +1435,7 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
 #define GA2D__RESTITUTION_PASSES 32             /* restitution's passes, at most, a step */
 #define GA2D__HERTZ_CAP GA2D__R(0.25)           /* contact_hertz's cap, of the substep rate */
 #define GA2D__DRAW_CENTER_SIZE GA2D__R(0.05)    /* m: debug draw's centre of mass marker */
+#define GA2D__JOINT_DAMPING_RATIO GA2D__R(2)    /* a rigid joint's position feedback, as a spring's */
 
 /* Helpers that run once per body or contact point and pass, hundreds of
    thousands of times a step: inlined into their callers (the solver's
@@ -3348,6 +3447,7 @@ typedef struct ga2d__body {
     int contact_head;            /* first (oldest) link of its contact list, or -1 */
     int contact_tail;            /* last (newest) link, or -1 */
     int shape_head, shape_tail;  /* its shapes in creation order (ga2d__shape.next), or -1 */
+    int joint_head;              /* its newest joint link (ga2d__joint.next), or -1 */
     int shape_count;
     int island;                  /* union-find parent while islands form */
     int wake_request;            /* asleep, pushed by the force field: wakes at the step's end */
@@ -3400,12 +3500,41 @@ typedef struct ga2d__contact_constraint ga2d__contact_constraint;
 typedef struct ga2d__group ga2d__group;
 typedef struct ga2d__group_extra ga2d__group_extra;
 typedef struct ga2d__sbody ga2d__sbody;
+typedef struct ga2d__joint ga2d__joint;
 typedef struct ga2d__rk4 ga2d__rk4;
 
 /* A soft constraint: a spring of `hertz` and damping ratio `zeta` seen by
    an implicit step of h, as a bias rate and the scales of mass and of the
    accumulated impulse (Catto's soft step). */
 typedef struct ga2d__soft { ga2d_real bias_rate, mass_scale, impulse_scale; } ga2d__soft;
+
+/* A joint slot (the joints section has what it does).  Joints live in a
+   pool as bodies and shapes do, each on both its bodies' joint lists. */
+struct ga2d__joint {
+    int type;                    /* ga2d_joint_type; -1 for a free slot */
+    uint32_t generation;
+    int next_free;
+    int body[2];                 /* A's and B's slots */
+    int next[2];                 /* the next link on body[side]'s list, or -1 */
+    uint64_t serial;             /* creation order: the solver's order */
+    ga2d_vec local[2];           /* anchors in the bodies' frames, from their origins */
+    int collide_connected;
+    void *user_data;
+    /* revolute */
+    ga2d_real reference_angle, lower, upper, motor_speed, max_motor_torque, hertz, damping_ratio;
+    int enable_limit, enable_motor, enable_spring;
+    /* impulses per substep, kept from step to step to warm start */
+    ga2d_vec linear_impulse;
+    ga2d_real spring_impulse, motor_impulse, lower_impulse, upper_impulse;
+    /* prepared each step: the anchors from the centres (world frame) and
+       the centres' offset, where the step began; the angle then, less the
+       reference; the masses */
+    ga2d_vec ra, rb, delta_center;
+    ga2d_real delta_angle;
+    ga2d_real ima, imb, iia, iib, axial_mass;
+    ga2d__soft spring;
+};
+
 
 /* What a step computes and throws away, apart from the world's lasting
    state: the step's times, the contact softness, what it will report, and
@@ -3417,6 +3546,10 @@ typedef struct ga2d__step_context {
     ga2d_real h, inv_h;          /* the substep and its inverse */
     double t0, t;                /* world time at the step's and the substep's start */
     ga2d__soft soft, stiff;      /* contacts between moving bodies, and against a fixed one */
+    ga2d__soft joint_soft;       /* a rigid joint's position feedback */
+    int joint_bias_in_relax;     /* the PGS kinds' velocity passes push joints together too */
+    int *joint_order;            /* the step's joints (pool slots), in creation order */
+    int joint_order_capacity, joint_active;
     ga2d_result error;           /* what the step will report */
     int end_lost;                /* a sensor end event since the last step found no room: reported
                                     as OUT_OF_MEMORY after the step, which runs in full (its
@@ -3466,6 +3599,9 @@ struct ga2d_world {
     int shape_capacity, shape_used, shape_count, shape_free;
     ga2d__chain *chains;
     int chain_capacity, chain_used, chain_count, chain_free;
+    ga2d__joint *joints;
+    int joint_capacity, joint_used, joint_count, joint_free;
+    uint64_t joint_serial;       /* the last joint's creation serial */
     int sensor_count;            /* live sensor shapes: none, and sensing costs nothing */
     int hit_shapes;              /* live shapes with hit events: none, and no pass looks for hits */
     ga2d_sensor_event *sensor_begin, *sensor_end;
@@ -3633,6 +3769,9 @@ static int ga2d__reserve_refits(ga2d_world *w, int n);
 static void ga2d__step_release(ga2d_world *w);
 static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c);
 static void ga2d__update_sleep(ga2d__step_context *c);
+static int ga2d__joined_apart(const ga2d_world *w, int a, int b);
+static void ga2d__joint_free(ga2d_world *w, int k);
+static void ga2d__joints_forget(ga2d_world *w, int slot);
 
 /* ------------------------------------------------------------- pair set */
 /* Which body pairs have a contact: open addressing, linear probing, kept
@@ -3952,6 +4091,7 @@ static int ga2d__pair_wanted(const ga2d_world *w, int i, int j)
     const ga2d__body *a = &w->bodies[si->body], *b = &w->bodies[sj->body];
     if (si->body == sj->body || si->is_sensor || sj->is_sensor) return 0;
     if (a->type != GA2D_BODY_DYNAMIC && b->type != GA2D_BODY_DYNAMIC) return 0;
+    if (w->joint_count > 0 && ga2d__joined_apart(w, si->body, sj->body)) return 0;
     return ga2d_should_collide(si->filter, sj->filter);
 }
 
@@ -4440,6 +4580,7 @@ GA2D_API ga2d_world *ga2d_world_create(const ga2d_world_def *def)
     w->free_head = -1;
     w->shape_free = -1;
     w->chain_free = -1;
+    w->joint_free = -1;
     w->trees[0].root = w->trees[0].free_list = -1;
     w->trees[1].root = w->trees[1].free_list = -1;
     w->contact_free = -1;
@@ -4462,7 +4603,7 @@ static void ga2d__destroy_now(ga2d_world *w)
     memset(w, 0, sizeof *w);
     w->def = dead.def;
     w->mem = dead.mem;
-    w->free_head = w->contact_free = w->error_slot = -1;
+    w->free_head = w->contact_free = w->error_slot = w->joint_free = -1;
     w->trees[0].root = w->trees[0].free_list = w->trees[1].root = w->trees[1].free_list = -1;
     w->lock = GA2D__LOCK_DEAD;
     w->depth = 1; /* a destroy from a free hook changes nothing */
@@ -4479,6 +4620,7 @@ static void ga2d__destroy_now(ga2d_world *w)
         for (k = 0; k < w->chain_used; ++k) GA2D__FREE_ARRAY(a, w->chains[k].shapes, w->chains[k].count);
     }
     GA2D__FREE_ARRAY(a, w->chains, w->chain_capacity);
+    GA2D__FREE_ARRAY(a, w->joints, w->joint_capacity);
     GA2D__FREE_ARRAY(a, w->sensor_begin, w->sensor_begin_capacity);
     GA2D__FREE_ARRAY(a, w->hit_events, w->hit_capacity);
     GA2D__FREE_ARRAY(a, w->sensor_end, w->sensor_end_capacity);
@@ -4532,6 +4674,7 @@ GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w)
     c = w->counters;
     c.body_count = w->body_count;
     c.shape_count = w->shape_count;
+    c.joint_count = w->joint_count;
     c.moving_body_count = w->moving_count;
     c.pair_count = w->contact_count;
     c.touching_count = ga2d_world_get_contacts(w, NULL, 0);
@@ -5174,6 +5317,7 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
     b->move_index = -1;
     b->next_free = -1;
     b->contact_head = b->contact_tail = -1;
+    b->joint_head = -1;
     if (def->polygon.count > 0) {
         ga2d_shape_def sd = ga2d_default_shape_def();
         sd.density = def->density;
@@ -5400,6 +5544,7 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
             if (ct->touching) ga2d__wake(w, ga2d__edge_other(w, link));
         }
     }
+    while (b->joint_head >= 0) ga2d__joint_free(w, b->joint_head >> 1); /* wakes what hung from it */
     ga2d__destroy_body_contacts(w, slot, 0);
     while (b->shape_head >= 0) ga2d__shape_free(w, b->shape_head);
     {
@@ -7400,27 +7545,39 @@ static int ga2d__group_free(ga2d__step_context *c, int gi)
    run side by side.  A pyramid fills nearly every lane.  The solver
    bodies and the groups are sized here; out of memory, the step reports
    it and no contact is solved. */
+/* The solver bodies, one per body slot and a dummy past the end (an
+   empty lane's): 0 when memory runs out (the step reports it). */
+static int ga2d__reserve_sbodies(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    ga2d__sbody *dummy;
+    if (!ga2d__grow(&w->mem, (void **)&c->sbodies, &c->sbody_capacity, w->body_used + 1, sizeof *c->sbodies)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    dummy = &c->sbodies[w->body_used];
+    memset(dummy, 0, sizeof *dummy);
+    dummy->dqc = 1;
+    return 1;
+}
+
 static void ga2d__assign_lanes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     int used = w->body_used, i, extras = 0;
     int *last;
-    ga2d__sbody *dummy;
     c->group_count = 0;
     if (c->constraint_count == 0) return;
     /* groups grow as they open (below), not to one per constraint (the
        worst case, every constraint on one body): a group holds up to
        GA2D__LANES constraints, so that would be GA2D__LANES times the room */
-    if (!ga2d__grow(&w->mem, (void **)&c->sbodies, &c->sbody_capacity, used + 1, sizeof *c->sbodies) ||
-        !ga2d__grow(&w->mem, (void **)&c->last_group, &c->last_group_capacity, used, sizeof *c->last_group)) {
+    if (!ga2d__reserve_sbodies(c)) return;
+    if (!ga2d__grow(&w->mem, (void **)&c->last_group, &c->last_group_capacity, used, sizeof *c->last_group)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
     last = c->last_group;
     for (i = 0; i < used; ++i) last[i] = -1;
-    dummy = &c->sbodies[used];
-    memset(dummy, 0, sizeof *dummy);
-    dummy->dqc = 1;
     for (i = 0; i < c->constraint_count; ++i) {
         const ga2d__contact_constraint *cc = &c->constraints[i];
         int ma = cc->inv_ma != 0 || cc->inv_ia != 0, mb = cc->inv_mb != 0 || cc->inv_ib != 0, gi = 0;
@@ -7516,7 +7673,7 @@ static void ga2d__gather(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     int k;
-    if (c->group_count == 0) return;
+    if (c->group_count == 0 && c->joint_active == 0) return;
     for (k = begin; k < end; ++k) {
         int slot = w->moving[k];
         const ga2d__body_sim *b = &w->bodies[slot].sim;
@@ -7538,7 +7695,7 @@ static void ga2d__scatter(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     int k;
-    if (c->group_count == 0) return;
+    if (c->group_count == 0 && c->joint_active == 0) return;
     for (k = begin; k < end; ++k) {
         int slot = w->moving[k];
         ga2d__body *b = &w->bodies[slot];
@@ -7713,6 +7870,616 @@ static void ga2d__restitute(ga2d__step_context *c)
         if (!ga2d__state_finite(&w->bodies[w->moving[k]].sim)) ga2d__contain(w, w->moving[k]);
 }
 
+/* ================================================================= joints */
+/* Joints live in a pool as bodies and shapes do (ga2d__live_slot), each on
+   both its bodies' joint lists: a link is joint << 1 | side (0: A, 1: B),
+   a body's list runs newest first.  A joint's creation serial is its
+   place in the solver's order, so joints made and destroyed elsewhere
+   leave a scene's bits alone. */
+static ga2d_joint_id ga2d__joint_id_of(const ga2d_world *w, int k)
+{
+    ga2d_joint_id id;
+    id.index1 = (uint32_t)k + 1;
+    id.generation = w->joints[k].generation ^ w->tag;
+    return id;
+}
+
+/* The live joint an id names, or NULL. */
+static ga2d__joint *ga2d__joint_lookup(const ga2d_world *w, ga2d_joint_id id)
+{
+    return GA2D__LIVE(w, ga2d__joint, joints, joint_used, id);
+}
+
+GA2D_API ga2d_joint_id ga2d_joint_id_null(void) { ga2d_joint_id id; id.index1 = 0; id.generation = 0; return id; }
+GA2D_API int ga2d_joint_id_is_null(ga2d_joint_id id) { return id.index1 == 0; }
+GA2D_API int ga2d_joint_id_equal(ga2d_joint_id a, ga2d_joint_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
+
+/* A body's joint list: its first link, and the link after `link`. */
+static int ga2d__first_joint(const ga2d_world *w, int slot) { return w->bodies[slot].joint_head; }
+static int ga2d__next_joint(const ga2d_world *w, int link) { return w->joints[link >> 1].next[link & 1]; }
+static int ga2d__joint_other(const ga2d_world *w, int link) { return w->joints[link >> 1].body[!(link & 1)]; }
+
+static void ga2d__link_joint(ga2d_world *w, int k, int side)
+{
+    ga2d__body *b = &w->bodies[w->joints[k].body[side]];
+    w->joints[k].next[side] = b->joint_head;
+    b->joint_head = k << 1 | side;
+}
+
+static void ga2d__unlink_joint(ga2d_world *w, int k, int side)
+{
+    ga2d__body *b = &w->bodies[w->joints[k].body[side]];
+    int *at = &b->joint_head;
+    while (*at != (k << 1 | side)) at = &w->joints[*at >> 1].next[*at & 1];
+    *at = w->joints[k].next[side];
+}
+
+/* Two bodies joined by a joint that keeps their shapes apart
+   (collide_connected 0): their pairs are not wanted.  Walks the shorter
+   idea of a list: A's (a body has few joints). */
+static int ga2d__joined_apart(const ga2d_world *w, int a, int b)
+{
+    int link;
+    for (link = ga2d__first_joint(w, a); link >= 0; link = ga2d__next_joint(w, link))
+        if (ga2d__joint_other(w, link) == b && !w->joints[link >> 1].collide_connected) return 1;
+    return 0;
+}
+
+/* Ends the contacts between bodies a and b (a joint now keeps them apart). */
+static void ga2d__end_joined_contacts(ga2d_world *w, int a, int b)
+{
+    int link = ga2d__first_edge(w, a);
+    while (link >= 0) {
+        int next = ga2d__next_edge(w, link);
+        if (ga2d__edge_other(w, link) == b) ga2d__destroy_contact(w, link >> 1);
+        link = next;
+    }
+}
+
+static void ga2d__joint_free(ga2d_world *w, int k)
+{
+    ga2d__joint *j = &w->joints[k];
+    int s;
+    ga2d__unlink_joint(w, k, 0);
+    ga2d__unlink_joint(w, k, 1);
+    for (s = 0; s < 2; ++s) {
+        ga2d__wake(w, j->body[s]);
+        if (!j->collide_connected) ga2d__buffer_body(w, j->body[s]); /* pairs they may make again */
+    }
+    j->type = -1;
+    j->generation = ga2d__next_generation(j->generation);
+    j->next_free = w->joint_free;
+    w->joint_free = k;
+    --w->joint_count;
+}
+
+/* The checks every joint's def shares: the bodies live, two, one of them
+   dynamic; anchors finite and within the coordinate bound. */
+static ga2d_result ga2d__joint_bodies_check(const ga2d_world *w, ga2d_body_id a, ga2d_body_id b, ga2d_vec la, ga2d_vec lb)
+{
+    const ga2d__body *ba = ga2d__lookup(w, a), *bb = ga2d__lookup(w, b);
+    if (!ba || !bb) return GA2D_ERR_STALE_ID;
+    if (ga2d__slot(a) == ga2d__slot(b) || (ba->type != GA2D_BODY_DYNAMIC && bb->type != GA2D_BODY_DYNAMIC))
+        return GA2D_ERR_INVALID_ARGUMENT;
+    if (!ga2d__finite_vec(la) || !ga2d__finite_vec(lb)) return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__coordinate_ok(la) || !ga2d__coordinate_ok(lb)) return GA2D_ERR_TOO_LARGE;
+    return GA2D_OK;
+}
+
+/* A revolute def's own numbers: finite, the limit ordered, nothing
+   negative that must not be. */
+static ga2d_result ga2d__revolute_check(const ga2d_revolute_joint_def *d)
+{
+    if (!ga2d__finite(d->reference_angle) || !ga2d__finite(d->lower_angle) || !ga2d__finite(d->upper_angle) ||
+        !ga2d__finite(d->motor_speed) || !ga2d__finite(d->max_motor_torque) || !ga2d__finite(d->hertz) ||
+        !ga2d__finite(d->damping_ratio))
+        return GA2D_ERR_NOT_FINITE;
+    if (d->max_motor_torque < 0 || d->hertz < 0 || d->damping_ratio < 0 || (d->enable_limit && d->lower_angle > d->upper_angle))
+        return GA2D_ERR_INVALID_ARGUMENT;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_revolute_joint_def ga2d_default_revolute_joint_def(void)
+{
+    ga2d_revolute_joint_def d;
+    memset(&d, 0, sizeof d);
+    d.internal_cookie = GA2D_DEF_COOKIE;
+    return d;
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_create_checked(ga2d_world *w, const ga2d_revolute_joint_def *def, ga2d_joint_id *out)
+{
+    ga2d__joint *j;
+    ga2d_result r;
+    int k, a, b;
+    if (out) *out = ga2d_joint_id_null();
+    if (!w || !def || !out) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->lock) return GA2D_ERR_LOCKED;
+    if ((r = ga2d__joint_bodies_check(w, def->body_a, def->body_b, def->local_anchor_a, def->local_anchor_b)) != GA2D_OK) return r;
+    if ((r = ga2d__revolute_check(def)) != GA2D_OK) return r;
+    k = w->joint_free >= 0 ? w->joint_free : w->joint_used;
+    ga2d__enter(w);
+    if (!ga2d__grow(&w->mem, (void **)&w->joints, &w->joint_capacity, k + 1, sizeof *w->joints)) {
+        ga2d__leave(w);
+        return GA2D_ERR_OUT_OF_MEMORY;
+    }
+    if (k == w->joint_used) {
+        w->joints[k].generation = 1;
+        ++w->joint_used;
+    } else {
+        w->joint_free = w->joints[k].next_free;
+    }
+    j = &w->joints[k];
+    {
+        uint32_t generation = j->generation;
+        memset(j, 0, sizeof *j);
+        j->generation = generation;
+    }
+    a = ga2d__slot(def->body_a);
+    b = ga2d__slot(def->body_b);
+    j->type = GA2D_JOINT_REVOLUTE;
+    j->next_free = -1;
+    j->body[0] = a;
+    j->body[1] = b;
+    j->serial = ++w->joint_serial;
+    j->local[0] = def->local_anchor_a;
+    j->local[1] = def->local_anchor_b;
+    j->collide_connected = def->collide_connected != 0;
+    j->user_data = def->user_data;
+    j->reference_angle = def->reference_angle;
+    j->enable_limit = def->enable_limit != 0;
+    j->lower = def->lower_angle;
+    j->upper = def->upper_angle;
+    j->enable_motor = def->enable_motor != 0;
+    j->motor_speed = def->motor_speed;
+    j->max_motor_torque = def->max_motor_torque;
+    j->enable_spring = def->enable_spring != 0;
+    j->hertz = def->hertz;
+    j->damping_ratio = def->damping_ratio;
+    ga2d__link_joint(w, k, 0);
+    ga2d__link_joint(w, k, 1);
+    ++w->joint_count;
+    if (!j->collide_connected) ga2d__end_joined_contacts(w, a, b);
+    ga2d__wake(w, a);
+    ga2d__wake(w, b);
+    *out = ga2d__joint_id_of(w, k);
+    ga2d__leave(w);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_joint_id ga2d_revolute_joint_create(ga2d_world *w, const ga2d_revolute_joint_def *def)
+{
+    ga2d_joint_id id;
+    (void)ga2d_revolute_joint_create_checked(w, def, &id);
+    return id;
+}
+
+GA2D_API ga2d_result ga2d_joint_destroy(ga2d_world *w, ga2d_joint_id id)
+{
+    ga2d__joint *j;
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->lock) return GA2D_ERR_LOCKED;
+    if (!(j = ga2d__joint_lookup(w, id))) return GA2D_ERR_STALE_ID;
+    ga2d__enter(w);
+    ga2d__joint_free(w, (int)id.index1 - 1);
+    ga2d__leave(w);
+    return GA2D_OK;
+}
+
+GA2D_API int ga2d_joint_is_valid(const ga2d_world *w, ga2d_joint_id id) { return ga2d__joint_lookup(w, id) != NULL; }
+
+GA2D_API ga2d_joint_type ga2d_joint_get_type(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j ? (ga2d_joint_type)j->type : GA2D_JOINT_TYPE_COUNT;
+}
+
+GA2D_API ga2d_body_id ga2d_joint_body_a(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j ? ga2d__id_of(w, j->body[0]) : ga2d_body_id_null();
+}
+
+GA2D_API ga2d_body_id ga2d_joint_body_b(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j ? ga2d__id_of(w, j->body[1]) : ga2d_body_id_null();
+}
+
+GA2D_API void *ga2d_joint_user_data(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j ? j->user_data : NULL;
+}
+
+GA2D_API int ga2d_joint_collide_connected(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j ? j->collide_connected : 0;
+}
+
+GA2D_API ga2d_vec ga2d_joint_reaction_force(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j ? ga2d_vec_scale(j->linear_impulse, w->step.inv_h) : ga2d_vec_make(0, 0);
+}
+
+/* The axial impulses' sum: spring, motor and the limits, on B. */
+static ga2d_real ga2d__joint_axial_impulse(const ga2d__joint *j)
+{
+    return j->spring_impulse + j->motor_impulse + j->lower_impulse - j->upper_impulse;
+}
+
+GA2D_API ga2d_real ga2d_joint_reaction_torque(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j ? ga2d__joint_axial_impulse(j) * w->step.inv_h : 0;
+}
+
+/* B's rotor relative to A's (B's turn seen from A), as a unit rotor
+   qa~ qb: its angle is angle(B) - angle(A) (2D rotors commute). */
+static ga2d_rotor ga2d__relative_rotor(ga2d_rotor qa, ga2d_rotor qb) { return ga2d_rotor_mul(ga2d_rotor_inverse(qa), qb); }
+
+/* An angle moved into (-pi, pi]. */
+static ga2d_real ga2d__wrap_angle(ga2d_real a)
+{
+    while (a > GA2D__PI) a -= 2 * GA2D__PI;
+    while (a <= -GA2D__PI) a += 2 * GA2D__PI;
+    return a;
+}
+
+static const ga2d__joint *ga2d__revolute_of(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j && j->type == GA2D_JOINT_REVOLUTE ? j : NULL;
+}
+
+GA2D_API ga2d_real ga2d_revolute_joint_angle(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__revolute_of(w, id);
+    if (!j) return 0;
+    return ga2d__wrap_angle(ga2d_rotor_angle(ga2d__relative_rotor(w->bodies[j->body[0]].sim.q, w->bodies[j->body[1]].sim.q)) -
+                            j->reference_angle);
+}
+
+GA2D_API ga2d_real ga2d_revolute_joint_speed(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__revolute_of(w, id);
+    return j ? w->bodies[j->body[1]].sim.w - w->bodies[j->body[0]].sim.w : 0;
+}
+
+GA2D_API ga2d_real ga2d_revolute_joint_motor_torque(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__revolute_of(w, id);
+    return j ? j->motor_impulse * w->step.inv_h : 0;
+}
+
+/* A revolute joint a setter may change (waking its bodies), or why not. */
+static ga2d_result ga2d__revolute_writable(ga2d_world *w, ga2d_joint_id id, ga2d__joint **out)
+{
+    ga2d__joint *j;
+    if (!w) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->lock) return GA2D_ERR_LOCKED;
+    if (!(j = ga2d__joint_lookup(w, id))) return GA2D_ERR_STALE_ID;
+    if (j->type != GA2D_JOINT_REVOLUTE) return GA2D_ERR_INVALID_ARGUMENT;
+    *out = j;
+    return GA2D_OK;
+}
+
+/* After a setter changed a joint: its bodies wake (from outside a step:
+   waking may grow the moving list through the hooks). */
+static void ga2d__joint_changed(ga2d_world *w, const ga2d__joint *j)
+{
+    int a = j->body[0], b = j->body[1];
+    ga2d__enter(w);
+    ga2d__wake(w, a);
+    ga2d__wake(w, b);
+    ga2d__leave(w);
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    ga2d__joint *j;
+    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    if (r != GA2D_OK) return r;
+    j->enable_motor = enable != 0;
+    if (!j->enable_motor) j->motor_impulse = 0;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed)
+{
+    ga2d__joint *j;
+    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(speed)) return GA2D_ERR_NOT_FINITE;
+    j->motor_speed = speed;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_set_max_motor_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque)
+{
+    ga2d__joint *j;
+    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(torque)) return GA2D_ERR_NOT_FINITE;
+    if (torque < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    j->max_motor_torque = torque;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    ga2d__joint *j;
+    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    if (r != GA2D_OK) return r;
+    if (enable && j->lower > j->upper) return GA2D_ERR_INVALID_ARGUMENT;
+    j->enable_limit = enable != 0;
+    if (!j->enable_limit) j->lower_impulse = j->upper_impulse = 0;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_set_limits(ga2d_world *w, ga2d_joint_id id, ga2d_real lower, ga2d_real upper)
+{
+    ga2d__joint *j;
+    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(lower) || !ga2d__finite(upper)) return GA2D_ERR_NOT_FINITE;
+    if (lower > upper) return GA2D_ERR_INVALID_ARGUMENT;
+    j->lower = lower;
+    j->upper = upper;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    ga2d__joint *j;
+    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    if (r != GA2D_OK) return r;
+    j->enable_spring = enable != 0;
+    if (!j->enable_spring) j->spring_impulse = 0;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
+{
+    ga2d__joint *j;
+    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    if (r != GA2D_OK) return r;
+    if (!ga2d__finite(hertz) || !ga2d__finite(damping_ratio)) return GA2D_ERR_NOT_FINITE;
+    if (hertz < 0 || damping_ratio < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    j->hertz = hertz;
+    j->damping_ratio = damping_ratio;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_vec ga2d_body_local_point(const ga2d_world *w, ga2d_body_id id, ga2d_vec world_point)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    if (!b) return ga2d_vec_make(0, 0);
+    return ga2d_rotate_inv(b->sim.q, ga2d_vec_sub(world_point, ga2d__body_origin(b)));
+}
+
+/* ---------------------------------------------------------- joint solver */
+/* The step's joints: those with an awake dynamic body, in creation order
+   (insertion sort on the serial: the pool's order is nearly that, so
+   this is about one pass).  Out of memory: the step reports it and no
+   joint is solved. */
+static void ga2d__order_joints(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, n = 0;
+    c->joint_active = 0;
+    if (w->joint_count == 0) return;
+    if (!ga2d__grow(&w->mem, (void **)&c->joint_order, &c->joint_order_capacity, w->joint_count, sizeof *c->joint_order)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    for (k = 0; k < w->joint_used; ++k) {
+        const ga2d__joint *j = &w->joints[k];
+        const ga2d__body *a, *b;
+        int at;
+        if (j->type < 0) continue;
+        a = &w->bodies[j->body[0]];
+        b = &w->bodies[j->body[1]];
+        if (!((a->type == GA2D_BODY_DYNAMIC && a->awake) || (b->type == GA2D_BODY_DYNAMIC && b->awake))) continue;
+        for (at = n; at > 0 && w->joints[c->joint_order[at - 1]].serial > j->serial; --at) c->joint_order[at] = c->joint_order[at - 1];
+        c->joint_order[at] = k;
+        ++n;
+    }
+    c->joint_active = n;
+}
+
+/* Stage, over the step's joints: anchors, masses and the angle where the
+   step began; a side the solver does not move gets its solver body.  The
+   solver bodies must be there (ga2d__reserve_sbodies). */
+static void ga2d__prepare_joints(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int i;
+    for (i = begin; i < end; ++i) {
+        ga2d__joint *j = &w->joints[c->joint_order[i]];
+        const ga2d__body *a = &w->bodies[j->body[0]], *b = &w->bodies[j->body[1]];
+        int ma = a->type == GA2D_BODY_DYNAMIC && a->awake, mb = b->type == GA2D_BODY_DYNAMIC && b->awake;
+        j->ra = ga2d_rotate(a->sim.q, ga2d_vec_sub(j->local[0], a->sim.local_center));
+        j->rb = ga2d_rotate(b->sim.q, ga2d_vec_sub(j->local[1], b->sim.local_center));
+        j->delta_center = ga2d_vec_sub(b->sim.center, a->sim.center);
+        j->delta_angle = ga2d__wrap_angle(ga2d_rotor_angle(ga2d__relative_rotor(a->sim.q, b->sim.q)) - j->reference_angle);
+        j->ima = ma ? a->sim.inv_mass : 0;
+        j->imb = mb ? b->sim.inv_mass : 0;
+        j->iia = ma ? a->sim.inv_inertia : 0;
+        j->iib = mb ? b->sim.inv_inertia : 0;
+        j->axial_mass = j->iia + j->iib > 0 ? 1 / (j->iia + j->iib) : 0;
+        j->spring = ga2d__make_soft(j->enable_spring ? j->hertz : 0, j->damping_ratio, c->h);
+        if (!w->def.enable_warm_starting) {
+            j->linear_impulse = ga2d_vec_make(0, 0);
+            j->spring_impulse = j->motor_impulse = j->lower_impulse = j->upper_impulse = 0;
+        }
+        ga2d__still_body(c, j->body[0]);
+        ga2d__still_body(c, j->body[1]);
+    }
+}
+
+/* A solver body's velocity state, and a turn applied to an anchor. */
+typedef struct ga2d__jbody { ga2d_vec v; ga2d_real w; } ga2d__jbody;
+
+static ga2d__jbody ga2d__jload(const ga2d__sbody *s)
+{
+    ga2d__jbody b;
+    b.v = ga2d_vec_make(s->vx, s->vy);
+    b.w = s->w;
+    return b;
+}
+
+static void ga2d__jstore(ga2d__sbody *s, ga2d__jbody b)
+{
+    s->vx = b.v.x;
+    s->vy = b.v.y;
+    s->w = b.w;
+}
+
+/* An anchor r (from the centre, where the step began) turned as its body
+   has since: r dq. */
+static ga2d_vec ga2d__jturn(const ga2d__sbody *s, ga2d_vec r) { return ga2d_rotate(ga2d__rotor(s->dqc, s->dqs), r); }
+
+/* The impulse P at anchors ra, rb and the axial impulse L (a torque
+   impulse on B, its opposite on A): v += P / m, w += (r ^ P + L) / I on
+   B, the opposite on A (the paper's impulse response, eq. for the
+   angular part: the bivector r ^ P over the inertia). */
+static void ga2d__japply(const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, ga2d_vec ra, ga2d_vec rb, ga2d_vec P, ga2d_real L)
+{
+    A->v = ga2d_vec_sub(A->v, ga2d_vec_scale(P, j->ima));
+    A->w -= j->iia * (ga2d_wedge(ra, P) + L);
+    B->v = ga2d_vec_add(B->v, ga2d_vec_scale(P, j->imb));
+    B->w += j->iib * (ga2d_wedge(rb, P) + L);
+}
+
+/* Stage, over the step's joints: last step's impulses, at the anchors as
+   they are now. */
+static void ga2d__warm_start_joints(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int i;
+    for (i = begin; i < end; ++i) {
+        const ga2d__joint *j = &w->joints[c->joint_order[i]];
+        ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
+        ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
+        ga2d__japply(j, &A, &B, ga2d__jturn(sa, j->ra), ga2d__jturn(sb, j->rb), j->linear_impulse, ga2d__joint_axial_impulse(j));
+        ga2d__jstore(sa, A);
+        ga2d__jstore(sb, B);
+    }
+}
+
+/* One side of a revolute limit, as a contact along the angle: C >= 0 is
+   the room left.  Apart, it closes no faster than C / h (speculative);
+   past it, the soft bias pushes back (bias passes only).  The impulse is
+   accumulated and kept >= 0.  Returns the change, a torque impulse on B
+   in the limit's sense (sign: +1 lower, -1 upper). */
+static ga2d_real ga2d__limit_impulse(const ga2d__step_context *c, const ga2d__joint *j, ga2d_real C, ga2d_real Cdot,
+                                     ga2d_real *accumulated, int bias)
+{
+    ga2d_real b = 0, ms = 1, is = 0, lambda, total;
+    if (C > 0) b = C * c->inv_h;
+    else if (bias) {
+        b = c->joint_soft.bias_rate * C;
+        ms = c->joint_soft.mass_scale;
+        is = c->joint_soft.impulse_scale;
+    }
+    lambda = -j->axial_mass * ms * (Cdot + b) - is * *accumulated;
+    total = *accumulated + lambda > 0 ? *accumulated + lambda : 0;
+    lambda = total - *accumulated;
+    *accumulated = total;
+    return lambda;
+}
+
+/* A revolute joint's pass (Catto's soft step, as Box2D v3 solves it):
+   the spring, the motor and the limits along the angle, then the point
+   constraint, B's anchor onto A's, as a 2x2 block.  bias: the pass that
+   pushes errors out (the soft pass); a relax pass keeps velocities only. */
+static void ga2d__solve_revolute(ga2d__step_context *c, ga2d__joint *j, int bias)
+{
+    ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
+    ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
+    ga2d_vec ra = ga2d__jturn(sa, j->ra), rb = ga2d__jturn(sb, j->rb), cdot, sep, rhs, P;
+    int turns = j->axial_mass > 0;
+    ga2d_real angle = 0, k11, k12, k22, det, ms = 1, is = 0;
+    if (turns && (j->enable_spring || j->enable_limit))
+        angle = j->delta_angle + ga2d_rotor_angle(ga2d__relative_rotor(ga2d__rotor(sa->dqc, sa->dqs), ga2d__rotor(sb->dqc, sb->dqs)));
+    if (turns && j->enable_spring && j->hertz > 0) {
+        ga2d_real lambda = -j->spring.mass_scale * j->axial_mass * (B.w - A.w + j->spring.bias_rate * angle) -
+                           j->spring.impulse_scale * j->spring_impulse;
+        j->spring_impulse += lambda;
+        A.w -= j->iia * lambda;
+        B.w += j->iib * lambda;
+    }
+    if (turns && j->enable_motor) {
+        ga2d_real cap = j->max_motor_torque * c->h, old = j->motor_impulse;
+        ga2d_real total = old - j->axial_mass * (B.w - A.w - j->motor_speed);
+        j->motor_impulse = total < -cap ? -cap : (total > cap ? cap : total);
+        A.w -= j->iia * (j->motor_impulse - old);
+        B.w += j->iib * (j->motor_impulse - old);
+    }
+    if (turns && j->enable_limit) {
+        ga2d_real lambda = ga2d__limit_impulse(c, j, angle - j->lower, B.w - A.w, &j->lower_impulse, bias);
+        A.w -= j->iia * lambda;
+        B.w += j->iib * lambda;
+        lambda = ga2d__limit_impulse(c, j, j->upper - angle, A.w - B.w, &j->upper_impulse, bias);
+        A.w += j->iia * lambda;
+        B.w -= j->iib * lambda;
+    }
+    /* the point: relative velocity of B's anchor to A's, vb + w_b rb_perp -
+       va - w_a ra_perp (w e12 acting on r), and with bias the anchors'
+       separation now: the centres' offset where the step began, the
+       centres' motion since, the turned anchors */
+    cdot = ga2d_vec_sub(ga2d_vec_add(B.v, ga2d_vec_scale(ga2d_vec_perp(rb), B.w)),
+                        ga2d_vec_add(A.v, ga2d_vec_scale(ga2d_vec_perp(ra), A.w)));
+    rhs = cdot;
+    if (bias) {
+        sep = ga2d_vec_add(ga2d_vec_add(ga2d_vec_make(sb->dpx - sa->dpx, sb->dpy - sa->dpy), ga2d_vec_sub(rb, ra)), j->delta_center);
+        rhs = ga2d_vec_add(cdot, ga2d_vec_scale(sep, c->joint_soft.bias_rate));
+        ms = c->joint_soft.mass_scale;
+        is = c->joint_soft.impulse_scale;
+    }
+    k11 = j->ima + j->imb + j->iia * ra.y * ra.y + j->iib * rb.y * rb.y;
+    k12 = -j->iia * ra.x * ra.y - j->iib * rb.x * rb.y;
+    k22 = j->ima + j->imb + j->iia * ra.x * ra.x + j->iib * rb.x * rb.x;
+    det = k11 * k22 - k12 * k12;
+    if (det != 0) det = 1 / det;
+    P = ga2d_vec_make(det * (k22 * rhs.x - k12 * rhs.y), det * (k11 * rhs.y - k12 * rhs.x));
+    P = ga2d_vec_sub(ga2d_vec_scale(P, -ms), ga2d_vec_scale(j->linear_impulse, is));
+    j->linear_impulse = ga2d_vec_add(j->linear_impulse, P);
+    ga2d__japply(j, &A, &B, ra, rb, P, 0);
+    ga2d__jstore(sa, A);
+    ga2d__jstore(sb, B);
+}
+
+/* Stage, over the step's joints: a pass, with the bias or without. */
+static void ga2d__solve_joints(ga2d__step_context *c, int begin, int end, int bias)
+{
+    ga2d_world *w = c->world;
+    int i;
+    for (i = begin; i < end; ++i) ga2d__solve_revolute(c, &w->joints[c->joint_order[i]], bias);
+}
+
+/* Containment: a blown-up body's joints forget their impulses (else
+   warm starting hands the NaN back to it and on to its neighbours). */
+static void ga2d__joints_forget(ga2d_world *w, int slot)
+{
+    int link;
+    for (link = ga2d__first_joint(w, slot); link >= 0; link = ga2d__next_joint(w, link)) {
+        ga2d__joint *j = &w->joints[link >> 1];
+        j->linear_impulse = ga2d_vec_make(0, 0);
+        j->spring_impulse = j->motor_impulse = j->lower_impulse = j->upper_impulse = 0;
+    }
+}
+
 /* ============================================================ world step */
 /* RK4's per-body scratch for one substep: the start state, the derivative
    of the last stage and the weighted sum of the stages. */
@@ -7765,6 +8532,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->last_group, c->last_group_capacity);
     GA2D__FREE_ARRAY(a, c->changed, c->changed_capacity);
     GA2D__FREE_ARRAY(a, c->refits, c->refit_capacity);
+    GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
 }
 
 /* Runs the force callback at time t on the bodies' current state.  The
@@ -7871,6 +8639,7 @@ static void ga2d__contain(ga2d_world *w, int slot)
             if (w->step.group_count > 0) ga2d__lane_clear(&w->step, c->lane);
         }
     }
+    if (w->joint_count > 0) ga2d__joints_forget(w, slot);
     if (w->step.error == GA2D_OK) w->step.error = GA2D_ERR_NOT_FINITE;
     if (w->error_slot < 0 || slot < w->error_slot) w->error_slot = slot;
 }
@@ -8443,10 +9212,40 @@ typedef struct ga2d__stage { ga2d__stage_fn *run; int repeat; } ga2d__stage;
 
 static void ga2d__stage_gather(ga2d__step_context *c) { ga2d__run(c, ga2d__gather, c->world->moving_count); }
 static void ga2d__stage_scatter(ga2d__step_context *c) { ga2d__run(c, ga2d__scatter, c->world->moving_count); }
-static void ga2d__stage_warm_start(ga2d__step_context *c) { ga2d__run(c, ga2d__warm_start, c->group_count); }
-static void ga2d__stage_solve(ga2d__step_context *c) { ga2d__run(c, ga2d__solve_soft, c->group_count); }
-static void ga2d__stage_relax(ga2d__step_context *c) { ga2d__run(c, ga2d__solve_rigid, c->group_count); }
-static void ga2d__stage_baumgarte(ga2d__step_context *c) { ga2d__run(c, ga2d__solve_baumgarte, c->group_count); }
+/* The solver's stages run over blocks of constraints of two kinds, the
+   step's joints first (one at a time) and then the contacts' lane groups,
+   as one range: items [0, joint_active) are joints, the rest groups. */
+static void ga2d__blocks(ga2d__step_context *c, int begin, int end, ga2d__range_fn *joints, ga2d__range_fn *groups)
+{
+    int n = c->joint_active;
+    if (begin < n) joints(c, begin, end < n ? end : n);
+    if (end > n) groups(c, begin > n ? begin - n : 0, end - n);
+}
+static void ga2d__joints_biased(ga2d__step_context *c, int begin, int end) { ga2d__solve_joints(c, begin, end, 1); }
+static void ga2d__joints_relaxed(ga2d__step_context *c, int begin, int end)
+{
+    ga2d__solve_joints(c, begin, end, c->joint_bias_in_relax);
+}
+static void ga2d__warm_start_blocks(ga2d__step_context *c, int begin, int end)
+{
+    ga2d__blocks(c, begin, end, ga2d__warm_start_joints, ga2d__warm_start);
+}
+static void ga2d__solve_blocks(ga2d__step_context *c, int begin, int end)
+{
+    ga2d__blocks(c, begin, end, ga2d__joints_biased, ga2d__solve_soft);
+}
+static void ga2d__relax_blocks(ga2d__step_context *c, int begin, int end)
+{
+    ga2d__blocks(c, begin, end, ga2d__joints_relaxed, ga2d__solve_rigid);
+}
+static void ga2d__baumgarte_blocks(ga2d__step_context *c, int begin, int end)
+{
+    ga2d__blocks(c, begin, end, ga2d__joints_biased, ga2d__solve_baumgarte);
+}
+static void ga2d__stage_warm_start(ga2d__step_context *c) { ga2d__run(c, ga2d__warm_start_blocks, c->joint_active + c->group_count); }
+static void ga2d__stage_solve(ga2d__step_context *c) { ga2d__run(c, ga2d__solve_blocks, c->joint_active + c->group_count); }
+static void ga2d__stage_relax(ga2d__step_context *c) { ga2d__run(c, ga2d__relax_blocks, c->joint_active + c->group_count); }
+static void ga2d__stage_baumgarte(ga2d__step_context *c) { ga2d__run(c, ga2d__baumgarte_blocks, c->joint_active + c->group_count); }
 static void ga2d__stage_push_apart(ga2d__step_context *c)
 {
     ga2d__run(c, ga2d__refresh_turns, c->world->moving_count);
@@ -8539,6 +9338,8 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     hz = w->def.contact_hertz < GA2D__HERTZ_CAP * c->inv_h ? w->def.contact_hertz : GA2D__HERTZ_CAP * c->inv_h;
     c->soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
     c->stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
+    c->joint_soft = ga2d__make_soft(2 * hz, GA2D__JOINT_DAMPING_RATIO, h);
+    c->joint_bias_in_relax = w->def.solver != GA2D_SOLVER_SOFT_STEP;
     w->counters.integrated_bodies = 0;
     w->counters.force_evaluations = 0;
     w->counters.rotation_updates = 0;
@@ -8620,6 +9421,10 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__assign_lanes(c);
     ga2d__run(c, ga2d__pad_groups, c->group_count);
     ga2d__run(c, ga2d__fill_lanes, c->group_count > 0 ? c->constraint_count : 0);
+    ga2d__order_joints(c);
+    if (c->joint_active > 0 && !ga2d__reserve_sbodies(c)) c->joint_active = 0;
+    ga2d__run(c, ga2d__prepare_joints, c->joint_active);
+    w->counters.joints_solved = c->joint_active;
     /* the substeps */
     stages = ga2d__plan_substep(w, plan);
     for (s = 0; s < w->def.substeps; ++s) {
@@ -8663,7 +9468,7 @@ GA2D_API ga2d_result ga2d_world_step(ga2d_world *w, ga2d_real dt)
 
 /* ================================================================ sleep */
 /* The island of a dynamic body: it and the dynamic bodies joined to it by
-   touching contacts whose awake flag is `from`, each flipped as it is
+   touching contacts and joints whose awake flag is `from`, each flipped as it is
    reached (the flag marks it as met), in w->wake_queue in the order met;
    returns their number.  The queue has room for every body slot. */
 static int ga2d__flip_island(ga2d_world *w, int slot, int from)
@@ -8678,6 +9483,13 @@ static int ga2d__flip_island(ga2d_world *w, int slot, int from)
             int other = ga2d__edge_other(w, link);
             ga2d__body *o = &w->bodies[other];
             if (!ct->touching || o->awake != from || o->type != GA2D_BODY_DYNAMIC) continue;
+            o->awake = !from;
+            w->wake_queue[tail++] = other;
+        }
+        for (link = ga2d__first_joint(w, s); link >= 0; link = ga2d__next_joint(w, link)) {
+            int other = ga2d__joint_other(w, link);
+            ga2d__body *o = &w->bodies[other];
+            if (o->awake != from || o->type != GA2D_BODY_DYNAMIC) continue;
             o->awake = !from;
             w->wake_queue[tail++] = other;
         }
@@ -8764,6 +9576,19 @@ static void ga2d__update_sleep(ga2d__step_context *c)
         rb = ga2d__find(w, cc->b);
         if (ra != rb) w->bodies[ra > rb ? ra : rb].island = ra < rb ? ra : rb;
     }
+    for (i = 0; i < c->joint_active; ++i) {
+        /* joints join islands; a dynamic body on a moving kinematic one
+           is carried, and does not rest */
+        const ga2d__joint *j = &w->joints[c->joint_order[i]];
+        ga2d__body *a = &w->bodies[j->body[0]], *b = &w->bodies[j->body[1]];
+        int ra, rb;
+        if (a->type == GA2D_BODY_KINEMATIC && (a->sim.v.x != 0 || a->sim.v.y != 0 || a->sim.w != 0)) b->sleep_time = 0;
+        if (b->type == GA2D_BODY_KINEMATIC && (b->sim.v.x != 0 || b->sim.v.y != 0 || b->sim.w != 0)) a->sleep_time = 0;
+        if (a->type != GA2D_BODY_DYNAMIC || b->type != GA2D_BODY_DYNAMIC || !a->awake || !b->awake) continue;
+        ra = ga2d__find(w, j->body[0]);
+        rb = ga2d__find(w, j->body[1]);
+        if (ra != rb) w->bodies[ra > rb ? ra : rb].island = ra < rb ? ra : rb;
+    }
     /* each root takes its island's shortest rest (a root is its own parent,
        and a kinematic body in the list is a root nothing joins) */
     for (k = 0; k < w->moving_count; ++k) {
@@ -8803,8 +9628,8 @@ static void ga2d__update_sleep(ga2d__step_context *c)
    for bit as the saved one. */
 /* 2: body fields reordered (0.6.0); 3: held manifolds (0.8.0); 4: the
    world's id tag, body and def fields (0.8.1); 5: the def's cookie; 6:
-   field by field (0.8.2); 7: shapes (0.9.0) */
-#define GA2D__SNAP_VERSION 7u
+   field by field (0.8.2); 7: shapes (0.9.0); 8: joints (0.10.0) */
+#define GA2D__SNAP_VERSION 8u
 
 typedef struct ga2d__snap_header {
     char magic[8];
@@ -8917,6 +9742,35 @@ static void ga2d__io_counters(ga2d__codec *k, ga2d_world_counters *c)
     ga2d__io_int(k, &c->shape_count);
     ga2d__io_int(k, &c->sensor_tests);
     ga2d__io_int(k, &c->round_contacts);
+    ga2d__io_int(k, &c->joint_count);
+    ga2d__io_int(k, &c->joints_solved);
+}
+
+/* A live joint's lasting fields (what is prepared each step is not). */
+static void ga2d__io_joint(ga2d__codec *k, ga2d__joint *j)
+{
+    int s;
+    for (s = 0; s < 2; ++s) {
+        ga2d__io_int(k, &j->body[s]);
+        ga2d__io_vec(k, &j->local[s]);
+    }
+    ga2d__io_u64(k, &j->serial);
+    ga2d__io_int(k, &j->collide_connected);
+    ga2d__io_real(k, &j->reference_angle);
+    ga2d__io_real(k, &j->lower);
+    ga2d__io_real(k, &j->upper);
+    ga2d__io_real(k, &j->motor_speed);
+    ga2d__io_real(k, &j->max_motor_torque);
+    ga2d__io_real(k, &j->hertz);
+    ga2d__io_real(k, &j->damping_ratio);
+    ga2d__io_int(k, &j->enable_limit);
+    ga2d__io_int(k, &j->enable_motor);
+    ga2d__io_int(k, &j->enable_spring);
+    ga2d__io_vec(k, &j->linear_impulse);
+    ga2d__io_real(k, &j->spring_impulse);
+    ga2d__io_real(k, &j->motor_impulse);
+    ga2d__io_real(k, &j->lower_impulse);
+    ga2d__io_real(k, &j->upper_impulse);
 }
 
 static void ga2d__io_polygon(ga2d__codec *k, ga2d_polygon *p)
@@ -9206,6 +10060,23 @@ static void ga2d__snap_payload(const ga2d_world *w, ga2d__codec *k, ga2d__snap_o
         ga2d__io_int(k, &c.count);
         for (j = 0; j < c.count; ++j) ga2d__io_int(k, &c.shapes[j]);
     }
+    {
+        uint64_t joint_serial = w->joint_serial;
+        used = w->joint_used;
+        free_head = w->joint_free;
+        count = w->joint_count;
+        ga2d__io_int(k, &used);
+        ga2d__io_int(k, &free_head);
+        ga2d__io_int(k, &count);
+        ga2d__io_u64(k, &joint_serial);
+        for (i = 0; i < w->joint_used; ++i) {
+            ga2d__joint jt = w->joints[i];
+            ga2d__io_int(k, &jt.type);
+            ga2d__io_int(k, &jt.next_free);
+            ga2d__io_u32(k, &jt.generation);
+            if (jt.type >= 0) ga2d__io_joint(k, &jt);
+        }
+    }
     ga2d__io_u64(k, &serial);
     ga2d__io_int(k, &contacts);
     for (i = 0; i < w->contact_used; ++i) {
@@ -9370,6 +10241,7 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
         b->island = i;
         b->move_index = -1;
         b->contact_head = b->contact_tail = -1;
+        b->joint_head = -1;
         if (b->type < 0) continue;
         if (b->type != GA2D_BODY_STATIC && b->awake) ga2d__moving_add(t, i);
     }
@@ -9514,6 +10386,102 @@ static int ga2d__snap_manifold_ok(const ga2d_manifold *m)
 /* Reads the chains into t after its shapes: each live chain's segments
    are live chain segments of its body that name it, each once, and every
    chain segment is on a live chain.  0: bad snapshot, -1: out of memory. */
+/* A saved joint is one the library could have made: two live bodies,
+   one dynamic; numbers finite and as create takes them; flags that are
+   flags. */
+static int ga2d__snap_joint_ok(const ga2d_world *t, const ga2d__joint *j)
+{
+    const ga2d_real *r[] = {&j->local[0].x, &j->local[0].y, &j->local[1].x, &j->local[1].y, &j->reference_angle, &j->lower,
+                            &j->upper, &j->motor_speed, &j->max_motor_torque, &j->hertz, &j->damping_ratio,
+                            &j->linear_impulse.x, &j->linear_impulse.y, &j->spring_impulse, &j->motor_impulse,
+                            &j->lower_impulse, &j->upper_impulse};
+    size_t i;
+    int s;
+    if (j->type != GA2D_JOINT_REVOLUTE || j->generation == 0 || j->serial == 0 || j->serial > t->joint_serial) return 0;
+    for (s = 0; s < 2; ++s)
+        if (j->body[s] < 0 || j->body[s] >= t->body_used || t->bodies[j->body[s]].type < 0) return 0;
+    if (j->body[0] == j->body[1] ||
+        (t->bodies[j->body[0]].type != GA2D_BODY_DYNAMIC && t->bodies[j->body[1]].type != GA2D_BODY_DYNAMIC))
+        return 0;
+    for (i = 0; i < sizeof r / sizeof r[0]; ++i)
+        if (!ga2d__finite(*r[i])) return 0;
+    if (!ga2d__coordinate_ok(j->local[0]) || !ga2d__coordinate_ok(j->local[1]) || j->max_motor_torque < 0 || j->hertz < 0 ||
+        j->damping_ratio < 0 || (j->enable_limit && j->lower > j->upper) || j->lower_impulse < 0 || j->upper_impulse < 0)
+        return 0;
+    return !((j->collide_connected | j->enable_limit | j->enable_motor | j->enable_spring) & ~1);
+}
+
+typedef struct ga2d__serial_slot { uint64_t serial; int slot; } ga2d__serial_slot;
+static int ga2d__serial_order(const void *a, const void *b)
+{
+    uint64_t x = ((const ga2d__serial_slot *)a)->serial, y = ((const ga2d__serial_slot *)b)->serial;
+    return x < y ? -1 : x > y;
+}
+
+/* Reads the joints into t after its bodies: slots, the free list, and
+   the bodies' joint lists rebuilt newest first, as creation leaves them.
+   0: bad snapshot, -1: out of memory. */
+static int ga2d__snap_read_joints(ga2d_world *t, ga2d__codec *k)
+{
+    int used = 0, free_head = 0, count = 0, i, j, live = 0, frees = 0;
+    uint64_t last = 0;
+    ga2d__io_int(k, &used);
+    ga2d__io_int(k, &free_head);
+    ga2d__io_int(k, &count);
+    ga2d__io_u64(k, &t->joint_serial);
+    if (!k->ok || used < 0 || used > GA2D__MAX_BODIES || count < 0 || count > used || free_head < -1 ||
+        free_head >= used || (size_t)used > (k->n - k->at) / (2 * sizeof(int) + sizeof(uint32_t)))
+        return 0;
+    if (used > 0 && !ga2d__grow(&t->mem, (void **)&t->joints, &t->joint_capacity, used, sizeof *t->joints)) return -1;
+    if (used > 0) memset(t->joints, 0, (size_t)used * sizeof *t->joints);
+    t->joint_used = used;
+    t->joint_count = count;
+    t->joint_free = free_head;
+    for (i = 0; i < used; ++i) {
+        ga2d__joint *jt = &t->joints[i];
+        ga2d__io_int(k, &jt->type);
+        ga2d__io_int(k, &jt->next_free);
+        ga2d__io_u32(k, &jt->generation);
+        if (!k->ok) return 0;
+        if (jt->type < 0) {
+            if (jt->type != -1 || jt->next_free < -1 || jt->next_free >= used) return 0;
+            ++frees;
+            continue;
+        }
+        ga2d__io_joint(k, jt);
+        if (!k->ok || !ga2d__snap_joint_ok(t, jt)) return 0;
+        jt->next_free = -1;
+        ++live;
+    }
+    if (live != count || frees != used - count) return 0;
+    for (i = free_head, j = 0; i >= 0; i = t->joints[i].next_free)
+        if (t->joints[i].type != -1 || ++j > frees) return 0;
+    if (j != frees) return 0;
+    /* the lists, oldest linked first (serials are distinct) */
+    if (live > 0) {
+        ga2d__serial_slot *order = (ga2d__serial_slot *)ga2d__alloc(&t->mem, (size_t)live * sizeof *order);
+        if (!order) return -1;
+        for (i = 0, j = 0; i < used; ++i)
+            if (t->joints[i].type >= 0) {
+                order[j].serial = t->joints[i].serial;
+                order[j++].slot = i;
+            }
+        qsort(order, (size_t)live, sizeof *order, ga2d__serial_order);
+        for (j = 0; j < live && (j == 0 || order[j].serial != last); ++j) {
+            last = order[j].serial;
+            ga2d__link_joint(t, order[j].slot, 0);
+            ga2d__link_joint(t, order[j].slot, 1);
+        }
+        ga2d__free(&t->mem, order, (size_t)live * sizeof *order);
+        if (j != live) return 0; /* two joints with one serial */
+    }
+    if (t->step.dt > 0) { /* the last step's substep, for the reaction getters */
+        t->step.h = t->step.dt / (ga2d_real)t->def.substeps;
+        t->step.inv_h = 1 / t->step.h;
+    }
+    return 1;
+}
+
 static int ga2d__snap_read_chains(ga2d_world *t, ga2d__codec *k)
 {
     int used = 0, free_head = 0, count = 0, i, j, live = 0, frees = 0, listed = 0, segments = 0;
@@ -9674,6 +10642,7 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
     if (ok) ok = ga2d__snap_read_bodies(t, &r);
     if (ok == 1) ok = ga2d__snap_read_shapes(t, &r);
     if (ok == 1) ok = ga2d__snap_read_chains(t, &r);
+    if (ok == 1) ok = ga2d__snap_read_joints(t, &r);
     if (ok == 1) ok = ga2d__snap_read_contacts(t, &r);
     if (ok == 1 && r.at != r.n) ok = 0;
     --t->depth;
@@ -9706,6 +10675,7 @@ GA2D_API ga2d_debug_draw ga2d_default_debug_draw(void)
     ga2d_debug_draw d;
     memset(&d, 0, sizeof d);
     d.draw_bodies = 1;
+    d.draw_joints = 1;
     return d;
 }
 
@@ -9785,6 +10755,20 @@ static void ga2d__draw(const ga2d_world *w, const ga2d_debug_draw *d)
             for (k = 0; k < c->manifold.count && !w->destroy_pending; ++k)
                 d->contact(c->manifold.points[k].point, c->manifold.normal, c->manifold.points[k].separation,
                            GA2D_COLOR_CONTACT, d->context);
+        }
+    if (d->draw_joints && d->segment)
+        for (ci = 0; ci < w->joint_used && !w->destroy_pending; ++ci) {
+            const ga2d__joint *jt = &w->joints[ci];
+            const ga2d__body *a, *b;
+            ga2d_vec pa, pb;
+            if (jt->type < 0) continue;
+            a = &w->bodies[jt->body[0]];
+            b = &w->bodies[jt->body[1]];
+            pa = ga2d_vec_add(ga2d__body_origin(a), ga2d_rotate(a->sim.q, jt->local[0]));
+            pb = ga2d_vec_add(ga2d__body_origin(b), ga2d_rotate(b->sim.q, jt->local[1]));
+            d->segment(a->sim.center, pa, GA2D_COLOR_JOINT, d->context);
+            if (!w->destroy_pending) d->segment(pa, pb, GA2D_COLOR_JOINT, d->context);
+            if (!w->destroy_pending) d->segment(pb, b->sim.center, GA2D_COLOR_JOINT, d->context);
         }
 }
 
