@@ -1100,8 +1100,8 @@ GA2D_API int ga2d_chain_get_segments(const ga2d_world *w, ga2d_chain_id id, ga2d
    (DESIGN section 11): rigid by default, a spring where asked for.  They
    join islands (a body hanging from another sleeps and wakes with it),
    are saved in snapshots, drawn by ga2d_world_draw, and a world without
-   joints pays nothing for them.  Revolute joints so far; the other kinds
-   of ga2d_joint_type are names reserved for them. */
+   joints pays nothing for them.  Revolute, distance, weld and motor
+   joints so far; prismatic and wheel are names reserved for them. */
 typedef struct ga2d_joint_id { uint32_t index1; uint32_t generation; } ga2d_joint_id; /* zero: null */
 GA2D_API ga2d_joint_id ga2d_joint_id_null(void);
 GA2D_API int ga2d_joint_id_is_null(ga2d_joint_id id);
@@ -1180,6 +1180,90 @@ GA2D_API ga2d_result ga2d_revolute_joint_set_limits(ga2d_world *w, ga2d_joint_id
 GA2D_API ga2d_result ga2d_revolute_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable);
 GA2D_API ga2d_result ga2d_revolute_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio);
 GA2D_API ga2d_real ga2d_revolute_joint_motor_torque(const ga2d_world *w, ga2d_joint_id id); /* N m, last step */
+/* A rod, rope or spring between the anchors: their distance held at
+   `length` (m, > 0), or, with the limit on, kept within [min_length,
+   max_length] (a rope: min 0); a spring of `hertz` and damping_ratio
+   pulls it toward `length` (hertz 0: rigid); a motor drives the length's
+   rate toward motor_speed (m/s) with at most max_motor_force (N).
+   Defaults: length 1, limits 0 and 1e6 (off), everything else off. */
+typedef struct ga2d_distance_joint_def {
+    ga2d_body_id body_a, body_b;
+    ga2d_vec local_anchor_a, local_anchor_b;
+    int collide_connected;
+    void *user_data;
+    ga2d_real length;
+    int enable_limit;
+    ga2d_real min_length, max_length;
+    int enable_spring;
+    ga2d_real hertz, damping_ratio;
+    int enable_motor;
+    ga2d_real motor_speed, max_motor_force;
+    int internal_cookie;      /* set by ga2d_default_distance_joint_def(); leave it */
+} ga2d_distance_joint_def;
+GA2D_API ga2d_distance_joint_def ga2d_default_distance_joint_def(void);
+/* As the revolute create; INVALID_ARGUMENT also for a length not > 0, a
+   negative min_length, min_length above max_length. */
+GA2D_API ga2d_result ga2d_distance_joint_create_checked(ga2d_world *w, const ga2d_distance_joint_def *def,
+                                                        ga2d_joint_id *out);
+GA2D_API ga2d_joint_id ga2d_distance_joint_create(ga2d_world *w, const ga2d_distance_joint_def *def);
+GA2D_API ga2d_real ga2d_distance_joint_current_length(const ga2d_world *w, ga2d_joint_id id); /* 0 if stale */
+GA2D_API ga2d_result ga2d_distance_joint_set_length(ga2d_world *w, ga2d_joint_id id, ga2d_real length);
+GA2D_API ga2d_result ga2d_distance_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_distance_joint_set_length_range(ga2d_world *w, ga2d_joint_id id, ga2d_real min_length,
+                                                          ga2d_real max_length);
+GA2D_API ga2d_result ga2d_distance_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_distance_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio);
+GA2D_API ga2d_result ga2d_distance_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_distance_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed);
+GA2D_API ga2d_result ga2d_distance_joint_set_max_motor_force(ga2d_world *w, ga2d_joint_id id, ga2d_real force);
+
+/* Glue: B held at its place and angle on A (reference_angle: B's angle
+   less A's), rigid (hertz 0), or soft, a linear spring of linear_hertz
+   and an angular one of angular_hertz with their damping ratios.
+   Defaults: rigid. */
+typedef struct ga2d_weld_joint_def {
+    ga2d_body_id body_a, body_b;
+    ga2d_vec local_anchor_a, local_anchor_b;
+    int collide_connected;
+    void *user_data;
+    ga2d_real reference_angle;
+    ga2d_real linear_hertz, angular_hertz, linear_damping_ratio, angular_damping_ratio;
+    int internal_cookie;      /* set by ga2d_default_weld_joint_def(); leave it */
+} ga2d_weld_joint_def;
+GA2D_API ga2d_weld_joint_def ga2d_default_weld_joint_def(void);
+GA2D_API ga2d_result ga2d_weld_joint_create_checked(ga2d_world *w, const ga2d_weld_joint_def *def, ga2d_joint_id *out);
+GA2D_API ga2d_joint_id ga2d_weld_joint_create(ga2d_world *w, const ga2d_weld_joint_def *def);
+GA2D_API ga2d_result ga2d_weld_joint_set_linear_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio);
+GA2D_API ga2d_result ga2d_weld_joint_set_angular_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio);
+
+/* Drives B toward a pose relative to A: B's anchor toward A's anchor
+   plus linear_offset (in A's frame), B's angle toward A's plus
+   angular_offset: each substep asks for the velocity that closes
+   correction_factor of the gap (bias = factor x gap / h), with at most
+   max_force (N) and max_torque (N m).  With A a static body and the
+   offset set each frame to the pointer (ga2d_motor_joint_set_linear_offset),
+   it is a mouse drag that cannot fling what it holds.  Defaults: offsets
+   0, max_force 1, max_torque 1, correction_factor 0.3. */
+typedef struct ga2d_motor_joint_def {
+    ga2d_body_id body_a, body_b;
+    ga2d_vec local_anchor_a, local_anchor_b;
+    int collide_connected;
+    void *user_data;
+    ga2d_vec linear_offset;
+    ga2d_real angular_offset, max_force, max_torque, correction_factor;
+    int internal_cookie;      /* set by ga2d_default_motor_joint_def(); leave it */
+} ga2d_motor_joint_def;
+GA2D_API ga2d_motor_joint_def ga2d_default_motor_joint_def(void);
+/* As the revolute create; INVALID_ARGUMENT also for a negative max_force
+   or max_torque, a correction_factor outside [0, 1]; TOO_LARGE for an
+   offset beyond GA2D_MAX_COORDINATE. */
+GA2D_API ga2d_result ga2d_motor_joint_create_checked(ga2d_world *w, const ga2d_motor_joint_def *def, ga2d_joint_id *out);
+GA2D_API ga2d_joint_id ga2d_motor_joint_create(ga2d_world *w, const ga2d_motor_joint_def *def);
+GA2D_API ga2d_result ga2d_motor_joint_set_linear_offset(ga2d_world *w, ga2d_joint_id id, ga2d_vec offset);
+GA2D_API ga2d_result ga2d_motor_joint_set_angular_offset(ga2d_world *w, ga2d_joint_id id, ga2d_real offset);
+GA2D_API ga2d_result ga2d_motor_joint_set_max_force(ga2d_world *w, ga2d_joint_id id, ga2d_real force);
+GA2D_API ga2d_result ga2d_motor_joint_set_max_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque);
+
 /* A world point in the body's frame, relative to its origin: an anchor.
    Zero for a stale id. */
 GA2D_API ga2d_vec ga2d_body_local_point(const ga2d_world *w, ga2d_body_id id, ga2d_vec world_point);
@@ -1435,7 +1519,8 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
 #define GA2D__RESTITUTION_PASSES 32             /* restitution's passes, at most, a step */
 #define GA2D__HERTZ_CAP GA2D__R(0.25)           /* contact_hertz's cap, of the substep rate */
 #define GA2D__DRAW_CENTER_SIZE GA2D__R(0.05)    /* m: debug draw's centre of mass marker */
-#define GA2D__JOINT_DAMPING_RATIO GA2D__R(2)    /* a rigid joint's position feedback, as a spring's */
+#define GA2D__JOINT_HERTZ GA2D__R(60)           /* Hz: a rigid joint's position feedback, a spring's */
+#define GA2D__JOINT_DAMPING_RATIO GA2D__R(2)    /* and its damping ratio */
 
 /* Helpers that run once per body or contact point and pass, hundreds of
    thousands of times a step: inlined into their callers (the solver's
@@ -3520,19 +3605,37 @@ struct ga2d__joint {
     ga2d_vec local[2];           /* anchors in the bodies' frames, from their origins */
     int collide_connected;
     void *user_data;
-    /* revolute */
-    ga2d_real reference_angle, lower, upper, motor_speed, max_motor_torque, hertz, damping_ratio;
+    /* what the kinds' defs set, shared where they mean the same:
+       reference_angle  B's angle less A's at rest (revolute, weld), or
+                        the target one (motor joint: angular_offset)
+       lower, upper     the limit: angles (revolute), lengths (distance)
+       motor_speed      rad/s (revolute), m/s (distance)
+       max_motor        N m (revolute), N (distance)
+       hertz, damping_ratio  the spring (revolute, distance; weld: angular)
+       length           distance: the rest length
+       linear_hertz, linear_damping_ratio  weld: the linear spring
+       offset           motor joint: where B's anchor is driven, from A's,
+                        in A's frame (linear_offset)
+       max_force, max_torque, correction  motor joint */
+    ga2d_real reference_angle, lower, upper, motor_speed, max_motor, hertz, damping_ratio;
+    ga2d_real length, linear_hertz, linear_damping_ratio, max_force, max_torque, correction;
+    ga2d_vec offset;
     int enable_limit, enable_motor, enable_spring;
-    /* impulses per substep, kept from step to step to warm start */
+    /* impulses per substep, kept from step to step to warm start: the
+       point's (or the motor joint's linear), the axial ones (spring,
+       motor, limits: along the angle, or the distance joint's axis), and
+       the rigid axial one (distance: the length; weld and motor joint:
+       the angle) */
     ga2d_vec linear_impulse;
-    ga2d_real spring_impulse, motor_impulse, lower_impulse, upper_impulse;
+    ga2d_real spring_impulse, motor_impulse, lower_impulse, upper_impulse, impulse;
     /* prepared each step: the anchors from the centres (world frame) and
        the centres' offset, where the step began; the angle then, less the
-       reference; the masses */
+       reference; the masses and springs */
     ga2d_vec ra, rb, delta_center;
     ga2d_real delta_angle;
     ga2d_real ima, imb, iia, iib, axial_mass;
-    ga2d__soft spring;
+    ga2d_vec target;             /* motor joint: the offset in the world frame, step start */
+    ga2d__soft spring, linear_spring;
 };
 
 
@@ -7987,22 +8090,16 @@ GA2D_API ga2d_revolute_joint_def ga2d_default_revolute_joint_def(void)
     return d;
 }
 
-GA2D_API ga2d_result ga2d_revolute_joint_create_checked(ga2d_world *w, const ga2d_revolute_joint_def *def, ga2d_joint_id *out)
+/* A new joint of `type` between two checked bodies, its common fields
+   set and the kind's zeroed, linked on both bodies' lists: its slot, or
+   -1 when memory runs out (nothing changed).  Inside ga2d__enter. */
+static int ga2d__joint_new(ga2d_world *w, int type, ga2d_body_id a, ga2d_body_id b, ga2d_vec la, ga2d_vec lb, int collide,
+                           void *user_data)
 {
     ga2d__joint *j;
-    ga2d_result r;
-    int k, a, b;
-    if (out) *out = ga2d_joint_id_null();
-    if (!w || !def || !out) return GA2D_ERR_INVALID_ARGUMENT;
-    if (w->lock) return GA2D_ERR_LOCKED;
-    if ((r = ga2d__joint_bodies_check(w, def->body_a, def->body_b, def->local_anchor_a, def->local_anchor_b)) != GA2D_OK) return r;
-    if ((r = ga2d__revolute_check(def)) != GA2D_OK) return r;
-    k = w->joint_free >= 0 ? w->joint_free : w->joint_used;
-    ga2d__enter(w);
-    if (!ga2d__grow(&w->mem, (void **)&w->joints, &w->joint_capacity, k + 1, sizeof *w->joints)) {
-        ga2d__leave(w);
-        return GA2D_ERR_OUT_OF_MEMORY;
-    }
+    uint32_t generation;
+    int k = w->joint_free >= 0 ? w->joint_free : w->joint_used;
+    if (!ga2d__grow(&w->mem, (void **)&w->joints, &w->joint_capacity, k + 1, sizeof *w->joints)) return -1;
     if (k == w->joint_used) {
         w->joints[k].generation = 1;
         ++w->joint_used;
@@ -8010,41 +8107,87 @@ GA2D_API ga2d_result ga2d_revolute_joint_create_checked(ga2d_world *w, const ga2
         w->joint_free = w->joints[k].next_free;
     }
     j = &w->joints[k];
-    {
-        uint32_t generation = j->generation;
-        memset(j, 0, sizeof *j);
-        j->generation = generation;
-    }
-    a = ga2d__slot(def->body_a);
-    b = ga2d__slot(def->body_b);
-    j->type = GA2D_JOINT_REVOLUTE;
+    generation = j->generation;
+    memset(j, 0, sizeof *j);
+    j->generation = generation;
+    j->type = type;
     j->next_free = -1;
-    j->body[0] = a;
-    j->body[1] = b;
+    j->body[0] = ga2d__slot(a);
+    j->body[1] = ga2d__slot(b);
     j->serial = ++w->joint_serial;
-    j->local[0] = def->local_anchor_a;
-    j->local[1] = def->local_anchor_b;
-    j->collide_connected = def->collide_connected != 0;
-    j->user_data = def->user_data;
+    j->local[0] = la;
+    j->local[1] = lb;
+    j->collide_connected = collide != 0;
+    j->user_data = user_data;
+    ga2d__link_joint(w, k, 0);
+    ga2d__link_joint(w, k, 1);
+    ++w->joint_count;
+    return k;
+}
+
+/* A new joint's last steps: contacts it keeps apart end, both bodies
+   wake; its id. */
+static ga2d_joint_id ga2d__joint_made(ga2d_world *w, int k)
+{
+    const ga2d__joint *j = &w->joints[k];
+    if (!j->collide_connected) ga2d__end_joined_contacts(w, j->body[0], j->body[1]);
+    ga2d__wake(w, j->body[0]);
+    ga2d__wake(w, j->body[1]);
+    return ga2d__joint_id_of(w, k);
+}
+
+/* What every create shares: the world writable, the def there, the
+   bodies and anchors checked. */
+#define GA2D__JOINT_CREATE_CHECK(w, def, out)                                                                          \
+    do {                                                                                                               \
+        ga2d_result r_ = GA2D_OK;                                                                                      \
+        if (out) *(out) = ga2d_joint_id_null();                                                                        \
+        if (!(w) || !(def) || !(out)) return GA2D_ERR_INVALID_ARGUMENT;                                                \
+        if ((w)->lock) return GA2D_ERR_LOCKED;                                                                         \
+        r_ = ga2d__joint_bodies_check(w, (def)->body_a, (def)->body_b, (def)->local_anchor_a, (def)->local_anchor_b);  \
+        if (r_ != GA2D_OK) return r_;                                                                                  \
+    } while (0)
+
+/* Makes the joint of a checked def: `fill` copies the kind's fields
+   into j (a statement on j and def). */
+#define GA2D__JOINT_CREATE(w, def, out, type, fill)                                                                    \
+    do {                                                                                                               \
+        ga2d__joint *j;                                                                                                \
+        int k_;                                                                                                        \
+        ga2d__enter(w);                                                                                                \
+        k_ = ga2d__joint_new(w, type, (def)->body_a, (def)->body_b, (def)->local_anchor_a, (def)->local_anchor_b,      \
+                             (def)->collide_connected, (def)->user_data);                                              \
+        if (k_ < 0) {                                                                                                  \
+            ga2d__leave(w);                                                                                            \
+            return GA2D_ERR_OUT_OF_MEMORY;                                                                             \
+        }                                                                                                              \
+        j = &(w)->joints[k_];                                                                                          \
+        fill;                                                                                                          \
+        *(out) = ga2d__joint_made(w, k_);                                                                              \
+        ga2d__leave(w);                                                                                                \
+        return GA2D_OK;                                                                                                \
+    } while (0)
+
+static void ga2d__revolute_fill(ga2d__joint *j, const ga2d_revolute_joint_def *def)
+{
     j->reference_angle = def->reference_angle;
     j->enable_limit = def->enable_limit != 0;
     j->lower = def->lower_angle;
     j->upper = def->upper_angle;
     j->enable_motor = def->enable_motor != 0;
     j->motor_speed = def->motor_speed;
-    j->max_motor_torque = def->max_motor_torque;
+    j->max_motor = def->max_motor_torque;
     j->enable_spring = def->enable_spring != 0;
     j->hertz = def->hertz;
     j->damping_ratio = def->damping_ratio;
-    ga2d__link_joint(w, k, 0);
-    ga2d__link_joint(w, k, 1);
-    ++w->joint_count;
-    if (!j->collide_connected) ga2d__end_joined_contacts(w, a, b);
-    ga2d__wake(w, a);
-    ga2d__wake(w, b);
-    *out = ga2d__joint_id_of(w, k);
-    ga2d__leave(w);
-    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_create_checked(ga2d_world *w, const ga2d_revolute_joint_def *def, ga2d_joint_id *out)
+{
+    ga2d_result r;
+    GA2D__JOINT_CREATE_CHECK(w, def, out);
+    if ((r = ga2d__revolute_check(def)) != GA2D_OK) return r;
+    GA2D__JOINT_CREATE(w, def, out, GA2D_JOINT_REVOLUTE, ga2d__revolute_fill(j, def));
 }
 
 GA2D_API ga2d_joint_id ga2d_revolute_joint_create(ga2d_world *w, const ga2d_revolute_joint_def *def)
@@ -8098,22 +8241,38 @@ GA2D_API int ga2d_joint_collide_connected(const ga2d_world *w, ga2d_joint_id id)
     return j ? j->collide_connected : 0;
 }
 
+/* The axial impulses' sum, on B: along the angle (revolute: spring,
+   motor, limits; weld and motor joint: the angle's), or along the
+   distance joint's axis (its length's or spring's, motor, limits). */
+static ga2d_real ga2d__joint_axial_impulse(const ga2d__joint *j)
+{
+    return j->impulse + j->spring_impulse + j->motor_impulse + j->lower_impulse - j->upper_impulse;
+}
+
+/* A distance joint's axis now: unit, from A's anchor to B's (x when they
+   coincide). */
+static ga2d_vec ga2d__axis_of(ga2d_vec d)
+{
+    ga2d_real len = ga2d_vec_length(d);
+    return len > 0 ? ga2d_vec_scale(d, 1 / len) : ga2d_vec_make(1, 0);
+}
+
+static ga2d_vec ga2d__distance_span(const ga2d_world *w, const ga2d__joint *j);
+
 GA2D_API ga2d_vec ga2d_joint_reaction_force(const ga2d_world *w, ga2d_joint_id id)
 {
     const ga2d__joint *j = ga2d__joint_lookup(w, id);
-    return j ? ga2d_vec_scale(j->linear_impulse, w->step.inv_h) : ga2d_vec_make(0, 0);
-}
-
-/* The axial impulses' sum: spring, motor and the limits, on B. */
-static ga2d_real ga2d__joint_axial_impulse(const ga2d__joint *j)
-{
-    return j->spring_impulse + j->motor_impulse + j->lower_impulse - j->upper_impulse;
+    ga2d_vec P;
+    if (!j) return ga2d_vec_make(0, 0);
+    P = j->type == GA2D_JOINT_DISTANCE ? ga2d_vec_scale(ga2d__axis_of(ga2d__distance_span(w, j)), ga2d__joint_axial_impulse(j))
+                                       : j->linear_impulse;
+    return ga2d_vec_scale(P, w->step.inv_h);
 }
 
 GA2D_API ga2d_real ga2d_joint_reaction_torque(const ga2d_world *w, ga2d_joint_id id)
 {
     const ga2d__joint *j = ga2d__joint_lookup(w, id);
-    return j ? ga2d__joint_axial_impulse(j) * w->step.inv_h : 0;
+    return j && j->type != GA2D_JOINT_DISTANCE ? ga2d__joint_axial_impulse(j) * w->step.inv_h : 0;
 }
 
 /* B's rotor relative to A's (B's turn seen from A), as a unit rotor
@@ -8154,14 +8313,14 @@ GA2D_API ga2d_real ga2d_revolute_joint_motor_torque(const ga2d_world *w, ga2d_jo
     return j ? j->motor_impulse * w->step.inv_h : 0;
 }
 
-/* A revolute joint a setter may change (waking its bodies), or why not. */
-static ga2d_result ga2d__revolute_writable(ga2d_world *w, ga2d_joint_id id, ga2d__joint **out)
+/* A joint of `type` a setter may change (waking its bodies), or why not. */
+static ga2d_result ga2d__joint_writable(ga2d_world *w, ga2d_joint_id id, int type, ga2d__joint **out)
 {
     ga2d__joint *j;
     if (!w) return GA2D_ERR_INVALID_ARGUMENT;
     if (w->lock) return GA2D_ERR_LOCKED;
     if (!(j = ga2d__joint_lookup(w, id))) return GA2D_ERR_STALE_ID;
-    if (j->type != GA2D_JOINT_REVOLUTE) return GA2D_ERR_INVALID_ARGUMENT;
+    if (j->type != type) return GA2D_ERR_INVALID_ARGUMENT;
     *out = j;
     return GA2D_OK;
 }
@@ -8180,7 +8339,7 @@ static void ga2d__joint_changed(ga2d_world *w, const ga2d__joint *j)
 GA2D_API ga2d_result ga2d_revolute_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
     if (r != GA2D_OK) return r;
     j->enable_motor = enable != 0;
     if (!j->enable_motor) j->motor_impulse = 0;
@@ -8191,7 +8350,7 @@ GA2D_API ga2d_result ga2d_revolute_joint_enable_motor(ga2d_world *w, ga2d_joint_
 GA2D_API ga2d_result ga2d_revolute_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(speed)) return GA2D_ERR_NOT_FINITE;
     j->motor_speed = speed;
@@ -8202,11 +8361,11 @@ GA2D_API ga2d_result ga2d_revolute_joint_set_motor_speed(ga2d_world *w, ga2d_joi
 GA2D_API ga2d_result ga2d_revolute_joint_set_max_motor_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(torque)) return GA2D_ERR_NOT_FINITE;
     if (torque < 0) return GA2D_ERR_INVALID_ARGUMENT;
-    j->max_motor_torque = torque;
+    j->max_motor = torque;
     ga2d__joint_changed(w, j);
     return GA2D_OK;
 }
@@ -8214,7 +8373,7 @@ GA2D_API ga2d_result ga2d_revolute_joint_set_max_motor_torque(ga2d_world *w, ga2
 GA2D_API ga2d_result ga2d_revolute_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
     if (r != GA2D_OK) return r;
     if (enable && j->lower > j->upper) return GA2D_ERR_INVALID_ARGUMENT;
     j->enable_limit = enable != 0;
@@ -8226,7 +8385,7 @@ GA2D_API ga2d_result ga2d_revolute_joint_enable_limit(ga2d_world *w, ga2d_joint_
 GA2D_API ga2d_result ga2d_revolute_joint_set_limits(ga2d_world *w, ga2d_joint_id id, ga2d_real lower, ga2d_real upper)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(lower) || !ga2d__finite(upper)) return GA2D_ERR_NOT_FINITE;
     if (lower > upper) return GA2D_ERR_INVALID_ARGUMENT;
@@ -8239,7 +8398,7 @@ GA2D_API ga2d_result ga2d_revolute_joint_set_limits(ga2d_world *w, ga2d_joint_id
 GA2D_API ga2d_result ga2d_revolute_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
     if (r != GA2D_OK) return r;
     j->enable_spring = enable != 0;
     if (!j->enable_spring) j->spring_impulse = 0;
@@ -8250,12 +8409,326 @@ GA2D_API ga2d_result ga2d_revolute_joint_enable_spring(ga2d_world *w, ga2d_joint
 GA2D_API ga2d_result ga2d_revolute_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__revolute_writable(w, id, &j);
+    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
     if (r != GA2D_OK) return r;
     if (!ga2d__finite(hertz) || !ga2d__finite(damping_ratio)) return GA2D_ERR_NOT_FINITE;
     if (hertz < 0 || damping_ratio < 0) return GA2D_ERR_INVALID_ARGUMENT;
     j->hertz = hertz;
     j->damping_ratio = damping_ratio;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+/* ------------------------------------------------ distance, weld, motor */
+static ga2d_result ga2d__distance_check(const ga2d_distance_joint_def *d)
+{
+    if (!ga2d__finite(d->length) || !ga2d__finite(d->min_length) || !ga2d__finite(d->max_length) || !ga2d__finite(d->hertz) ||
+        !ga2d__finite(d->damping_ratio) || !ga2d__finite(d->motor_speed) || !ga2d__finite(d->max_motor_force))
+        return GA2D_ERR_NOT_FINITE;
+    if (!(d->length > 0) || d->min_length < 0 || d->min_length > d->max_length || d->hertz < 0 || d->damping_ratio < 0 ||
+        d->max_motor_force < 0)
+        return GA2D_ERR_INVALID_ARGUMENT;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_distance_joint_def ga2d_default_distance_joint_def(void)
+{
+    ga2d_distance_joint_def d;
+    memset(&d, 0, sizeof d);
+    d.length = 1;
+    d.max_length = GA2D__R(1e6);
+    d.internal_cookie = GA2D_DEF_COOKIE;
+    return d;
+}
+
+static void ga2d__distance_fill(ga2d__joint *j, const ga2d_distance_joint_def *def)
+{
+    j->length = def->length;
+    j->enable_limit = def->enable_limit != 0;
+    j->lower = def->min_length;
+    j->upper = def->max_length;
+    j->enable_spring = def->enable_spring != 0;
+    j->hertz = def->hertz;
+    j->damping_ratio = def->damping_ratio;
+    j->enable_motor = def->enable_motor != 0;
+    j->motor_speed = def->motor_speed;
+    j->max_motor = def->max_motor_force;
+}
+
+GA2D_API ga2d_result ga2d_distance_joint_create_checked(ga2d_world *w, const ga2d_distance_joint_def *def, ga2d_joint_id *out)
+{
+    ga2d_result r;
+    GA2D__JOINT_CREATE_CHECK(w, def, out);
+    if ((r = ga2d__distance_check(def)) != GA2D_OK) return r;
+    GA2D__JOINT_CREATE(w, def, out, GA2D_JOINT_DISTANCE, ga2d__distance_fill(j, def));
+}
+
+GA2D_API ga2d_joint_id ga2d_distance_joint_create(ga2d_world *w, const ga2d_distance_joint_def *def)
+{
+    ga2d_joint_id id;
+    (void)ga2d_distance_joint_create_checked(w, def, &id);
+    return id;
+}
+
+static ga2d_result ga2d__weld_check(const ga2d_weld_joint_def *d)
+{
+    if (!ga2d__finite(d->reference_angle) || !ga2d__finite(d->linear_hertz) || !ga2d__finite(d->angular_hertz) ||
+        !ga2d__finite(d->linear_damping_ratio) || !ga2d__finite(d->angular_damping_ratio))
+        return GA2D_ERR_NOT_FINITE;
+    if (d->linear_hertz < 0 || d->angular_hertz < 0 || d->linear_damping_ratio < 0 || d->angular_damping_ratio < 0)
+        return GA2D_ERR_INVALID_ARGUMENT;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_weld_joint_def ga2d_default_weld_joint_def(void)
+{
+    ga2d_weld_joint_def d;
+    memset(&d, 0, sizeof d);
+    d.internal_cookie = GA2D_DEF_COOKIE;
+    return d;
+}
+
+static void ga2d__weld_fill(ga2d__joint *j, const ga2d_weld_joint_def *def)
+{
+    j->reference_angle = def->reference_angle;
+    j->linear_hertz = def->linear_hertz;
+    j->linear_damping_ratio = def->linear_damping_ratio;
+    j->hertz = def->angular_hertz;
+    j->damping_ratio = def->angular_damping_ratio;
+}
+
+GA2D_API ga2d_result ga2d_weld_joint_create_checked(ga2d_world *w, const ga2d_weld_joint_def *def, ga2d_joint_id *out)
+{
+    ga2d_result r;
+    GA2D__JOINT_CREATE_CHECK(w, def, out);
+    if ((r = ga2d__weld_check(def)) != GA2D_OK) return r;
+    GA2D__JOINT_CREATE(w, def, out, GA2D_JOINT_WELD, ga2d__weld_fill(j, def));
+}
+
+GA2D_API ga2d_joint_id ga2d_weld_joint_create(ga2d_world *w, const ga2d_weld_joint_def *def)
+{
+    ga2d_joint_id id;
+    (void)ga2d_weld_joint_create_checked(w, def, &id);
+    return id;
+}
+
+static ga2d_result ga2d__motor_check(const ga2d_motor_joint_def *d)
+{
+    if (!ga2d__finite_vec(d->linear_offset) || !ga2d__finite(d->angular_offset) || !ga2d__finite(d->max_force) ||
+        !ga2d__finite(d->max_torque) || !ga2d__finite(d->correction_factor))
+        return GA2D_ERR_NOT_FINITE;
+    if (d->max_force < 0 || d->max_torque < 0 || d->correction_factor < 0 || d->correction_factor > 1)
+        return GA2D_ERR_INVALID_ARGUMENT;
+    return ga2d__coordinate_ok(d->linear_offset) ? GA2D_OK : GA2D_ERR_TOO_LARGE;
+}
+
+GA2D_API ga2d_motor_joint_def ga2d_default_motor_joint_def(void)
+{
+    ga2d_motor_joint_def d;
+    memset(&d, 0, sizeof d);
+    d.max_force = 1;
+    d.max_torque = 1;
+    d.correction_factor = GA2D__R(0.3);
+    d.internal_cookie = GA2D_DEF_COOKIE;
+    return d;
+}
+
+static void ga2d__motor_fill(ga2d__joint *j, const ga2d_motor_joint_def *def)
+{
+    j->offset = def->linear_offset;
+    j->reference_angle = def->angular_offset;
+    j->max_force = def->max_force;
+    j->max_torque = def->max_torque;
+    j->correction = def->correction_factor;
+}
+
+GA2D_API ga2d_result ga2d_motor_joint_create_checked(ga2d_world *w, const ga2d_motor_joint_def *def, ga2d_joint_id *out)
+{
+    ga2d_result r;
+    GA2D__JOINT_CREATE_CHECK(w, def, out);
+    if ((r = ga2d__motor_check(def)) != GA2D_OK) return r;
+    GA2D__JOINT_CREATE(w, def, out, GA2D_JOINT_MOTOR, ga2d__motor_fill(j, def));
+}
+
+GA2D_API ga2d_joint_id ga2d_motor_joint_create(ga2d_world *w, const ga2d_motor_joint_def *def)
+{
+    ga2d_joint_id id;
+    (void)ga2d_motor_joint_create_checked(w, def, &id);
+    return id;
+}
+
+/* The distance joint's anchors' offset now, B's from A's (world frame),
+   from the bodies' poses. */
+static ga2d_vec ga2d__distance_span(const ga2d_world *w, const ga2d__joint *j)
+{
+    const ga2d__body *a = &w->bodies[j->body[0]], *b = &w->bodies[j->body[1]];
+    return ga2d_vec_sub(ga2d_vec_add(ga2d__body_origin(b), ga2d_rotate(b->sim.q, j->local[1])),
+                        ga2d_vec_add(ga2d__body_origin(a), ga2d_rotate(a->sim.q, j->local[0])));
+}
+
+GA2D_API ga2d_real ga2d_distance_joint_current_length(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j && j->type == GA2D_JOINT_DISTANCE ? ga2d_vec_length(ga2d__distance_span(w, j)) : 0;
+}
+
+/* Setters of the three kinds: the joint if it is of `type`, or why not. */
+#define GA2D__JOINT_SETTER(w, id, type, j)                                                                             \
+    do {                                                                                                               \
+        ga2d_result r_ = ga2d__joint_writable(w, id, type, &(j));                                                      \
+        if (r_ != GA2D_OK) return r_;                                                                                  \
+    } while (0)
+
+GA2D_API ga2d_result ga2d_distance_joint_set_length(ga2d_world *w, ga2d_joint_id id, ga2d_real length)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
+    if (!ga2d__finite(length)) return GA2D_ERR_NOT_FINITE;
+    if (!(length > 0)) return GA2D_ERR_INVALID_ARGUMENT;
+    j->length = length;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_distance_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
+    j->enable_limit = enable != 0;
+    if (!j->enable_limit) j->lower_impulse = j->upper_impulse = 0;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_distance_joint_set_length_range(ga2d_world *w, ga2d_joint_id id, ga2d_real min_length, ga2d_real max_length)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
+    if (!ga2d__finite(min_length) || !ga2d__finite(max_length)) return GA2D_ERR_NOT_FINITE;
+    if (min_length < 0 || min_length > max_length) return GA2D_ERR_INVALID_ARGUMENT;
+    j->lower = min_length;
+    j->upper = max_length;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_distance_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
+    j->enable_spring = enable != 0;
+    j->spring_impulse = 0;
+    j->impulse = 0; /* the rigid length's, or the spring's: one of them acts */
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_distance_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
+    if (!ga2d__finite(hertz) || !ga2d__finite(damping_ratio)) return GA2D_ERR_NOT_FINITE;
+    if (hertz < 0 || damping_ratio < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    j->hertz = hertz;
+    j->damping_ratio = damping_ratio;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_distance_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
+    j->enable_motor = enable != 0;
+    if (!j->enable_motor) j->motor_impulse = 0;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_distance_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
+    if (!ga2d__finite(speed)) return GA2D_ERR_NOT_FINITE;
+    j->motor_speed = speed;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_distance_joint_set_max_motor_force(ga2d_world *w, ga2d_joint_id id, ga2d_real force)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
+    if (!ga2d__finite(force)) return GA2D_ERR_NOT_FINITE;
+    if (force < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    j->max_motor = force;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_weld_joint_set_linear_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_WELD, j);
+    if (!ga2d__finite(hertz) || !ga2d__finite(damping_ratio)) return GA2D_ERR_NOT_FINITE;
+    if (hertz < 0 || damping_ratio < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    j->linear_hertz = hertz;
+    j->linear_damping_ratio = damping_ratio;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_weld_joint_set_angular_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_WELD, j);
+    if (!ga2d__finite(hertz) || !ga2d__finite(damping_ratio)) return GA2D_ERR_NOT_FINITE;
+    if (hertz < 0 || damping_ratio < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    j->hertz = hertz;
+    j->damping_ratio = damping_ratio;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_motor_joint_set_linear_offset(ga2d_world *w, ga2d_joint_id id, ga2d_vec offset)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_MOTOR, j);
+    if (!ga2d__finite_vec(offset)) return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__coordinate_ok(offset)) return GA2D_ERR_TOO_LARGE;
+    j->offset = offset;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_motor_joint_set_angular_offset(ga2d_world *w, ga2d_joint_id id, ga2d_real offset)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_MOTOR, j);
+    if (!ga2d__finite(offset)) return GA2D_ERR_NOT_FINITE;
+    j->reference_angle = offset;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_motor_joint_set_max_force(ga2d_world *w, ga2d_joint_id id, ga2d_real force)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_MOTOR, j);
+    if (!ga2d__finite(force)) return GA2D_ERR_NOT_FINITE;
+    if (force < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    j->max_force = force;
+    ga2d__joint_changed(w, j);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_motor_joint_set_max_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque)
+{
+    ga2d__joint *j;
+    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_MOTOR, j);
+    if (!ga2d__finite(torque)) return GA2D_ERR_NOT_FINITE;
+    if (torque < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    j->max_torque = torque;
     ga2d__joint_changed(w, j);
     return GA2D_OK;
 }
@@ -8297,6 +8770,13 @@ static void ga2d__order_joints(ga2d__step_context *c)
     c->joint_active = n;
 }
 
+/* A joint's impulses go (no warm start, or its body was contained). */
+static void ga2d__joint_forget(ga2d__joint *j)
+{
+    j->linear_impulse = ga2d_vec_make(0, 0);
+    j->spring_impulse = j->motor_impulse = j->lower_impulse = j->upper_impulse = j->impulse = 0;
+}
+
 /* Stage, over the step's joints: anchors, masses and the angle where the
    step began; a side the solver does not move gets its solver body.  The
    solver bodies must be there (ga2d__reserve_sbodies). */
@@ -8317,11 +8797,10 @@ static void ga2d__prepare_joints(ga2d__step_context *c, int begin, int end)
         j->iia = ma ? a->sim.inv_inertia : 0;
         j->iib = mb ? b->sim.inv_inertia : 0;
         j->axial_mass = j->iia + j->iib > 0 ? 1 / (j->iia + j->iib) : 0;
-        j->spring = ga2d__make_soft(j->enable_spring ? j->hertz : 0, j->damping_ratio, c->h);
-        if (!w->def.enable_warm_starting) {
-            j->linear_impulse = ga2d_vec_make(0, 0);
-            j->spring_impulse = j->motor_impulse = j->lower_impulse = j->upper_impulse = 0;
-        }
+        j->spring = ga2d__make_soft(j->enable_spring || j->type == GA2D_JOINT_WELD ? j->hertz : 0, j->damping_ratio, c->h);
+        j->linear_spring = ga2d__make_soft(j->linear_hertz, j->linear_damping_ratio, c->h);
+        j->target = ga2d_rotate(a->sim.q, j->offset);
+        if (!w->def.enable_warm_starting) ga2d__joint_forget(j);
         ga2d__still_body(c, j->body[0]);
         ga2d__still_body(c, j->body[1]);
     }
@@ -8361,6 +8840,21 @@ static void ga2d__japply(const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, g
     B->w += j->iib * (ga2d_wedge(rb, P) + L);
 }
 
+/* B's anchor less A's now: the centres' offset where the step began,
+   their motion since, the turned anchors. */
+static ga2d_vec ga2d__joint_span(const ga2d__sbody *sa, const ga2d__sbody *sb, const ga2d__joint *j, ga2d_vec ra, ga2d_vec rb)
+{
+    return ga2d_vec_add(ga2d_vec_add(ga2d_vec_make(sb->dpx - sa->dpx, sb->dpy - sa->dpy), ga2d_vec_sub(rb, ra)), j->delta_center);
+}
+
+/* The velocity of B's anchor relative to A's: vb + w_b rb_perp - va -
+   w_a ra_perp (the bivector w e12 acting on r). */
+static ga2d_vec ga2d__joint_cdot(const ga2d__jbody *A, const ga2d__jbody *B, ga2d_vec ra, ga2d_vec rb)
+{
+    return ga2d_vec_sub(ga2d_vec_add(B->v, ga2d_vec_scale(ga2d_vec_perp(rb), B->w)),
+                        ga2d_vec_add(A->v, ga2d_vec_scale(ga2d_vec_perp(ra), A->w)));
+}
+
 /* Stage, over the step's joints: last step's impulses, at the anchors as
    they are now. */
 static void ga2d__warm_start_joints(ga2d__step_context *c, int begin, int end)
@@ -8371,18 +8865,28 @@ static void ga2d__warm_start_joints(ga2d__step_context *c, int begin, int end)
         const ga2d__joint *j = &w->joints[c->joint_order[i]];
         ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
         ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
-        ga2d__japply(j, &A, &B, ga2d__jturn(sa, j->ra), ga2d__jturn(sb, j->rb), j->linear_impulse, ga2d__joint_axial_impulse(j));
+        ga2d_vec ra = ga2d__jturn(sa, j->ra), rb = ga2d__jturn(sb, j->rb);
+        if (j->type == GA2D_JOINT_DISTANCE) /* its impulses lie along its axis */
+            ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_scale(ga2d__axis_of(ga2d__joint_span(sa, sb, j, ra, rb)), ga2d__joint_axial_impulse(j)), 0);
+        else ga2d__japply(j, &A, &B, ra, rb, j->linear_impulse, ga2d__joint_axial_impulse(j));
         ga2d__jstore(sa, A);
         ga2d__jstore(sb, B);
     }
 }
 
-/* One side of a revolute limit, as a contact along the angle: C >= 0 is
-   the room left.  Apart, it closes no faster than C / h (speculative);
+/* B's angle less A's and the reference now: the step's start plus the
+   turns since (2D rotors commute: dq_a~ dq_b is the relative turn). */
+static ga2d_real ga2d__joint_angle(const ga2d__sbody *sa, const ga2d__sbody *sb, const ga2d__joint *j)
+{
+    return j->delta_angle + ga2d_rotor_angle(ga2d__relative_rotor(ga2d__rotor(sa->dqc, sa->dqs), ga2d__rotor(sb->dqc, sb->dqs)));
+}
+
+/* One side of a limit (along the angle or a distance joint's axis, with
+   that direction's mass), as a contact: C >= 0 is the room left.  Apart, it closes no faster than C / h (speculative);
    past it, the soft bias pushes back (bias passes only).  The impulse is
    accumulated and kept >= 0.  Returns the change, a torque impulse on B
    in the limit's sense (sign: +1 lower, -1 upper). */
-static ga2d_real ga2d__limit_impulse(const ga2d__step_context *c, const ga2d__joint *j, ga2d_real C, ga2d_real Cdot,
+static ga2d_real ga2d__limit_impulse(const ga2d__step_context *c, ga2d_real mass, ga2d_real C, ga2d_real Cdot,
                                      ga2d_real *accumulated, int bias)
 {
     ga2d_real b = 0, ms = 1, is = 0, lambda, total;
@@ -8392,11 +8896,43 @@ static ga2d_real ga2d__limit_impulse(const ga2d__step_context *c, const ga2d__jo
         ms = c->joint_soft.mass_scale;
         is = c->joint_soft.impulse_scale;
     }
-    lambda = -j->axial_mass * ms * (Cdot + b) - is * *accumulated;
+    lambda = -mass * ms * (Cdot + b) - is * *accumulated;
     total = *accumulated + lambda > 0 ? *accumulated + lambda : 0;
     lambda = total - *accumulated;
     *accumulated = total;
     return lambda;
+}
+
+/* K^-1 r for a point constraint's 2x2 mass matrix K at anchors ra, rb:
+   K = (1/m_a + 1/m_b) 1 + (1/I_a) [ra_y^2, -ra_x ra_y; -ra_x ra_y, ra_x^2]
+   + the same for B (the paper's impulse denominator, for any direction). */
+static ga2d_vec ga2d__point_solve(const ga2d__joint *j, ga2d_vec ra, ga2d_vec rb, ga2d_vec r)
+{
+    ga2d_real k11 = j->ima + j->imb + j->iia * ra.y * ra.y + j->iib * rb.y * rb.y;
+    ga2d_real k12 = -j->iia * ra.x * ra.y - j->iib * rb.x * rb.y;
+    ga2d_real k22 = j->ima + j->imb + j->iia * ra.x * ra.x + j->iib * rb.x * rb.x;
+    ga2d_real det = k11 * k22 - k12 * k12;
+    if (det != 0) det = 1 / det;
+    return ga2d_vec_make(det * (k22 * r.x - k12 * r.y), det * (k11 * r.y - k12 * r.x));
+}
+
+/* The point constraint, B's anchor onto A's: the velocity error, and with
+   a softness the separation `sep` fed back through it (NULL: rigid, no
+   feedback: the relax pass). */
+static void ga2d__solve_point(const ga2d__step_context *c, ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, ga2d_vec ra,
+                              ga2d_vec rb, ga2d_vec sep, const ga2d__soft *soft)
+{
+    ga2d_vec rhs = ga2d__joint_cdot(A, B, ra, rb), P;
+    ga2d_real ms = 1, is = 0;
+    (void)c;
+    if (soft) {
+        rhs = ga2d_vec_add(rhs, ga2d_vec_scale(sep, soft->bias_rate));
+        ms = soft->mass_scale;
+        is = soft->impulse_scale;
+    }
+    P = ga2d_vec_sub(ga2d_vec_scale(ga2d__point_solve(j, ra, rb, rhs), -ms), ga2d_vec_scale(j->linear_impulse, is));
+    j->linear_impulse = ga2d_vec_add(j->linear_impulse, P);
+    ga2d__japply(j, A, B, ra, rb, P, 0);
 }
 
 /* A revolute joint's pass (Catto's soft step, as Box2D v3 solves it):
@@ -8407,11 +8943,11 @@ static void ga2d__solve_revolute(ga2d__step_context *c, ga2d__joint *j, int bias
 {
     ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
     ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
-    ga2d_vec ra = ga2d__jturn(sa, j->ra), rb = ga2d__jturn(sb, j->rb), cdot, sep, rhs, P;
+    ga2d_vec ra = ga2d__jturn(sa, j->ra), rb = ga2d__jturn(sb, j->rb);
     int turns = j->axial_mass > 0;
-    ga2d_real angle = 0, k11, k12, k22, det, ms = 1, is = 0;
+    ga2d_real angle = 0;
     if (turns && (j->enable_spring || j->enable_limit))
-        angle = j->delta_angle + ga2d_rotor_angle(ga2d__relative_rotor(ga2d__rotor(sa->dqc, sa->dqs), ga2d__rotor(sb->dqc, sb->dqs)));
+        angle = ga2d__joint_angle(sa, sb, j);
     if (turns && j->enable_spring && j->hertz > 0) {
         ga2d_real lambda = -j->spring.mass_scale * j->axial_mass * (B.w - A.w + j->spring.bias_rate * angle) -
                            j->spring.impulse_scale * j->spring_impulse;
@@ -8420,42 +8956,126 @@ static void ga2d__solve_revolute(ga2d__step_context *c, ga2d__joint *j, int bias
         B.w += j->iib * lambda;
     }
     if (turns && j->enable_motor) {
-        ga2d_real cap = j->max_motor_torque * c->h, old = j->motor_impulse;
+        ga2d_real cap = j->max_motor * c->h, old = j->motor_impulse;
         ga2d_real total = old - j->axial_mass * (B.w - A.w - j->motor_speed);
         j->motor_impulse = total < -cap ? -cap : (total > cap ? cap : total);
         A.w -= j->iia * (j->motor_impulse - old);
         B.w += j->iib * (j->motor_impulse - old);
     }
     if (turns && j->enable_limit) {
-        ga2d_real lambda = ga2d__limit_impulse(c, j, angle - j->lower, B.w - A.w, &j->lower_impulse, bias);
+        ga2d_real lambda = ga2d__limit_impulse(c, j->axial_mass, angle - j->lower, B.w - A.w, &j->lower_impulse, bias);
         A.w -= j->iia * lambda;
         B.w += j->iib * lambda;
-        lambda = ga2d__limit_impulse(c, j, j->upper - angle, A.w - B.w, &j->upper_impulse, bias);
+        lambda = ga2d__limit_impulse(c, j->axial_mass, j->upper - angle, A.w - B.w, &j->upper_impulse, bias);
         A.w += j->iia * lambda;
         B.w -= j->iib * lambda;
     }
-    /* the point: relative velocity of B's anchor to A's, vb + w_b rb_perp -
-       va - w_a ra_perp (w e12 acting on r), and with bias the anchors'
-       separation now: the centres' offset where the step began, the
-       centres' motion since, the turned anchors */
-    cdot = ga2d_vec_sub(ga2d_vec_add(B.v, ga2d_vec_scale(ga2d_vec_perp(rb), B.w)),
-                        ga2d_vec_add(A.v, ga2d_vec_scale(ga2d_vec_perp(ra), A.w)));
-    rhs = cdot;
-    if (bias) {
-        sep = ga2d_vec_add(ga2d_vec_add(ga2d_vec_make(sb->dpx - sa->dpx, sb->dpy - sa->dpy), ga2d_vec_sub(rb, ra)), j->delta_center);
-        rhs = ga2d_vec_add(cdot, ga2d_vec_scale(sep, c->joint_soft.bias_rate));
-        ms = c->joint_soft.mass_scale;
-        is = c->joint_soft.impulse_scale;
+    ga2d__solve_point(c, j, &A, &B, ra, rb, bias ? ga2d__joint_span(sa, sb, j, ra, rb) : ga2d_vec_make(0, 0),
+                      bias ? &c->joint_soft : NULL);
+    ga2d__jstore(sa, A);
+    ga2d__jstore(sb, B);
+}
+
+/* An impulse along a distance joint's axis (its direction's mass m):
+   lambda = -ms m (cdot + bias) - is acc, accumulated, applied at the
+   anchors. */
+static ga2d_real ga2d__axis_impulse(const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, ga2d_vec ra, ga2d_vec rb, ga2d_vec axis,
+                                    ga2d_real m, ga2d_real bias, const ga2d__soft *soft, ga2d_real *acc)
+{
+    ga2d_real cdot = ga2d_dot(axis, ga2d__joint_cdot(A, B, ra, rb)), ms = soft ? soft->mass_scale : 1;
+    ga2d_real is = soft ? soft->impulse_scale : 0;
+    ga2d_real lambda = -ms * m * (cdot + bias) - is * *acc;
+    *acc += lambda;
+    ga2d__japply(j, A, B, ra, rb, ga2d_vec_scale(axis, lambda), 0);
+    return lambda;
+}
+
+/* A distance joint's pass: along the axis between the anchors as they
+   are now, the rigid length (with the feedback in bias passes) or the
+   spring, then the range's two sides and the motor. */
+static void ga2d__solve_distance(ga2d__step_context *c, ga2d__joint *j, int bias)
+{
+    ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
+    ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
+    ga2d_vec ra = ga2d__jturn(sa, j->ra), rb = ga2d__jturn(sb, j->rb), d = ga2d__joint_span(sa, sb, j, ra, rb);
+    ga2d_vec axis = ga2d__axis_of(d);
+    ga2d_real len = ga2d_vec_length(d), wa = ga2d_wedge(ra, axis), wb = ga2d_wedge(rb, axis);
+    ga2d_real k = j->ima + j->imb + j->iia * wa * wa + j->iib * wb * wb, m = k > 0 ? 1 / k : 0;
+    int ranged = j->enable_limit && j->lower < j->upper;
+    if (j->enable_spring && j->hertz > 0) {
+        if (!ranged || (len > j->lower && len < j->upper)) /* a rope's spring acts within its range */
+            ga2d__axis_impulse(j, &A, &B, ra, rb, axis, m, j->spring.bias_rate * (len - j->length), &j->spring, &j->spring_impulse);
+    } else if (!ranged) {
+        ga2d__axis_impulse(j, &A, &B, ra, rb, axis, m, bias ? c->joint_soft.bias_rate * (len - j->length) : 0,
+                           bias ? &c->joint_soft : NULL, &j->impulse);
     }
-    k11 = j->ima + j->imb + j->iia * ra.y * ra.y + j->iib * rb.y * rb.y;
-    k12 = -j->iia * ra.x * ra.y - j->iib * rb.x * rb.y;
-    k22 = j->ima + j->imb + j->iia * ra.x * ra.x + j->iib * rb.x * rb.x;
-    det = k11 * k22 - k12 * k12;
-    if (det != 0) det = 1 / det;
-    P = ga2d_vec_make(det * (k22 * rhs.x - k12 * rhs.y), det * (k11 * rhs.y - k12 * rhs.x));
-    P = ga2d_vec_sub(ga2d_vec_scale(P, -ms), ga2d_vec_scale(j->linear_impulse, is));
-    j->linear_impulse = ga2d_vec_add(j->linear_impulse, P);
-    ga2d__japply(j, &A, &B, ra, rb, P, 0);
+    if (ranged) {
+        ga2d_real cdot = ga2d_dot(axis, ga2d__joint_cdot(&A, &B, ra, rb));
+        ga2d_real lambda = ga2d__limit_impulse(c, m, len - j->lower, cdot, &j->lower_impulse, bias);
+        ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_scale(axis, lambda), 0);
+        cdot = ga2d_dot(axis, ga2d__joint_cdot(&A, &B, ra, rb));
+        lambda = ga2d__limit_impulse(c, m, j->upper - len, -cdot, &j->upper_impulse, bias);
+        ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_scale(axis, -lambda), 0);
+    }
+    if (j->enable_motor) {
+        ga2d_real cap = j->max_motor * c->h, old = j->motor_impulse;
+        ga2d_real total = old - m * (ga2d_dot(axis, ga2d__joint_cdot(&A, &B, ra, rb)) - j->motor_speed);
+        j->motor_impulse = total < -cap ? -cap : (total > cap ? cap : total);
+        ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_scale(axis, j->motor_impulse - old), 0);
+    }
+    ga2d__jstore(sa, A);
+    ga2d__jstore(sb, B);
+}
+
+/* A weld's pass: the angle, then the point, each rigid with the
+   feedback in bias passes, or a spring of its own hertz in every pass
+   (Box2D v3's weld). */
+static void ga2d__solve_weld(ga2d__step_context *c, ga2d__joint *j, int bias)
+{
+    ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
+    ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
+    ga2d_vec ra = ga2d__jturn(sa, j->ra), rb = ga2d__jturn(sb, j->rb);
+    const ga2d__soft *angular = j->hertz > 0 ? &j->spring : (bias ? &c->joint_soft : NULL);
+    const ga2d__soft *linear = j->linear_hertz > 0 ? &j->linear_spring : (bias ? &c->joint_soft : NULL);
+    if (j->axial_mass > 0) {
+        ga2d_real b = angular ? angular->bias_rate * ga2d__joint_angle(sa, sb, j) : 0;
+        ga2d_real ms = angular ? angular->mass_scale : 1, is = angular ? angular->impulse_scale : 0;
+        ga2d_real lambda = -ms * j->axial_mass * (B.w - A.w + b) - is * j->impulse;
+        j->impulse += lambda;
+        A.w -= j->iia * lambda;
+        B.w += j->iib * lambda;
+    }
+    ga2d__solve_point(c, j, &A, &B, ra, rb, linear ? ga2d__joint_span(sa, sb, j, ra, rb) : ga2d_vec_make(0, 0), linear);
+    ga2d__jstore(sa, A);
+    ga2d__jstore(sb, B);
+}
+
+/* A motor joint's pass: the velocity that closes `correction` of the
+   angle's and the anchors' gaps this substep, within max_torque and
+   max_force (accumulated impulses clamped: |P| <= F h), in every pass
+   (it is a drive, not a constraint the relax pass should leave). */
+static void ga2d__solve_motor(ga2d__step_context *c, ga2d__joint *j)
+{
+    ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
+    ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
+    ga2d_vec ra = ga2d__jturn(sa, j->ra), rb = ga2d__jturn(sb, j->rb), gap, rhs, old = j->linear_impulse, P;
+    ga2d_real rate = j->correction * c->inv_h, cap;
+    if (j->axial_mass > 0) {
+        ga2d_real prev = j->impulse, total;
+        cap = j->max_torque * c->h;
+        total = prev - j->axial_mass * (B.w - A.w + rate * ga2d__joint_angle(sa, sb, j));
+        j->impulse = total < -cap ? -cap : (total > cap ? cap : total);
+        A.w -= j->iia * (j->impulse - prev);
+        B.w += j->iib * (j->impulse - prev);
+    }
+    /* the gap: B's anchor less (A's anchor + the offset, turned with A) */
+    gap = ga2d_vec_sub(ga2d__joint_span(sa, sb, j, ra, rb), ga2d__jturn(sa, j->target));
+    rhs = ga2d_vec_add(ga2d__joint_cdot(&A, &B, ra, rb), ga2d_vec_scale(gap, rate));
+    P = ga2d_vec_add(old, ga2d_vec_scale(ga2d__point_solve(j, ra, rb, rhs), -1));
+    cap = j->max_force * c->h;
+    if (ga2d_vec_length(P) > cap) P = ga2d_vec_scale(ga2d__axis_of(P), cap);
+    j->linear_impulse = P;
+    ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_sub(P, old), 0);
     ga2d__jstore(sa, A);
     ga2d__jstore(sb, B);
 }
@@ -8465,7 +9085,15 @@ static void ga2d__solve_joints(ga2d__step_context *c, int begin, int end, int bi
 {
     ga2d_world *w = c->world;
     int i;
-    for (i = begin; i < end; ++i) ga2d__solve_revolute(c, &w->joints[c->joint_order[i]], bias);
+    for (i = begin; i < end; ++i) {
+        ga2d__joint *j = &w->joints[c->joint_order[i]];
+        switch (j->type) {
+        case GA2D_JOINT_REVOLUTE: ga2d__solve_revolute(c, j, bias); break;
+        case GA2D_JOINT_DISTANCE: ga2d__solve_distance(c, j, bias); break;
+        case GA2D_JOINT_WELD: ga2d__solve_weld(c, j, bias); break;
+        default: ga2d__solve_motor(c, j); break;
+        }
+    }
 }
 
 /* Containment: a blown-up body's joints forget their impulses (else
@@ -8473,11 +9101,7 @@ static void ga2d__solve_joints(ga2d__step_context *c, int begin, int end, int bi
 static void ga2d__joints_forget(ga2d_world *w, int slot)
 {
     int link;
-    for (link = ga2d__first_joint(w, slot); link >= 0; link = ga2d__next_joint(w, link)) {
-        ga2d__joint *j = &w->joints[link >> 1];
-        j->linear_impulse = ga2d_vec_make(0, 0);
-        j->spring_impulse = j->motor_impulse = j->lower_impulse = j->upper_impulse = 0;
-    }
+    for (link = ga2d__first_joint(w, slot); link >= 0; link = ga2d__next_joint(w, link)) ga2d__joint_forget(&w->joints[link >> 1]);
 }
 
 /* ============================================================ world step */
@@ -9338,7 +9962,10 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     hz = w->def.contact_hertz < GA2D__HERTZ_CAP * c->inv_h ? w->def.contact_hertz : GA2D__HERTZ_CAP * c->inv_h;
     c->soft = ga2d__make_soft(hz, w->def.contact_damping_ratio, h);
     c->stiff = ga2d__make_soft(2 * hz, w->def.contact_damping_ratio, h);
-    c->joint_soft = ga2d__make_soft(2 * hz, GA2D__JOINT_DAMPING_RATIO, h);
+    /* a rigid joint's feedback, at most a quarter of the substep rate as
+       the contacts' (faster, a chain of welds rings and grows) */
+    c->joint_soft = ga2d__make_soft(GA2D__JOINT_HERTZ < GA2D__HERTZ_CAP * c->inv_h ? GA2D__JOINT_HERTZ : GA2D__HERTZ_CAP * c->inv_h,
+                                    GA2D__JOINT_DAMPING_RATIO, h);
     c->joint_bias_in_relax = w->def.solver != GA2D_SOLVER_SOFT_STEP;
     w->counters.integrated_bodies = 0;
     w->counters.force_evaluations = 0;
@@ -9760,7 +10387,7 @@ static void ga2d__io_joint(ga2d__codec *k, ga2d__joint *j)
     ga2d__io_real(k, &j->lower);
     ga2d__io_real(k, &j->upper);
     ga2d__io_real(k, &j->motor_speed);
-    ga2d__io_real(k, &j->max_motor_torque);
+    ga2d__io_real(k, &j->max_motor);
     ga2d__io_real(k, &j->hertz);
     ga2d__io_real(k, &j->damping_ratio);
     ga2d__io_int(k, &j->enable_limit);
@@ -9771,6 +10398,14 @@ static void ga2d__io_joint(ga2d__codec *k, ga2d__joint *j)
     ga2d__io_real(k, &j->motor_impulse);
     ga2d__io_real(k, &j->lower_impulse);
     ga2d__io_real(k, &j->upper_impulse);
+    ga2d__io_real(k, &j->impulse);
+    ga2d__io_real(k, &j->length);
+    ga2d__io_real(k, &j->linear_hertz);
+    ga2d__io_real(k, &j->linear_damping_ratio);
+    ga2d__io_real(k, &j->max_force);
+    ga2d__io_real(k, &j->max_torque);
+    ga2d__io_real(k, &j->correction);
+    ga2d__io_vec(k, &j->offset);
 }
 
 static void ga2d__io_polygon(ga2d__codec *k, ga2d_polygon *p)
@@ -10392,12 +11027,17 @@ static int ga2d__snap_manifold_ok(const ga2d_manifold *m)
 static int ga2d__snap_joint_ok(const ga2d_world *t, const ga2d__joint *j)
 {
     const ga2d_real *r[] = {&j->local[0].x, &j->local[0].y, &j->local[1].x, &j->local[1].y, &j->reference_angle, &j->lower,
-                            &j->upper, &j->motor_speed, &j->max_motor_torque, &j->hertz, &j->damping_ratio,
+                            &j->upper, &j->motor_speed, &j->max_motor, &j->hertz, &j->damping_ratio,
                             &j->linear_impulse.x, &j->linear_impulse.y, &j->spring_impulse, &j->motor_impulse,
-                            &j->lower_impulse, &j->upper_impulse};
+                            &j->lower_impulse, &j->upper_impulse, &j->impulse, &j->length, &j->linear_hertz,
+                            &j->linear_damping_ratio, &j->max_force, &j->max_torque, &j->correction, &j->offset.x,
+                            &j->offset.y};
     size_t i;
     int s;
-    if (j->type != GA2D_JOINT_REVOLUTE || j->generation == 0 || j->serial == 0 || j->serial > t->joint_serial) return 0;
+    if ((j->type != GA2D_JOINT_REVOLUTE && j->type != GA2D_JOINT_DISTANCE && j->type != GA2D_JOINT_WELD &&
+         j->type != GA2D_JOINT_MOTOR) ||
+        j->generation == 0 || j->serial == 0 || j->serial > t->joint_serial)
+        return 0;
     for (s = 0; s < 2; ++s)
         if (j->body[s] < 0 || j->body[s] >= t->body_used || t->bodies[j->body[s]].type < 0) return 0;
     if (j->body[0] == j->body[1] ||
@@ -10405,8 +11045,11 @@ static int ga2d__snap_joint_ok(const ga2d_world *t, const ga2d__joint *j)
         return 0;
     for (i = 0; i < sizeof r / sizeof r[0]; ++i)
         if (!ga2d__finite(*r[i])) return 0;
-    if (!ga2d__coordinate_ok(j->local[0]) || !ga2d__coordinate_ok(j->local[1]) || j->max_motor_torque < 0 || j->hertz < 0 ||
-        j->damping_ratio < 0 || (j->enable_limit && j->lower > j->upper) || j->lower_impulse < 0 || j->upper_impulse < 0)
+    if (!ga2d__coordinate_ok(j->local[0]) || !ga2d__coordinate_ok(j->local[1]) || !ga2d__coordinate_ok(j->offset) ||
+        j->max_motor < 0 || j->hertz < 0 || j->damping_ratio < 0 || j->linear_hertz < 0 || j->linear_damping_ratio < 0 ||
+        j->max_force < 0 || j->max_torque < 0 || j->correction < 0 || j->correction > 1 || j->lower_impulse < 0 ||
+        j->upper_impulse < 0 || (j->enable_limit && j->lower > j->upper) ||
+        (j->type == GA2D_JOINT_DISTANCE && (!(j->length > 0) || j->lower < 0 || j->lower > j->upper)))
         return 0;
     return !((j->collide_connected | j->enable_limit | j->enable_motor | j->enable_spring) & ~1);
 }
