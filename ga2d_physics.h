@@ -8336,45 +8336,50 @@ static void ga2d__joint_changed(ga2d_world *w, const ga2d__joint *j)
     ga2d__leave(w);
 }
 
-GA2D_API ga2d_result ga2d_revolute_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable)
+/* A setter's joint, if it is of `type`, or why not (returned). */
+#define GA2D__JOINT_SETTER(w, id, type, j)                                                                             \
+    do {                                                                                                               \
+        ga2d_result r_ = ga2d__joint_writable(w, id, type, &(j));                                                      \
+        if (r_ != GA2D_OK) return r_;                                                                                  \
+    } while (0)
+
+/* The setters the kinds with a limit, a motor and a spring share (each
+   public one names its kind: a joint of another is refused). */
+static ga2d_result ga2d__enable_motor(ga2d_world *w, ga2d_joint_id id, int type, int enable)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
-    if (r != GA2D_OK) return r;
+    GA2D__JOINT_SETTER(w, id, type, j);
     j->enable_motor = enable != 0;
     if (!j->enable_motor) j->motor_impulse = 0;
     ga2d__joint_changed(w, j);
     return GA2D_OK;
 }
 
-GA2D_API ga2d_result ga2d_revolute_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed)
+static ga2d_result ga2d__set_motor_speed(ga2d_world *w, ga2d_joint_id id, int type, ga2d_real speed)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
-    if (r != GA2D_OK) return r;
+    GA2D__JOINT_SETTER(w, id, type, j);
     if (!ga2d__finite(speed)) return GA2D_ERR_NOT_FINITE;
     j->motor_speed = speed;
     ga2d__joint_changed(w, j);
     return GA2D_OK;
 }
 
-GA2D_API ga2d_result ga2d_revolute_joint_set_max_motor_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque)
+static ga2d_result ga2d__set_max_motor(ga2d_world *w, ga2d_joint_id id, int type, ga2d_real max)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
-    if (r != GA2D_OK) return r;
-    if (!ga2d__finite(torque)) return GA2D_ERR_NOT_FINITE;
-    if (torque < 0) return GA2D_ERR_INVALID_ARGUMENT;
-    j->max_motor = torque;
+    GA2D__JOINT_SETTER(w, id, type, j);
+    if (!ga2d__finite(max)) return GA2D_ERR_NOT_FINITE;
+    if (max < 0) return GA2D_ERR_INVALID_ARGUMENT;
+    j->max_motor = max;
     ga2d__joint_changed(w, j);
     return GA2D_OK;
 }
 
-GA2D_API ga2d_result ga2d_revolute_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable)
+static ga2d_result ga2d__enable_limit(ga2d_world *w, ga2d_joint_id id, int type, int enable)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
-    if (r != GA2D_OK) return r;
+    GA2D__JOINT_SETTER(w, id, type, j);
     if (enable && j->lower > j->upper) return GA2D_ERR_INVALID_ARGUMENT;
     j->enable_limit = enable != 0;
     if (!j->enable_limit) j->lower_impulse = j->upper_impulse = 0;
@@ -8382,41 +8387,87 @@ GA2D_API ga2d_result ga2d_revolute_joint_enable_limit(ga2d_world *w, ga2d_joint_
     return GA2D_OK;
 }
 
-GA2D_API ga2d_result ga2d_revolute_joint_set_limits(ga2d_world *w, ga2d_joint_id id, ga2d_real lower, ga2d_real upper)
+/* lower_min: the least lower bound the kind takes (a distance's 0). */
+static ga2d_result ga2d__set_limits(ga2d_world *w, ga2d_joint_id id, int type, ga2d_real lower, ga2d_real upper,
+                                    ga2d_real lower_min)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
-    if (r != GA2D_OK) return r;
+    GA2D__JOINT_SETTER(w, id, type, j);
     if (!ga2d__finite(lower) || !ga2d__finite(upper)) return GA2D_ERR_NOT_FINITE;
-    if (lower > upper) return GA2D_ERR_INVALID_ARGUMENT;
+    if (lower > upper || lower < lower_min) return GA2D_ERR_INVALID_ARGUMENT;
     j->lower = lower;
     j->upper = upper;
     ga2d__joint_changed(w, j);
     return GA2D_OK;
 }
 
-GA2D_API ga2d_result ga2d_revolute_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable)
+static ga2d_result ga2d__enable_spring(ga2d_world *w, ga2d_joint_id id, int type, int enable)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
-    if (r != GA2D_OK) return r;
+    GA2D__JOINT_SETTER(w, id, type, j);
     j->enable_spring = enable != 0;
-    if (!j->enable_spring) j->spring_impulse = 0;
+    j->spring_impulse = 0;
+    if (type == GA2D_JOINT_DISTANCE) j->impulse = 0; /* the rigid length's, or the spring's: one of them acts */
     ga2d__joint_changed(w, j);
     return GA2D_OK;
 }
 
-GA2D_API ga2d_result ga2d_revolute_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
+/* A spring's hertz and damping ratio; `linear`: the weld's linear one
+   (else the kind's spring, the weld's angular one). */
+static ga2d_result ga2d__set_spring(ga2d_world *w, ga2d_joint_id id, int type, ga2d_real hertz, ga2d_real damping_ratio,
+                                    int linear)
 {
     ga2d__joint *j;
-    ga2d_result r = ga2d__joint_writable(w, id, GA2D_JOINT_REVOLUTE, &j);
-    if (r != GA2D_OK) return r;
+    GA2D__JOINT_SETTER(w, id, type, j);
     if (!ga2d__finite(hertz) || !ga2d__finite(damping_ratio)) return GA2D_ERR_NOT_FINITE;
     if (hertz < 0 || damping_ratio < 0) return GA2D_ERR_INVALID_ARGUMENT;
-    j->hertz = hertz;
-    j->damping_ratio = damping_ratio;
+    if (linear) {
+        j->linear_hertz = hertz;
+        j->linear_damping_ratio = damping_ratio;
+    } else {
+        j->hertz = hertz;
+        j->damping_ratio = damping_ratio;
+    }
     ga2d__joint_changed(w, j);
     return GA2D_OK;
+}
+
+/* no lower bound: an angle's limit may be any angle */
+#define GA2D__NO_LOWER_BOUND (-GA2D__MAX)
+
+GA2D_API ga2d_result ga2d_revolute_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    return ga2d__enable_motor(w, id, GA2D_JOINT_REVOLUTE, enable);
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed)
+{
+    return ga2d__set_motor_speed(w, id, GA2D_JOINT_REVOLUTE, speed);
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_set_max_motor_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque)
+{
+    return ga2d__set_max_motor(w, id, GA2D_JOINT_REVOLUTE, torque);
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    return ga2d__enable_limit(w, id, GA2D_JOINT_REVOLUTE, enable);
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_set_limits(ga2d_world *w, ga2d_joint_id id, ga2d_real lower, ga2d_real upper)
+{
+    return ga2d__set_limits(w, id, GA2D_JOINT_REVOLUTE, lower, upper, GA2D__NO_LOWER_BOUND);
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    return ga2d__enable_spring(w, id, GA2D_JOINT_REVOLUTE, enable);
+}
+
+GA2D_API ga2d_result ga2d_revolute_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
+{
+    return ga2d__set_spring(w, id, GA2D_JOINT_REVOLUTE, hertz, damping_ratio, 0);
 }
 
 /* ------------------------------------------------ distance, weld, motor */
@@ -8572,13 +8623,6 @@ GA2D_API ga2d_real ga2d_distance_joint_current_length(const ga2d_world *w, ga2d_
     return j && j->type == GA2D_JOINT_DISTANCE ? ga2d_vec_length(ga2d__distance_span(w, j)) : 0;
 }
 
-/* Setters of the three kinds: the joint if it is of `type`, or why not. */
-#define GA2D__JOINT_SETTER(w, id, type, j)                                                                             \
-    do {                                                                                                               \
-        ga2d_result r_ = ga2d__joint_writable(w, id, type, &(j));                                                      \
-        if (r_ != GA2D_OK) return r_;                                                                                  \
-    } while (0)
-
 GA2D_API ga2d_result ga2d_distance_joint_set_length(ga2d_world *w, ga2d_joint_id id, ga2d_real length)
 {
     ga2d__joint *j;
@@ -8592,102 +8636,47 @@ GA2D_API ga2d_result ga2d_distance_joint_set_length(ga2d_world *w, ga2d_joint_id
 
 GA2D_API ga2d_result ga2d_distance_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable)
 {
-    ga2d__joint *j;
-    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
-    j->enable_limit = enable != 0;
-    if (!j->enable_limit) j->lower_impulse = j->upper_impulse = 0;
-    ga2d__joint_changed(w, j);
-    return GA2D_OK;
+    return ga2d__enable_limit(w, id, GA2D_JOINT_DISTANCE, enable);
 }
 
 GA2D_API ga2d_result ga2d_distance_joint_set_length_range(ga2d_world *w, ga2d_joint_id id, ga2d_real min_length, ga2d_real max_length)
 {
-    ga2d__joint *j;
-    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
-    if (!ga2d__finite(min_length) || !ga2d__finite(max_length)) return GA2D_ERR_NOT_FINITE;
-    if (min_length < 0 || min_length > max_length) return GA2D_ERR_INVALID_ARGUMENT;
-    j->lower = min_length;
-    j->upper = max_length;
-    ga2d__joint_changed(w, j);
-    return GA2D_OK;
+    return ga2d__set_limits(w, id, GA2D_JOINT_DISTANCE, min_length, max_length, 0);
 }
 
 GA2D_API ga2d_result ga2d_distance_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable)
 {
-    ga2d__joint *j;
-    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
-    j->enable_spring = enable != 0;
-    j->spring_impulse = 0;
-    j->impulse = 0; /* the rigid length's, or the spring's: one of them acts */
-    ga2d__joint_changed(w, j);
-    return GA2D_OK;
+    return ga2d__enable_spring(w, id, GA2D_JOINT_DISTANCE, enable);
 }
 
 GA2D_API ga2d_result ga2d_distance_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
 {
-    ga2d__joint *j;
-    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
-    if (!ga2d__finite(hertz) || !ga2d__finite(damping_ratio)) return GA2D_ERR_NOT_FINITE;
-    if (hertz < 0 || damping_ratio < 0) return GA2D_ERR_INVALID_ARGUMENT;
-    j->hertz = hertz;
-    j->damping_ratio = damping_ratio;
-    ga2d__joint_changed(w, j);
-    return GA2D_OK;
+    return ga2d__set_spring(w, id, GA2D_JOINT_DISTANCE, hertz, damping_ratio, 0);
 }
 
 GA2D_API ga2d_result ga2d_distance_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable)
 {
-    ga2d__joint *j;
-    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
-    j->enable_motor = enable != 0;
-    if (!j->enable_motor) j->motor_impulse = 0;
-    ga2d__joint_changed(w, j);
-    return GA2D_OK;
+    return ga2d__enable_motor(w, id, GA2D_JOINT_DISTANCE, enable);
 }
 
 GA2D_API ga2d_result ga2d_distance_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed)
 {
-    ga2d__joint *j;
-    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
-    if (!ga2d__finite(speed)) return GA2D_ERR_NOT_FINITE;
-    j->motor_speed = speed;
-    ga2d__joint_changed(w, j);
-    return GA2D_OK;
+    return ga2d__set_motor_speed(w, id, GA2D_JOINT_DISTANCE, speed);
 }
 
 GA2D_API ga2d_result ga2d_distance_joint_set_max_motor_force(ga2d_world *w, ga2d_joint_id id, ga2d_real force)
 {
-    ga2d__joint *j;
-    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_DISTANCE, j);
-    if (!ga2d__finite(force)) return GA2D_ERR_NOT_FINITE;
-    if (force < 0) return GA2D_ERR_INVALID_ARGUMENT;
-    j->max_motor = force;
-    ga2d__joint_changed(w, j);
-    return GA2D_OK;
+    return ga2d__set_max_motor(w, id, GA2D_JOINT_DISTANCE, force);
 }
 
 GA2D_API ga2d_result ga2d_weld_joint_set_linear_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
 {
-    ga2d__joint *j;
-    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_WELD, j);
-    if (!ga2d__finite(hertz) || !ga2d__finite(damping_ratio)) return GA2D_ERR_NOT_FINITE;
-    if (hertz < 0 || damping_ratio < 0) return GA2D_ERR_INVALID_ARGUMENT;
-    j->linear_hertz = hertz;
-    j->linear_damping_ratio = damping_ratio;
-    ga2d__joint_changed(w, j);
-    return GA2D_OK;
+    return ga2d__set_spring(w, id, GA2D_JOINT_WELD, hertz, damping_ratio, 1);
 }
 
 GA2D_API ga2d_result ga2d_weld_joint_set_angular_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
 {
-    ga2d__joint *j;
-    GA2D__JOINT_SETTER(w, id, GA2D_JOINT_WELD, j);
-    if (!ga2d__finite(hertz) || !ga2d__finite(damping_ratio)) return GA2D_ERR_NOT_FINITE;
-    if (hertz < 0 || damping_ratio < 0) return GA2D_ERR_INVALID_ARGUMENT;
-    j->hertz = hertz;
-    j->damping_ratio = damping_ratio;
-    ga2d__joint_changed(w, j);
-    return GA2D_OK;
+    return ga2d__set_spring(w, id, GA2D_JOINT_WELD, hertz, damping_ratio, 0);
 }
 
 GA2D_API ga2d_result ga2d_motor_joint_set_linear_offset(ga2d_world *w, ga2d_joint_id id, ga2d_vec offset)
