@@ -1100,8 +1100,7 @@ GA2D_API int ga2d_chain_get_segments(const ga2d_world *w, ga2d_chain_id id, ga2d
    (DESIGN section 11): rigid by default, a spring where asked for.  They
    join islands (a body hanging from another sleeps and wakes with it),
    are saved in snapshots, drawn by ga2d_world_draw, and a world without
-   joints pays nothing for them.  Revolute, distance, weld and motor
-   joints so far; prismatic and wheel are names reserved for them. */
+   joints pays nothing for them. */
 typedef struct ga2d_joint_id { uint32_t index1; uint32_t generation; } ga2d_joint_id; /* zero: null */
 GA2D_API ga2d_joint_id ga2d_joint_id_null(void);
 GA2D_API int ga2d_joint_id_is_null(ga2d_joint_id id);
@@ -1263,6 +1262,77 @@ GA2D_API ga2d_result ga2d_motor_joint_set_linear_offset(ga2d_world *w, ga2d_join
 GA2D_API ga2d_result ga2d_motor_joint_set_angular_offset(ga2d_world *w, ga2d_joint_id id, ga2d_real offset);
 GA2D_API ga2d_result ga2d_motor_joint_set_max_force(ga2d_world *w, ga2d_joint_id id, ga2d_real force);
 GA2D_API ga2d_result ga2d_motor_joint_set_max_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque);
+
+/* A slider: B moves along an axis fixed in A (local_axis_a, any length:
+   it is made unit), its angle held to A's plus reference_angle; the
+   translation (B's anchor from A's, along the axis, m) within [lower,
+   upper] with the limit on, driven toward motor_speed (m/s) with at most
+   max_motor_force (N), or pulled to 0 by a spring of `hertz` and
+   damping_ratio.  Defaults: axis x, everything off. */
+typedef struct ga2d_prismatic_joint_def {
+    ga2d_body_id body_a, body_b;
+    ga2d_vec local_anchor_a, local_anchor_b;
+    int collide_connected;
+    void *user_data;
+    ga2d_vec local_axis_a;
+    ga2d_real reference_angle;
+    int enable_limit;
+    ga2d_real lower_translation, upper_translation;
+    int enable_motor;
+    ga2d_real motor_speed, max_motor_force;
+    int enable_spring;
+    ga2d_real hertz, damping_ratio;
+    int internal_cookie;      /* set by ga2d_default_prismatic_joint_def(); leave it */
+} ga2d_prismatic_joint_def;
+GA2D_API ga2d_prismatic_joint_def ga2d_default_prismatic_joint_def(void);
+/* As the revolute create; INVALID_ARGUMENT also for an axis of length 0. */
+GA2D_API ga2d_result ga2d_prismatic_joint_create_checked(ga2d_world *w, const ga2d_prismatic_joint_def *def,
+                                                         ga2d_joint_id *out);
+GA2D_API ga2d_joint_id ga2d_prismatic_joint_create(ga2d_world *w, const ga2d_prismatic_joint_def *def);
+GA2D_API ga2d_real ga2d_prismatic_joint_translation(const ga2d_world *w, ga2d_joint_id id); /* m */
+GA2D_API ga2d_real ga2d_prismatic_joint_speed(const ga2d_world *w, ga2d_joint_id id);       /* m/s */
+GA2D_API ga2d_result ga2d_prismatic_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_prismatic_joint_set_limits(ga2d_world *w, ga2d_joint_id id, ga2d_real lower, ga2d_real upper);
+GA2D_API ga2d_result ga2d_prismatic_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_prismatic_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed);
+GA2D_API ga2d_result ga2d_prismatic_joint_set_max_motor_force(ga2d_world *w, ga2d_joint_id id, ga2d_real force);
+GA2D_API ga2d_result ga2d_prismatic_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_prismatic_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio);
+
+/* A wheel on a suspension: B's anchor stays on a line through A's along
+   local_axis_a (A's frame; made unit), held near it by a spring of
+   `hertz` and damping_ratio (the suspension), within [lower, upper]
+   with the limit on; B turns freely, driven toward motor_speed (rad/s,
+   relative to A) with at most max_motor_torque (N m).  Defaults: axis y
+   (up, for a car whose chassis is A), the spring on at 1 Hz, damping
+   ratio 0.7, the rest off. */
+typedef struct ga2d_wheel_joint_def {
+    ga2d_body_id body_a, body_b;
+    ga2d_vec local_anchor_a, local_anchor_b;
+    int collide_connected;
+    void *user_data;
+    ga2d_vec local_axis_a;
+    int enable_spring;
+    ga2d_real hertz, damping_ratio;
+    int enable_limit;
+    ga2d_real lower_translation, upper_translation;
+    int enable_motor;
+    ga2d_real motor_speed, max_motor_torque;
+    int internal_cookie;      /* set by ga2d_default_wheel_joint_def(); leave it */
+} ga2d_wheel_joint_def;
+GA2D_API ga2d_wheel_joint_def ga2d_default_wheel_joint_def(void);
+/* As the prismatic create. */
+GA2D_API ga2d_result ga2d_wheel_joint_create_checked(ga2d_world *w, const ga2d_wheel_joint_def *def, ga2d_joint_id *out);
+GA2D_API ga2d_joint_id ga2d_wheel_joint_create(ga2d_world *w, const ga2d_wheel_joint_def *def);
+GA2D_API ga2d_real ga2d_wheel_joint_translation(const ga2d_world *w, ga2d_joint_id id); /* m, along the axis */
+GA2D_API ga2d_real ga2d_wheel_joint_motor_torque(const ga2d_world *w, ga2d_joint_id id); /* N m, last step */
+GA2D_API ga2d_result ga2d_wheel_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_wheel_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio);
+GA2D_API ga2d_result ga2d_wheel_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_wheel_joint_set_limits(ga2d_world *w, ga2d_joint_id id, ga2d_real lower, ga2d_real upper);
+GA2D_API ga2d_result ga2d_wheel_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable);
+GA2D_API ga2d_result ga2d_wheel_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed);
+GA2D_API ga2d_result ga2d_wheel_joint_set_max_motor_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque);
 
 /* A world point in the body's frame, relative to its origin: an anchor.
    Zero for a stale id. */
@@ -8262,17 +8332,34 @@ static ga2d_vec ga2d__distance_span(const ga2d_world *w, const ga2d__joint *j);
 GA2D_API ga2d_vec ga2d_joint_reaction_force(const ga2d_world *w, ga2d_joint_id id)
 {
     const ga2d__joint *j = ga2d__joint_lookup(w, id);
-    ga2d_vec P;
+    ga2d_vec P, axis;
     if (!j) return ga2d_vec_make(0, 0);
-    P = j->type == GA2D_JOINT_DISTANCE ? ga2d_vec_scale(ga2d__axis_of(ga2d__distance_span(w, j)), ga2d__joint_axial_impulse(j))
-                                       : j->linear_impulse;
+    switch (j->type) {
+    case GA2D_JOINT_DISTANCE: P = ga2d_vec_scale(ga2d__axis_of(ga2d__distance_span(w, j)), ga2d__joint_axial_impulse(j)); break;
+    case GA2D_JOINT_PRISMATIC:
+    case GA2D_JOINT_WHEEL: /* along A's axis, and across it */
+        axis = ga2d_rotate(w->bodies[j->body[0]].sim.q, j->offset);
+        P = ga2d_vec_add(ga2d_vec_scale(axis, j->spring_impulse + j->lower_impulse - j->upper_impulse +
+                                                  (j->type == GA2D_JOINT_PRISMATIC ? j->motor_impulse : 0)),
+                         ga2d_vec_scale(ga2d_vec_perp(axis), j->type == GA2D_JOINT_PRISMATIC ? j->linear_impulse.x : j->impulse));
+        break;
+    default: P = j->linear_impulse; break;
+    }
     return ga2d_vec_scale(P, w->step.inv_h);
 }
 
 GA2D_API ga2d_real ga2d_joint_reaction_torque(const ga2d_world *w, ga2d_joint_id id)
 {
     const ga2d__joint *j = ga2d__joint_lookup(w, id);
-    return j && j->type != GA2D_JOINT_DISTANCE ? ga2d__joint_axial_impulse(j) * w->step.inv_h : 0;
+    ga2d_real L;
+    if (!j) return 0;
+    switch (j->type) {
+    case GA2D_JOINT_DISTANCE: L = 0; break;
+    case GA2D_JOINT_PRISMATIC: L = j->linear_impulse.y; break;
+    case GA2D_JOINT_WHEEL: L = j->motor_impulse; break;
+    default: L = ga2d__joint_axial_impulse(j); break;
+    }
+    return L * w->step.inv_h;
 }
 
 /* B's rotor relative to A's (B's turn seen from A), as a unit rotor
@@ -8722,6 +8809,215 @@ GA2D_API ga2d_result ga2d_motor_joint_set_max_torque(ga2d_world *w, ga2d_joint_i
     return GA2D_OK;
 }
 
+/* --------------------------------------------------- prismatic and wheel */
+/* An axis in A's frame as the def gives it: finite, not zero (made unit
+   when the joint is made). */
+static ga2d_result ga2d__axis_check(ga2d_vec axis)
+{
+    if (!ga2d__finite_vec(axis)) return GA2D_ERR_NOT_FINITE;
+    return ga2d_vec_length(axis) > 0 ? GA2D_OK : GA2D_ERR_INVALID_ARGUMENT;
+}
+
+/* What a limit, a motor and a spring ask of their numbers. */
+static ga2d_result ga2d__drive_check(int enable_limit, ga2d_real lower, ga2d_real upper, ga2d_real speed, ga2d_real max_motor,
+                                     ga2d_real hertz, ga2d_real damping_ratio)
+{
+    if (!ga2d__finite(lower) || !ga2d__finite(upper) || !ga2d__finite(speed) || !ga2d__finite(max_motor) ||
+        !ga2d__finite(hertz) || !ga2d__finite(damping_ratio))
+        return GA2D_ERR_NOT_FINITE;
+    if (max_motor < 0 || hertz < 0 || damping_ratio < 0 || (enable_limit && lower > upper)) return GA2D_ERR_INVALID_ARGUMENT;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_prismatic_joint_def ga2d_default_prismatic_joint_def(void)
+{
+    ga2d_prismatic_joint_def d;
+    memset(&d, 0, sizeof d);
+    d.local_axis_a = ga2d_vec_make(1, 0);
+    d.internal_cookie = GA2D_DEF_COOKIE;
+    return d;
+}
+
+static void ga2d__prismatic_fill(ga2d__joint *j, const ga2d_prismatic_joint_def *def)
+{
+    j->offset = ga2d_vec_scale(def->local_axis_a, 1 / ga2d_vec_length(def->local_axis_a));
+    j->reference_angle = def->reference_angle;
+    j->enable_limit = def->enable_limit != 0;
+    j->lower = def->lower_translation;
+    j->upper = def->upper_translation;
+    j->enable_motor = def->enable_motor != 0;
+    j->motor_speed = def->motor_speed;
+    j->max_motor = def->max_motor_force;
+    j->enable_spring = def->enable_spring != 0;
+    j->hertz = def->hertz;
+    j->damping_ratio = def->damping_ratio;
+}
+
+GA2D_API ga2d_result ga2d_prismatic_joint_create_checked(ga2d_world *w, const ga2d_prismatic_joint_def *def, ga2d_joint_id *out)
+{
+    ga2d_result r;
+    GA2D__JOINT_CREATE_CHECK(w, def, out);
+    if ((r = ga2d__axis_check(def->local_axis_a)) != GA2D_OK) return r;
+    if (!ga2d__finite(def->reference_angle)) return GA2D_ERR_NOT_FINITE;
+    if ((r = ga2d__drive_check(def->enable_limit, def->lower_translation, def->upper_translation, def->motor_speed,
+                               def->max_motor_force, def->hertz, def->damping_ratio)) != GA2D_OK)
+        return r;
+    GA2D__JOINT_CREATE(w, def, out, GA2D_JOINT_PRISMATIC, ga2d__prismatic_fill(j, def));
+}
+
+GA2D_API ga2d_joint_id ga2d_prismatic_joint_create(ga2d_world *w, const ga2d_prismatic_joint_def *def)
+{
+    ga2d_joint_id id;
+    (void)ga2d_prismatic_joint_create_checked(w, def, &id);
+    return id;
+}
+
+GA2D_API ga2d_wheel_joint_def ga2d_default_wheel_joint_def(void)
+{
+    ga2d_wheel_joint_def d;
+    memset(&d, 0, sizeof d);
+    d.local_axis_a = ga2d_vec_make(0, 1);
+    d.enable_spring = 1;
+    d.hertz = 1;
+    d.damping_ratio = GA2D__R(0.7);
+    d.internal_cookie = GA2D_DEF_COOKIE;
+    return d;
+}
+
+static void ga2d__wheel_fill(ga2d__joint *j, const ga2d_wheel_joint_def *def)
+{
+    j->offset = ga2d_vec_scale(def->local_axis_a, 1 / ga2d_vec_length(def->local_axis_a));
+    j->enable_spring = def->enable_spring != 0;
+    j->hertz = def->hertz;
+    j->damping_ratio = def->damping_ratio;
+    j->enable_limit = def->enable_limit != 0;
+    j->lower = def->lower_translation;
+    j->upper = def->upper_translation;
+    j->enable_motor = def->enable_motor != 0;
+    j->motor_speed = def->motor_speed;
+    j->max_motor = def->max_motor_torque;
+}
+
+GA2D_API ga2d_result ga2d_wheel_joint_create_checked(ga2d_world *w, const ga2d_wheel_joint_def *def, ga2d_joint_id *out)
+{
+    ga2d_result r;
+    GA2D__JOINT_CREATE_CHECK(w, def, out);
+    if ((r = ga2d__axis_check(def->local_axis_a)) != GA2D_OK) return r;
+    if ((r = ga2d__drive_check(def->enable_limit, def->lower_translation, def->upper_translation, def->motor_speed,
+                               def->max_motor_torque, def->hertz, def->damping_ratio)) != GA2D_OK)
+        return r;
+    GA2D__JOINT_CREATE(w, def, out, GA2D_JOINT_WHEEL, ga2d__wheel_fill(j, def));
+}
+
+GA2D_API ga2d_joint_id ga2d_wheel_joint_create(ga2d_world *w, const ga2d_wheel_joint_def *def)
+{
+    ga2d_joint_id id;
+    (void)ga2d_wheel_joint_create_checked(w, def, &id);
+    return id;
+}
+
+/* A slider's (prismatic, wheel) translation and its rate now, from the
+   bodies: along A's axis, B's anchor from A's; d/dt (axis . d) = w_a
+   (axis_perp . d) + axis . (v_b + w_b rb_perp - v_a - w_a ra_perp). */
+static ga2d_real ga2d__slider_now(const ga2d_world *w, const ga2d__joint *j, ga2d_real *rate)
+{
+    const ga2d__body *a = &w->bodies[j->body[0]], *b = &w->bodies[j->body[1]];
+    ga2d_vec axis = ga2d_rotate(a->sim.q, j->offset), d = ga2d__distance_span(w, j);
+    ga2d_vec ra = ga2d_rotate(a->sim.q, ga2d_vec_sub(j->local[0], a->sim.local_center));
+    ga2d_vec rb = ga2d_rotate(b->sim.q, ga2d_vec_sub(j->local[1], b->sim.local_center));
+    ga2d_vec vr = ga2d_vec_sub(ga2d_vec_add(b->sim.v, ga2d_vec_scale(ga2d_vec_perp(rb), b->sim.w)),
+                               ga2d_vec_add(a->sim.v, ga2d_vec_scale(ga2d_vec_perp(ra), a->sim.w)));
+    if (rate) *rate = a->sim.w * ga2d_dot(ga2d_vec_perp(axis), d) + ga2d_dot(axis, vr);
+    return ga2d_dot(axis, d);
+}
+
+GA2D_API ga2d_real ga2d_prismatic_joint_translation(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j && j->type == GA2D_JOINT_PRISMATIC ? ga2d__slider_now(w, j, NULL) : 0;
+}
+
+GA2D_API ga2d_real ga2d_prismatic_joint_speed(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    ga2d_real rate = 0;
+    if (j && j->type == GA2D_JOINT_PRISMATIC) (void)ga2d__slider_now(w, j, &rate);
+    return rate;
+}
+
+GA2D_API ga2d_real ga2d_wheel_joint_translation(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j && j->type == GA2D_JOINT_WHEEL ? ga2d__slider_now(w, j, NULL) : 0;
+}
+
+GA2D_API ga2d_real ga2d_wheel_joint_motor_torque(const ga2d_world *w, ga2d_joint_id id)
+{
+    const ga2d__joint *j = ga2d__joint_lookup(w, id);
+    return j && j->type == GA2D_JOINT_WHEEL ? j->motor_impulse * w->step.inv_h : 0;
+}
+
+#define GA2D__P GA2D_JOINT_PRISMATIC
+#define GA2D__WH GA2D_JOINT_WHEEL
+GA2D_API ga2d_result ga2d_prismatic_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    return ga2d__enable_limit(w, id, GA2D__P, enable);
+}
+GA2D_API ga2d_result ga2d_prismatic_joint_set_limits(ga2d_world *w, ga2d_joint_id id, ga2d_real lower, ga2d_real upper)
+{
+    return ga2d__set_limits(w, id, GA2D__P, lower, upper, GA2D__NO_LOWER_BOUND);
+}
+GA2D_API ga2d_result ga2d_prismatic_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    return ga2d__enable_motor(w, id, GA2D__P, enable);
+}
+GA2D_API ga2d_result ga2d_prismatic_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed)
+{
+    return ga2d__set_motor_speed(w, id, GA2D__P, speed);
+}
+GA2D_API ga2d_result ga2d_prismatic_joint_set_max_motor_force(ga2d_world *w, ga2d_joint_id id, ga2d_real force)
+{
+    return ga2d__set_max_motor(w, id, GA2D__P, force);
+}
+GA2D_API ga2d_result ga2d_prismatic_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    return ga2d__enable_spring(w, id, GA2D__P, enable);
+}
+GA2D_API ga2d_result ga2d_prismatic_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
+{
+    return ga2d__set_spring(w, id, GA2D__P, hertz, damping_ratio, 0);
+}
+GA2D_API ga2d_result ga2d_wheel_joint_enable_spring(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    return ga2d__enable_spring(w, id, GA2D__WH, enable);
+}
+GA2D_API ga2d_result ga2d_wheel_joint_set_spring(ga2d_world *w, ga2d_joint_id id, ga2d_real hertz, ga2d_real damping_ratio)
+{
+    return ga2d__set_spring(w, id, GA2D__WH, hertz, damping_ratio, 0);
+}
+GA2D_API ga2d_result ga2d_wheel_joint_enable_limit(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    return ga2d__enable_limit(w, id, GA2D__WH, enable);
+}
+GA2D_API ga2d_result ga2d_wheel_joint_set_limits(ga2d_world *w, ga2d_joint_id id, ga2d_real lower, ga2d_real upper)
+{
+    return ga2d__set_limits(w, id, GA2D__WH, lower, upper, GA2D__NO_LOWER_BOUND);
+}
+GA2D_API ga2d_result ga2d_wheel_joint_enable_motor(ga2d_world *w, ga2d_joint_id id, int enable)
+{
+    return ga2d__enable_motor(w, id, GA2D__WH, enable);
+}
+GA2D_API ga2d_result ga2d_wheel_joint_set_motor_speed(ga2d_world *w, ga2d_joint_id id, ga2d_real speed)
+{
+    return ga2d__set_motor_speed(w, id, GA2D__WH, speed);
+}
+GA2D_API ga2d_result ga2d_wheel_joint_set_max_motor_torque(ga2d_world *w, ga2d_joint_id id, ga2d_real torque)
+{
+    return ga2d__set_max_motor(w, id, GA2D__WH, torque);
+}
+#undef GA2D__P
+#undef GA2D__WH
+
 GA2D_API ga2d_vec ga2d_body_local_point(const ga2d_world *w, ga2d_body_id id, ga2d_vec world_point)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
@@ -8844,6 +9140,8 @@ static ga2d_vec ga2d__joint_cdot(const ga2d__jbody *A, const ga2d__jbody *B, ga2
                         ga2d_vec_add(A->v, ga2d_vec_scale(ga2d_vec_perp(ra), A->w)));
 }
 
+static void ga2d__slider_warm(const ga2d__sbody *sa, const ga2d__sbody *sb, const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B);
+
 /* Stage, over the step's joints: last step's impulses, at the anchors as
    they are now. */
 static void ga2d__warm_start_joints(ga2d__step_context *c, int begin, int end)
@@ -8855,7 +9153,8 @@ static void ga2d__warm_start_joints(ga2d__step_context *c, int begin, int end)
         ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
         ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
         ga2d_vec ra = ga2d__jturn(sa, j->ra), rb = ga2d__jturn(sb, j->rb);
-        if (j->type == GA2D_JOINT_DISTANCE) /* its impulses lie along its axis */
+        if (j->type == GA2D_JOINT_PRISMATIC || j->type == GA2D_JOINT_WHEEL) ga2d__slider_warm(sa, sb, j, &A, &B);
+        else if (j->type == GA2D_JOINT_DISTANCE) /* its impulses lie along its axis */
             ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_scale(ga2d__axis_of(ga2d__joint_span(sa, sb, j, ra, rb)), ga2d__joint_axial_impulse(j)), 0);
         else ga2d__japply(j, &A, &B, ra, rb, j->linear_impulse, ga2d__joint_axial_impulse(j));
         ga2d__jstore(sa, A);
@@ -9069,6 +9368,157 @@ static void ga2d__solve_motor(ga2d__step_context *c, ga2d__joint *j)
     ga2d__jstore(sb, B);
 }
 
+/* A slider's frame now (prismatic, wheel): the anchors, B's anchor from
+   A's (d), A's axis turned with A and its normal, and the levers: along
+   the axis A pushes at the point of A under B's anchor (d + ra), B at
+   rb, so a1 = (d + ra) ^ axis, a2 = rb ^ axis, and s1, s2 the same for
+   the normal. */
+typedef struct ga2d__slider {
+    ga2d_vec ra, rb, d, axis, perp;
+    ga2d_real a1, a2, s1, s2;
+} ga2d__slider;
+
+static ga2d__slider ga2d__slider_frame(const ga2d__sbody *sa, const ga2d__sbody *sb, const ga2d__joint *j)
+{
+    ga2d__slider f;
+    ga2d_vec lever;
+    f.ra = ga2d__jturn(sa, j->ra);
+    f.rb = ga2d__jturn(sb, j->rb);
+    f.d = ga2d__joint_span(sa, sb, j, f.ra, f.rb);
+    f.axis = ga2d__jturn(sa, j->target);
+    f.perp = ga2d_vec_perp(f.axis);
+    lever = ga2d_vec_add(f.d, f.ra);
+    f.a1 = ga2d_wedge(lever, f.axis);
+    f.a2 = ga2d_wedge(f.rb, f.axis);
+    f.s1 = ga2d_wedge(lever, f.perp);
+    f.s2 = ga2d_wedge(f.rb, f.perp);
+    return f;
+}
+
+/* A linear impulse P with the torque impulses la on A, lb on B: v -= P /
+   m_a, w_a -= la / I_a; v_b += P / m_b, w_b += lb / I_b. */
+static void ga2d__japply_levers(const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, ga2d_vec P, ga2d_real la, ga2d_real lb)
+{
+    A->v = ga2d_vec_sub(A->v, ga2d_vec_scale(P, j->ima));
+    A->w -= j->iia * la;
+    B->v = ga2d_vec_add(B->v, ga2d_vec_scale(P, j->imb));
+    B->w += j->iib * lb;
+}
+
+/* The rate of a slider's translation along its axis (the velocity part
+   the solver sees: the axis's turn is left to the feedback). */
+static ga2d_real ga2d__slider_rate(const ga2d__slider *f, const ga2d__jbody *A, const ga2d__jbody *B)
+{
+    return ga2d_dot(f->axis, ga2d_vec_sub(B->v, A->v)) + f->a2 * B->w - f->a1 * A->w;
+}
+
+/* An impulse lambda along the axis. */
+static void ga2d__slider_push(const ga2d__joint *j, const ga2d__slider *f, ga2d__jbody *A, ga2d__jbody *B, ga2d_real lambda)
+{
+    ga2d__japply_levers(j, A, B, ga2d_vec_scale(f->axis, lambda), lambda * f->a1, lambda * f->a2);
+}
+
+/* Along a slider's axis: its spring (pulling the translation to 0), its
+   motor (prismatic: a force along the axis) and its limits. */
+static void ga2d__slider_axis(ga2d__step_context *c, ga2d__joint *j, const ga2d__slider *f, ga2d__jbody *A, ga2d__jbody *B, int bias,
+                              int linear_motor)
+{
+    ga2d_real k = j->ima + j->imb + j->iia * f->a1 * f->a1 + j->iib * f->a2 * f->a2, m = k > 0 ? 1 / k : 0;
+    ga2d_real translation = ga2d_dot(f->axis, f->d), lambda;
+    if (j->enable_spring && j->hertz > 0) {
+        lambda = -j->spring.mass_scale * m * (ga2d__slider_rate(f, A, B) + j->spring.bias_rate * translation) -
+                 j->spring.impulse_scale * j->spring_impulse;
+        j->spring_impulse += lambda;
+        ga2d__slider_push(j, f, A, B, lambda);
+    }
+    if (linear_motor && j->enable_motor) {
+        ga2d_real cap = j->max_motor * c->h, old = j->motor_impulse, total = old - m * (ga2d__slider_rate(f, A, B) - j->motor_speed);
+        j->motor_impulse = total < -cap ? -cap : (total > cap ? cap : total);
+        ga2d__slider_push(j, f, A, B, j->motor_impulse - old);
+    }
+    if (j->enable_limit) {
+        lambda = ga2d__limit_impulse(c, m, translation - j->lower, ga2d__slider_rate(f, A, B), &j->lower_impulse, bias);
+        ga2d__slider_push(j, f, A, B, lambda);
+        lambda = ga2d__limit_impulse(c, m, j->upper - translation, -ga2d__slider_rate(f, A, B), &j->upper_impulse, bias);
+        ga2d__slider_push(j, f, A, B, -lambda);
+    }
+}
+
+/* A prismatic joint's pass: along the axis, then the normal and the
+   angle held together as a 2x2 block, K = [m_a + m_b + s1^2 / I_a + s2^2
+   / I_b, s1 / I_a + s2 / I_b; same, 1 / I_a + 1 / I_b] (Box2D v3's). */
+static void ga2d__solve_prismatic(ga2d__step_context *c, ga2d__joint *j, int bias)
+{
+    ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
+    ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
+    ga2d__slider f = ga2d__slider_frame(sa, sb, j);
+    ga2d_real k11, k12, k22, det, r1, r2, ms = 1, is = 0;
+    ga2d_vec imp;
+    ga2d__slider_axis(c, j, &f, &A, &B, bias, 1);
+    r1 = ga2d_dot(f.perp, ga2d_vec_sub(B.v, A.v)) + f.s2 * B.w - f.s1 * A.w;
+    r2 = B.w - A.w;
+    if (bias) {
+        r1 += c->joint_soft.bias_rate * ga2d_dot(f.perp, f.d);
+        r2 += c->joint_soft.bias_rate * ga2d__joint_angle(sa, sb, j);
+        ms = c->joint_soft.mass_scale;
+        is = c->joint_soft.impulse_scale;
+    }
+    k11 = j->ima + j->imb + j->iia * f.s1 * f.s1 + j->iib * f.s2 * f.s2;
+    k12 = j->iia * f.s1 + j->iib * f.s2;
+    k22 = j->iia + j->iib > 0 ? j->iia + j->iib : 1; /* neither turns: the angle's row is idle */
+    det = k11 * k22 - k12 * k12;
+    if (det != 0) det = 1 / det;
+    imp = ga2d_vec_make(-ms * det * (k22 * r1 - k12 * r2) - is * j->linear_impulse.x,
+                        -ms * det * (k11 * r2 - k12 * r1) - is * j->linear_impulse.y);
+    j->linear_impulse = ga2d_vec_add(j->linear_impulse, imp);
+    ga2d__japply_levers(j, &A, &B, ga2d_vec_scale(f.perp, imp.x), imp.x * f.s1 + imp.y, imp.x * f.s2 + imp.y);
+    ga2d__jstore(sa, A);
+    ga2d__jstore(sb, B);
+}
+
+/* A wheel joint's pass: the motor on the relative spin, the suspension
+   and limits along the axis, then B's anchor held on A's line (the
+   normal only). */
+static void ga2d__solve_wheel(ga2d__step_context *c, ga2d__joint *j, int bias)
+{
+    ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
+    ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
+    ga2d__slider f = ga2d__slider_frame(sa, sb, j);
+    ga2d_real k, m, lambda, b = 0, ms = 1, is = 0;
+    if (j->enable_motor && j->axial_mass > 0) {
+        ga2d_real cap = j->max_motor * c->h, old = j->motor_impulse, total = old - j->axial_mass * (B.w - A.w - j->motor_speed);
+        j->motor_impulse = total < -cap ? -cap : (total > cap ? cap : total);
+        A.w -= j->iia * (j->motor_impulse - old);
+        B.w += j->iib * (j->motor_impulse - old);
+    }
+    ga2d__slider_axis(c, j, &f, &A, &B, bias, 0);
+    if (bias) {
+        b = c->joint_soft.bias_rate * ga2d_dot(f.perp, f.d);
+        ms = c->joint_soft.mass_scale;
+        is = c->joint_soft.impulse_scale;
+    }
+    k = j->ima + j->imb + j->iia * f.s1 * f.s1 + j->iib * f.s2 * f.s2;
+    m = k > 0 ? 1 / k : 0;
+    lambda = -ms * m * (ga2d_dot(f.perp, ga2d_vec_sub(B.v, A.v)) + f.s2 * B.w - f.s1 * A.w + b) - is * j->impulse;
+    j->impulse += lambda;
+    ga2d__japply_levers(j, &A, &B, ga2d_vec_scale(f.perp, lambda), lambda * f.s1, lambda * f.s2);
+    ga2d__jstore(sa, A);
+    ga2d__jstore(sb, B);
+}
+
+/* A slider's warm start: the axial impulses along the axis, the normal's
+   along the normal, the angular ones (prismatic: the angle's; wheel: the
+   motor's) as torques. */
+static void ga2d__slider_warm(const ga2d__sbody *sa, const ga2d__sbody *sb, const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B)
+{
+    ga2d__slider f = ga2d__slider_frame(sa, sb, j);
+    int prismatic = j->type == GA2D_JOINT_PRISMATIC;
+    ga2d_real axial = j->spring_impulse + j->lower_impulse - j->upper_impulse + (prismatic ? j->motor_impulse : 0);
+    ga2d_real normal = prismatic ? j->linear_impulse.x : j->impulse, turn = prismatic ? j->linear_impulse.y : j->motor_impulse;
+    ga2d_vec P = ga2d_vec_add(ga2d_vec_scale(f.axis, axial), ga2d_vec_scale(f.perp, normal));
+    ga2d__japply_levers(j, A, B, P, axial * f.a1 + normal * f.s1 + turn, axial * f.a2 + normal * f.s2 + turn);
+}
+
 /* Stage, over the step's joints: a pass, with the bias or without. */
 static void ga2d__solve_joints(ga2d__step_context *c, int begin, int end, int bias)
 {
@@ -9080,6 +9530,8 @@ static void ga2d__solve_joints(ga2d__step_context *c, int begin, int end, int bi
         case GA2D_JOINT_REVOLUTE: ga2d__solve_revolute(c, j, bias); break;
         case GA2D_JOINT_DISTANCE: ga2d__solve_distance(c, j, bias); break;
         case GA2D_JOINT_WELD: ga2d__solve_weld(c, j, bias); break;
+        case GA2D_JOINT_PRISMATIC: ga2d__solve_prismatic(c, j, bias); break;
+        case GA2D_JOINT_WHEEL: ga2d__solve_wheel(c, j, bias); break;
         default: ga2d__solve_motor(c, j); break;
         }
     }
@@ -11023,9 +11475,7 @@ static int ga2d__snap_joint_ok(const ga2d_world *t, const ga2d__joint *j)
                             &j->offset.y};
     size_t i;
     int s;
-    if ((j->type != GA2D_JOINT_REVOLUTE && j->type != GA2D_JOINT_DISTANCE && j->type != GA2D_JOINT_WELD &&
-         j->type != GA2D_JOINT_MOTOR) ||
-        j->generation == 0 || j->serial == 0 || j->serial > t->joint_serial)
+    if (j->type < 0 || j->type >= GA2D_JOINT_TYPE_COUNT || j->generation == 0 || j->serial == 0 || j->serial > t->joint_serial)
         return 0;
     for (s = 0; s < 2; ++s)
         if (j->body[s] < 0 || j->body[s] >= t->body_used || t->bodies[j->body[s]].type < 0) return 0;
@@ -11040,6 +11490,9 @@ static int ga2d__snap_joint_ok(const ga2d_world *t, const ga2d__joint *j)
         j->upper_impulse < 0 || (j->enable_limit && j->lower > j->upper) ||
         (j->type == GA2D_JOINT_DISTANCE && (!(j->length > 0) || j->lower < 0 || j->lower > j->upper)))
         return 0;
+    if ((j->type == GA2D_JOINT_PRISMATIC || j->type == GA2D_JOINT_WHEEL) &&
+        !(GA2D__FABS(ga2d_dot(j->offset, j->offset) - 1) <= GA2D__R(1e-3)))
+        return 0; /* the axis as create left it: unit */
     return !((j->collide_connected | j->enable_limit | j->enable_motor | j->enable_spring) & ~1);
 }
 
