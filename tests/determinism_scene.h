@@ -1,13 +1,18 @@
 /* determinism_scene.h - the mixed scene whose bits must not depend on the
    build (issue 8): a pyramid of base 8, 24 convex polygons of 3 to 6 sides
    falling onto it with spin and restitution, sleep on; 600 steps at 1/60.
+   Joints too (0.10): a chain of 8 links on revolute joints swings from a
+   post into the pyramid's side, two of the falling polygons are welded
+   and two more tied by a distance joint, one rides a wheel joint under
+   another, and one slides on a prismatic joint along a third.
    Its hash covers every scene body's position, rotor, velocity, angular
    velocity and awake flag, bit for bit (FNV-1a over the bytes).
 
    No libm in the scene either: the polygons are hulls of points from an
    integer generator, so nothing here can differ between platforms' sin and
-   cos.  Optional churn: unrelated bodies made and destroyed on their own
-   ground 1 km away while the scene runs, which must not change its hash.
+   cos.  Optional churn: unrelated bodies, and joints between them, made
+   and destroyed on their own ground 1 km away while the scene runs, which
+   must not change its hash.
 
    Used by tests/test_determinism.c (inside each test build) and by
    tests/determinism.c (one small program built with many compilers and
@@ -19,7 +24,7 @@
 #include <string.h>
 
 #define DSCENE_STEPS 600
-#define DSCENE_MAX 64
+#define DSCENE_MAX 96
 
 typedef struct dscene {
     ga2d_world *w;
@@ -63,6 +68,58 @@ static inline ga2d_polygon dscene_polygon(dscene *s, int sides)
     }
 }
 
+/* The joints: the chain (its links join ids), then joints between
+   falling polygons (ids 37 on: each kind once). */
+static inline int dscene_joints(dscene *s)
+{
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_body_id post, prev;
+    int i, first = s->count - 24;
+    d.polygon = ga2d_polygon_box((ga2d_real)0.25, (ga2d_real)0.25);
+    d.position = ga2d_vec_make(-9, 7);
+    post = ga2d_body_create(s->w, &d);
+    prev = post;
+    d.type = GA2D_BODY_DYNAMIC;
+    d.polygon = ga2d_polygon_box((ga2d_real)0.25, (ga2d_real)0.0625);
+    for (i = 0; i < 8; ++i) {
+        ga2d_revolute_joint_def r = ga2d_default_revolute_joint_def();
+        d.position = ga2d_vec_make((ga2d_real)(-8.5 + 0.5 * i), 7);
+        s->ids[s->count] = ga2d_body_create(s->w, &d);
+        r.body_a = prev;
+        r.body_b = s->ids[s->count];
+        r.local_anchor_a = ga2d_vec_make(i == 0 ? 0 : (ga2d_real)0.25, 0);
+        r.local_anchor_b = ga2d_vec_make((ga2d_real)-0.25, 0);
+        if (ga2d_joint_id_is_null(ga2d_revolute_joint_create(s->w, &r))) return 0;
+        prev = s->ids[s->count++];
+    }
+    {
+        ga2d_weld_joint_def wj = ga2d_default_weld_joint_def();
+        ga2d_distance_joint_def dj = ga2d_default_distance_joint_def();
+        ga2d_wheel_joint_def hj = ga2d_default_wheel_joint_def();
+        ga2d_prismatic_joint_def pj = ga2d_default_prismatic_joint_def();
+        wj.body_a = s->ids[first];
+        wj.body_b = s->ids[first + 1];
+        wj.local_anchor_a = ga2d_body_local_point(s->w, wj.body_a, ga2d_body_position(s->w, wj.body_b));
+        dj.body_a = s->ids[first + 2];
+        dj.body_b = s->ids[first + 3];
+        dj.length = 2;
+        hj.body_a = s->ids[first + 4];
+        hj.body_b = s->ids[first + 5];
+        hj.enable_motor = 1;
+        hj.motor_speed = 3;
+        hj.max_motor_torque = 2;
+        pj.body_a = s->ids[first + 6];
+        pj.body_b = s->ids[first + 7];
+        pj.enable_limit = 1;
+        pj.lower_translation = -1;
+        pj.upper_translation = 1;
+        if (ga2d_joint_id_is_null(ga2d_weld_joint_create(s->w, &wj)) || ga2d_joint_id_is_null(ga2d_distance_joint_create(s->w, &dj)) ||
+            ga2d_joint_id_is_null(ga2d_wheel_joint_create(s->w, &hj)) || ga2d_joint_id_is_null(ga2d_prismatic_joint_create(s->w, &pj)))
+            return 0;
+    }
+    return 1;
+}
+
 static inline int dscene_build(dscene *s)
 {
     ga2d_world_def wd = ga2d_default_world_def();
@@ -100,7 +157,7 @@ static inline int dscene_build(dscene *s)
     }
     for (i = 0; i < s->count; ++i)
         if (ga2d_body_id_is_null(s->ids[i])) return 0;
-    return 1;
+    return dscene_joints(s);
 }
 
 /* Step `step` of the churn: from step 40 to 400, every 20 steps three
@@ -126,6 +183,14 @@ static inline void dscene_churn(dscene *s, int step)
         d.position = ga2d_vec_make((ga2d_real)(998 + 2 * k), (ga2d_real)(1 + step % 3));
         d.angular_velocity = (ga2d_real)(k - 1);
         s->churn[s->churn_count++] = ga2d_body_create(s->w, &d);
+    }
+    for (k = 0; k < 2; ++k) { /* joints among them, gone with their bodies */
+        ga2d_revolute_joint_def r = ga2d_default_revolute_joint_def();
+        r.body_a = s->churn[s->churn_count - 3 + k];
+        r.body_b = s->churn[s->churn_count - 2 + k];
+        r.local_anchor_a = ga2d_vec_make(1, 0);
+        r.local_anchor_b = ga2d_vec_make(-1, 0);
+        (void)ga2d_revolute_joint_create(s->w, &r);
     }
 }
 
