@@ -9042,12 +9042,20 @@ static void ga2d__order_joints(ga2d__step_context *c)
     }
     for (k = 0; k < w->joint_used; ++k) {
         const ga2d__joint *j = &w->joints[k];
-        const ga2d__body *a, *b;
+        ga2d__body *a, *b;
         int at;
         if (j->type < 0) continue;
         a = &w->bodies[j->body[0]];
         b = &w->bodies[j->body[1]];
-        if (!((a->type == GA2D_BODY_DYNAMIC && a->awake) || (b->type == GA2D_BODY_DYNAMIC && b->awake))) continue;
+        if (!((a->type == GA2D_BODY_DYNAMIC && a->awake) || (b->type == GA2D_BODY_DYNAMIC && b->awake))) {
+            /* asleep on a kinematic body that moves: woken at the step's
+               end (ga2d__grant_wakes), carried from the next step on */
+            ga2d__body *sleeper = a->type == GA2D_BODY_DYNAMIC ? a : b;
+            const ga2d__body *carrier = sleeper == a ? b : a;
+            if (carrier->type == GA2D_BODY_KINEMATIC && (carrier->sim.v.x != 0 || carrier->sim.v.y != 0 || carrier->sim.w != 0))
+                (void)ga2d__field_wakes(w, sleeper, 1);
+            continue;
+        }
         for (at = n; at > 0 && w->joints[c->joint_order[at - 1]].serial > j->serial; --at) c->joint_order[at] = c->joint_order[at - 1];
         c->joint_order[at] = k;
         ++n;
