@@ -150,7 +150,7 @@ static body_bits bits_of(const ga2d_world *w, ga2d_body_id b)
 static double anchor_gap(const ga2d_world *w, ga2d_joint_id j, ga2d_vec la, ga2d_vec lb)
 {
     ga2d_body_id a = ga2d_joint_body_a(w, j), b = ga2d_joint_body_b(w, j);
-    return dist(world_point(w, a, la.x, la.y), world_point(w, b, lb.x, lb.y));
+    return dist(world_point(w, a, (double)la.x, (double)la.y), world_point(w, b, (double)lb.x, (double)lb.y));
 }
 
 /* Kinetic plus potential energy (g along -y) of a body. */
@@ -158,8 +158,8 @@ static double energy(const ga2d_world *w, ga2d_body_id b, double g)
 {
     ga2d_mass m = ga2d_body_mass_data(w, b);
     ga2d_vec v = ga2d_body_velocity(w, b);
-    double om = ga2d_body_angular_velocity(w, b), vx = v.x, vy = v.y, mass = m.mass, inertia = m.inertia;
-    double y = ga2d_body_center(w, b).y;
+    double om = (double)ga2d_body_angular_velocity(w, b), vx = (double)v.x, vy = (double)v.y, mass = (double)m.mass, inertia = (double)m.inertia;
+    double y = (double)ga2d_body_center(w, b).y;
     return 0.5 * mass * (vx * vx + vy * vy) + 0.5 * inertia * om * om + mass * g * y;
 }
 
@@ -208,14 +208,14 @@ static swing swing_pendulum(double th0, int periods)
     swing s;
     int crossings = 0, tenth = periods / 10 > 0 ? periods / 10 : 1;
     long n;
-    double prev = ga2d_body_position(w, bar).x, first = 0, last = 0;
+    double prev = (double)ga2d_body_position(w, bar).x, first = 0, last = 0;
     s.e0 = energy(w, bar, G);
     s.e_max = s.e_min = s.e_max_first = s.e_max_last = s.e0;
     s.max_sep = 0;
     for (n = 1; crossings <= periods; ++n) {
         double x, e, sep;
         step(w);
-        x = ga2d_body_position(w, bar).x;
+        x = (double)ga2d_body_position(w, bar).x;
         e = energy(w, bar, G);
         sep = dist(world_point(w, bar, -BAR_HX, 0), v2(0, 0));
         if (sep > s.max_sep) s.max_sep = sep;
@@ -426,19 +426,19 @@ static void reaction_spinning_bar(void)
         j = hinge(w, p, b, 0, 0, -BAR_HX, 0);
         for (k = 0; k < 60; ++k) {
             ga2d_vec f, c;
-            double mass = ga2d_body_mass_data(w, b).mass, om, dd, expect, fl, lag, cross, sep;
+            double mass = (double)ga2d_body_mass_data(w, b).mass, om, dd, expect, fl, lag, cross, sep;
             step(w);
             f = ga2d_joint_reaction_force(w, j);
             c = ga2d_body_center(w, b);
-            om = ga2d_body_angular_velocity(w, b);
-            dd = hypot(c.x, c.y);
+            om = (double)ga2d_body_angular_velocity(w, b);
+            dd = hypot((double)c.x, (double)c.y);
             sep = dist(world_point(w, b, -BAR_HX, 0), v2(0, 0));
             CHECK(sep <= s_bound);
             CHECK_NEAR(om, w0, fabs(w0) * 2 * m * BAR_HX * s_bound / ip + 16 * u * fabs(w0));
             if (sep > worst_sep) worst_sep = sep;
             if (k < 3) continue;
             expect = mass * om * om * dd * (1 - (om * H) * (om * H) / 24);
-            fl = hypot(f.x, f.y);
+            fl = hypot((double)f.x, (double)f.y);
             CHECK_NEAR(fl / expect, 1, 2 * sep / BAR_HX + 16 * u);
             /* the angle from the pivot's direction (-c) to F, in the turn's sense */
             cross = (-(double)c.x * (double)f.y + (double)c.y * (double)f.x) / (dd * fl);
@@ -479,7 +479,7 @@ static void motor_max_torque(void)
         ga2d_body_id p = pivot_body(w, 0, 0), b = disc_body(w, 0, 0, 0, 0.5);
         ga2d_revolute_joint_def d = hinge_def(p, b, 0, 0, 0, 0);
         ga2d_joint_id j;
-        double I = ga2d_body_mass_data(w, b).inertia, wt = targets[i], sgn = wt > 0 ? 1 : -1, t_reach = fabs(wt) * I / T;
+        double I = (double)ga2d_body_mass_data(w, b).inertia, wt = targets[i], sgn = wt > 0 ? 1 : -1, t_reach = fabs(wt) * I / T;
         double worst = 0;
         int accel_steps = 0, held_steps = 0;
         d.enable_motor = 1;
@@ -489,7 +489,7 @@ static void motor_max_torque(void)
         for (k = 1; k <= 120; ++k) {
             double t = k * DT, om;
             step(w);
-            om = ga2d_body_angular_velocity(w, b);
+            om = (double)ga2d_body_angular_velocity(w, b);
             CHECK(ga2d_revolute_joint_speed(w, j) == ga2d_body_angular_velocity(w, b));
             if (t < t_reach - DT / 2) { /* the whole step accelerating (the next substep still below the target) */
                 double expect = sgn * T * t / I;
@@ -538,7 +538,7 @@ static void limit_disc(void)
         for (k = 0; k < 60; ++k) {
             double a;
             step(w);
-            a = ga2d_revolute_joint_angle(w, j);
+            a = (double)ga2d_revolute_joint_angle(w, j);
             CHECK(a >= lo - tol && a <= hi + tol);
             if (a - hi > worst) worst = a - hi;
             if (lo - a > worst) worst = lo - a;
@@ -588,7 +588,7 @@ static void limit_pendulum(void)
         for (k = 0; k < 120; ++k) {
             double past;
             step(w);
-            a = ga2d_revolute_joint_angle(w, j);
+            a = (double)ga2d_revolute_joint_angle(w, j);
             past = sgn * a - lim;
             if (past > worst) worst = past;
         }
@@ -689,11 +689,11 @@ static void spring_period(void)
         d.damping_ratio = 0;
         CHECK_RESULT(ga2d_revolute_joint_create_checked(w, &d, &j), GA2D_OK);
         CHECK(fabs(Td * fs[i] - 1) <= e * e / 2); /* the derivation's own claim */
-        prev = ga2d_revolute_joint_angle(w, j);
+        prev = (double)ga2d_revolute_joint_angle(w, j);
         for (k = 1; crossings <= periods && k < 100000; ++k) {
             double a;
             step(w);
-            a = ga2d_revolute_joint_angle(w, j);
+            a = (double)ga2d_revolute_joint_angle(w, j);
             if (prev < 0 && a >= 0) {
                 double tc = k * DT - DT * a / (a - prev);
                 if (crossings == 0) first = tc;
@@ -739,7 +739,7 @@ static void spring_critical(void)
         for (k = 0; k < 120; ++k) {
             double a;
             step(w);
-            a = ga2d_revolute_joint_angle(w, j);
+            a = (double)ga2d_revolute_joint_angle(w, j);
             if (a < lowest) lowest = a;
         }
         CHECK(lowest >= -8 * u * th0);
@@ -774,8 +774,8 @@ static momenta momenta_of(const ga2d_world *w, const ga2d_body_id *b, int n)
     for (i = 0; i < n; ++i) {
         ga2d_mass md = ga2d_body_mass_data(w, b[i]);
         ga2d_vec v = ga2d_body_velocity(w, b[i]), c = ga2d_body_center(w, b[i]);
-        double mass = md.mass, in = md.inertia, om = ga2d_body_angular_velocity(w, b[i]);
-        double vx = v.x, vy = v.y, cx = c.x, cy = c.y;
+        double mass = (double)md.mass, in = (double)md.inertia, om = (double)ga2d_body_angular_velocity(w, b[i]);
+        double vx = (double)v.x, vy = (double)v.y, cx = (double)c.x, cy = (double)c.y;
         m.px += mass * vx;
         m.py += mass * vy;
         m.l += mass * (cx * vy - cy * vx) + in * om;
@@ -803,11 +803,11 @@ static void momentum_two_bodies(void)
     CHECK_RESULT(ga2d_body_set_angular_velocity(w, b[1], -3), GA2D_OK);
     la = ga2d_body_local_point(w, b[0], at);
     lb = ga2d_body_local_point(w, b[1], at);
-    j = hinge(w, b[0], b[1], la.x, la.y, lb.x, lb.y);
+    j = hinge(w, b[0], b[1], (double)la.x, (double)la.y, (double)lb.x, (double)lb.y);
     /* the local points map back onto the world point (rounding of a turn
        and a shift of coordinates <= 1: 8 u) */
-    CHECK_NEAR(dist(world_point(w, b[0], la.x, la.y), at), 0, 8 * u);
-    CHECK_NEAR(dist(world_point(w, b[1], lb.x, lb.y), at), 0, 8 * u);
+    CHECK_NEAR(dist(world_point(w, b[0], (double)la.x, (double)la.y), at), 0, 8 * u);
+    CHECK_NEAR(dist(world_point(w, b[1], (double)lb.x, (double)lb.y), at), 0, 8 * u);
     m0 = momenta_of(w, b, 2);
     pscale = m0.pscale;
     lscale = m0.lscale;
@@ -819,7 +819,7 @@ static void momentum_two_bodies(void)
         if (m.pscale > pscale) pscale = m.pscale;
         if (m.lscale > lscale) lscale = m.lscale;
         f = ga2d_joint_reaction_force(w, j);
-        fl = hypot(f.x, f.y);
+        fl = hypot((double)f.x, (double)f.y);
         sep = anchor_gap(w, j, la, lb);
         lbound += 2 * SUB * sep * fl * H;
         pbound = SUB * k * 12 * u * (2 * pscale);
@@ -878,7 +878,7 @@ static void hanging_chain(int weighted, int accurate)
     if (weighted) link[CHAIN] = box_body(w, 0, -0.5 * CHAIN - 0.25, 0, 0.25, 0.25, 100 * 0.05 / 0.25);
     jt[0] = hinge(w, p, link[0], 0, 0, 0, 0.25);
     for (i = 1; i < n; ++i) jt[i] = hinge(w, link[i - 1], link[i], 0, -0.25, 0, 0.25);
-    link_mass = ga2d_body_mass_data(w, link[0]).mass;
+    link_mass = (double)ga2d_body_mass_data(w, link[0]).mass;
     for (i = 0; i < n; ++i) {
         double below = 0, inv;
         int k2;
