@@ -67,6 +67,7 @@ void suite_shape_dynamics(void);
 void suite_features(void);
 void suite_settle(void);
 void suite_accepted(void);
+void suite_joints(void);
 
 #ifdef __cplusplus
 }

@@ -94,6 +94,7 @@ int main(int argc, char **argv)
     suite_shape_dynamics();
     suite_features();
     suite_settle();
+    suite_joints();
     suite_accepted();
     suite_determinism();
     suite_snapshot();
