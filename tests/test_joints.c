@@ -6,10 +6,10 @@
    islands and sleep, collide_connected, snapshots and determinism.
 
    dt = 1/60 and 4 substeps throughout (h = 1/240 s), g = 10.  A rigid
-   joint is held by a position feedback of 2 x contact_hertz (90 Hz: 45 is
-   under the quarter of the substep rate) and damping ratio 2, made as the
-   soft step makes every spring (Catto's soft step; make_soft below):
-   omega_s = 2 pi 90, bias rate b = omega_s / (2 zeta + h omega_s), mass
+   joint is held by a position feedback of 60 Hz (under the quarter of the
+   substep rate, which caps it) and damping ratio 2, made as the soft step
+   makes every spring (Catto's soft step; make_soft below):
+   omega_s = 2 pi 60, bias rate b = omega_s / (2 zeta + h omega_s), mass
    scale ms = a / (1 + a), impulse scale 1 / (1 + a), a = h omega_s (2 zeta
    + h omega_s).  Two facts of that feedback are used below:
    - a joint carrying a steady force F over an effective mass m_eff (the
@@ -22,8 +22,7 @@
      separation per substep: the drift rests at w^2 h d / (2 b ms).
 
    With GA2D_TEST_VERBOSE set each scene prints "joints: ..." with its
-   figure and bound.  Tests marked HEADER BUG fail on a defect of the
-   joint code they found (described at the test). */
+   figure and bound.   */
 #include "test.h"
 
 #define DT (1.0 / 60)
@@ -31,7 +30,7 @@
 #define H (DT / SUB)
 #define G 10.0
 #define PI 3.14159265358979323846
-#define JOINT_HERTZ 90.0 /* 2 x the default contact_hertz (45) */
+#define JOINT_HERTZ 60.0 /* the header's GA2D__JOINT_HERTZ, under a quarter of 240 Hz */
 #define JOINT_ZETA 2.0
 
 static int verbose(void)
@@ -849,16 +848,13 @@ static void momentum_two_bodies(void)
    (the load's work F x equals the spring's k x^2 / 2 at the turn, x = 2 F /
    k; damping only lowers it), so every joint's separation stays below
    twice the largest rest value over 3 s.  The same with the accurate
-   setting (8 substeps, contact_hertz 90: joints at 180 Hz, h = 1/480).
-   HEADER BUG: at 4 substeps the joints' 90 Hz feedback (omega_s h = 2.36)
-   makes a straight hanging chain of more than about 11 links unstable:
-   its stretching mode grows from rest (20 links: separations of 2 to 3 cm,
-   the bottom link bouncing 28 cm after 3 s, the chain thrown sideways by
-   50 s; with the weight 2 cm); with the accurate setting (180 Hz at h =
-   1/480, the same omega_s h) the 20-link chain reaches 1e27 m.  Joints at
-   60 Hz (contact_hertz 30, Box2D v3's joint softness) keep 20 and 40 links
-   stable; the limit lies between 80 and 85 Hz at 4 substeps.  These tests
-   fail until the joint feedback is made stable for long chains. */
+   setting (8 substeps: joints at 60 Hz still, h = 1/480).  This test
+   found the joints' first feedback, 2 x contact_hertz (90 Hz, omega_s h =
+   2.36), unstable for straight hanging chains of more than about 11
+   links (20 links: separations of 2 to 3 cm, the bottom link bouncing 28
+   cm after 3 s; accurate, 180 Hz at h = 1/480, 1e27 m); the limit lay
+   between 80 and 85 Hz at 4 substeps, so the feedback is now 60 Hz
+   (Box2D v3's), at most a quarter of the substep rate. */
 #define CHAIN 20
 static void hanging_chain(int weighted, int accurate)
 {
@@ -871,8 +867,8 @@ static void hanging_chain(int weighted, int accurate)
     wd.enable_sleep = 0;
     w = ga2d_world_create(&wd);
     h = DT / wd.substeps;
-    hz = (double)wd.contact_hertz < 0.25 / h ? (double)wd.contact_hertz : 0.25 / h;
-    om = 2 * PI * 2 * hz;
+    hz = JOINT_HERTZ < 0.25 / h ? JOINT_HERTZ : 0.25 / h;
+    om = 2 * PI * hz;
     p = pivot_body(w, 0, 0);
     for (i = 0; i < CHAIN; ++i) link[i] = box_body(w, 0, -0.25 - 0.5 * i, 0, 0.05, 0.25, 1);
     if (weighted) link[CHAIN] = box_body(w, 0, -0.5 * CHAIN - 0.25, 0, 0.25, 0.25, 100 * 0.05 / 0.25);
@@ -1340,10 +1336,10 @@ void suite_joints(void)
     test_run("joints: spring period", spring_period);
     test_run("joints: spring, damping ratio 1", spring_critical);
     test_run("joints: momentum of two joined bodies", momentum_two_bodies);
-    test_run("joints: hanging chain of 20 (HEADER BUG: unstable)", chain_of_twenty);
-    test_run("joints: hanging chain of 20 with a weight of 100 links (HEADER BUG: unstable)", chain_with_weight);
-    test_run("joints: hanging chain of 20, accurate setting (HEADER BUG: unstable)", chain_of_twenty_accurate);
-    test_run("joints: hanging chain of 20 with a weight, accurate setting (HEADER BUG: unstable)", chain_with_weight_accurate);
+    test_run("joints: hanging chain of 20", chain_of_twenty);
+    test_run("joints: hanging chain of 20 with a weight of 100 links", chain_with_weight);
+    test_run("joints: hanging chain of 20, accurate setting", chain_of_twenty_accurate);
+    test_run("joints: hanging chain of 20 with a weight, accurate setting", chain_with_weight_accurate);
     test_run("joints: create errors", create_errors);
     test_run("joints: calls from a locked world", locked_calls);
     test_run("joints: setter errors and stale ids", setter_errors);
