@@ -20,7 +20,8 @@
    period measured (the mean time between the upward zero crossings of
    the angle, each interpolated within its step) against T(a), their
    difference, and the amplitude of the last swing (how much energy the
-   step kept).  The exit status is 0 when every world was built. */
+   step kept).  Last, the bar hanging at rest: the joint's reaction force
+   on it against m g.  The exit status is 0 when every world was built. */
 #define GA2D_IMPLEMENTATION
 #include "ga2d_physics.h"
 #include <math.h>
@@ -123,6 +124,37 @@ static swing run(int rod, double amplitude, double expected_period)
     return out;
 }
 
+/* The bar hanging at rest for 1 s: the joint holds it up with m g (on the
+   bar, upward) and no torque. */
+static int hanging(void)
+{
+    ga2d_world *world = ga2d_world_create(NULL);
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_revolute_joint_def jd = ga2d_default_revolute_joint_def();
+    ga2d_joint_id joint;
+    ga2d_vec f;
+    int i;
+    if (!world) return 1;
+    jd.body_a = ga2d_body_create(world, &bd); /* the pivot, at the origin */
+    bd.type = GA2D_BODY_DYNAMIC;
+    bd.position = ga2d_vec_make(0, (ga2d_real)(-BAR_L / 2));
+    bd.polygon = ga2d_polygon_box((ga2d_real)(BAR_W / 2), (ga2d_real)(BAR_L / 2));
+    jd.body_b = ga2d_body_create(world, &bd);
+    jd.local_anchor_b = ga2d_vec_make(0, (ga2d_real)(BAR_L / 2));
+    joint = ga2d_revolute_joint_create(world, &jd);
+    if (ga2d_joint_id_is_null(joint)) {
+        ga2d_world_destroy(world);
+        return 1;
+    }
+    for (i = 0; i < HZ; ++i) ga2d_world_step(world, (ga2d_real)1 / HZ);
+    f = ga2d_joint_reaction_force(world, joint);
+    printf("hanging at rest: reaction force on the bar (%.6f, %.6f) N, torque %.2g N m; m g = %.6f N\n", (double)f.x,
+           (double)f.y, (double)ga2d_joint_reaction_torque(world, joint),
+           (double)ga2d_body_mass_data(world, jd.body_b).mass * G);
+    ga2d_world_destroy(world);
+    return 0;
+}
+
 static int report(int rod, const double *amplitudes_deg, int n, double t0)
 {
     int i, failed = 0;
@@ -155,5 +187,6 @@ int main(void)
     failed |= report(0, amplitudes, n, bar_t0);
     printf("rod pendulum: a ball on a %.0f m distance joint, T0 = 2 pi sqrt(L / g) = %.5f s\n", ROD_L, rod_t0);
     failed |= report(1, amplitudes, n, rod_t0);
+    failed |= hanging();
     return failed;
 }
