@@ -41,7 +41,7 @@ $(BUILD)/examples/%: examples/%.c $(HEADER) $(wildcard examples/*.h)
 demo: $(BUILD)/examples/pyramid
 	./$(BUILD)/examples/pyramid
 
-# The interactive SDL2 demo (ten scenes, keys 1-9 and 0; drag, throw, toggles; see the file).
+# The interactive SDL2 demo (eleven scenes, keys 1-9, 0 and J; drag, throw, toggles; see the file).
 sdl: examples/sdl_demo.c $(HEADER)
 	@command -v sdl2-config >/dev/null 2>&1 || { echo "make sdl needs SDL2 development files: apt-get install libsdl2-dev"; exit 1; }
 	@mkdir -p $(BUILD)/examples

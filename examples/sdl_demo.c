@@ -1,7 +1,9 @@
 /* sdl_demo.c - an interactive window onto ga2d_physics.h, drawn with SDL2.
 
-   Ten scenes on the number keys; drag a body with the left mouse button (a
-   soft spring pulls it to the cursor); throw a 1 m box with the right button
+   Eleven scenes on the number keys and J; drag a body with the left mouse
+   button (a motor joint from a static body drives the grabbed point to the
+   cursor, with at most DRAG_WEIGHTS times the body's weight); throw a 1 m
+   box with the right button
    (press where it starts, drag to aim, release to throw); switch substeps,
    solver and sleep while it runs and watch the time per step change.
 
@@ -10,6 +12,8 @@
           capsules, boxes and rounded polygons poured into a bin (7), a
           half-pipe of one loop chain (8), a sensor zone counting what
           passes (9), a one-way platform by pre-solve, with hit events (0)
+     J    joints: a bridge of 20 planks on revolute joints under three
+          boxes, and a chain of 12 links holding a heavy ball
      R    reset the scene          P  pause        C  contact points
      S    substeps 1/2/4/8         V  solver: soft step / PGS+Baumgarte / PGS+NGS
      Z    sleep on/off             Esc quit
@@ -25,7 +29,7 @@
      gcc -std=c99 -O2 -I. examples/sdl_demo.c $(sdl2-config --cflags --libs) -lm
 
    Options, for scripted runs (e.g. under Xvfb):
-     --scene N          start in scene N (1-10; 10 is key 0)
+     --scene N          start in scene N (1-11; 10 is key 0, 11 is J)
      --frames N         run N frames, one fixed step each, then quit
      --screenshot FILE  save the last frame as a BMP (default 120 frames)
      --drag-test        grab the top body at frame 20 and pull it 5 m aside, 1.5 m up
@@ -52,7 +56,9 @@
 #define STEP_DT (1.0 / 60.0)
 #define MAX_BODIES 4096
 #define TIMING_WINDOW 60 /* steps in the ms/step moving average */
-#define DRAG_HERTZ 5.0   /* the mouse spring's natural frequency */
+#define DRAG_WEIGHTS 20.0 /* the mouse drag's max force, in the body's weights (m g) */
+#define DRAG_SPIN 5.0     /* its max torque over the body's inertia, rad/s^2: a
+                             spin brake, weak enough to let it swing */
 #define PI_D 3.14159265358979323846
 
 /* ===================================================================== font */
@@ -199,12 +205,13 @@ typedef struct label { ga2d_vec at; char text[32]; } label;
 
 static const int SUBSTEP_CHOICES[] = {1, 2, 4, 8};
 static const char *const SOLVER_NAMES[GA2D_SOLVER_COUNT] = {"SOFT STEP", "PGS+BAUMGARTE", "PGS+NGS"};
-#define SCENES 10
+#define SCENES 11
 static const char *const SCENE_NAMES[SCENES + 1] = {"", "PYRAMID (BASE 20)", "STACK OF 10", "NEWTON'S CRADLE",
                                                     "INCLINE: THREE FRICTIONS", "BOUNCE: THREE RESTITUTIONS",
                                                     "ROLL: BALL AND BOX ON 20 DEGREES", "PILE OF SHAPES",
                                                     "TERRAIN: ONE LOOP CHAIN", "SENSOR ZONE",
-                                                    "ONE-WAY PLATFORM, HIT EVENTS"};
+                                                    "ONE-WAY PLATFORM, HIT EVENTS",
+                                                    "JOINTS: BRIDGE AND CHAIN"};
 
 typedef struct app {
     SDL_Renderer *ren;
@@ -223,13 +230,14 @@ typedef struct app {
     ga2d_body_id bodies[MAX_BODIES];
     int body_count;
 
-    /* left-drag: a spring from a body point to the cursor */
+    /* left-drag: a motor joint from a static body (at the grab point) to
+       the grabbed body, its target moved to the cursor every step */
     ga2d_vec cursor;   /* world */
     int dragging;
     ga2d_body_id grab;
     ga2d_vec grab_local; /* the grabbed point in the body's frame */
-    double spring_k, spring_c, spin_c;
-    ga2d_real grab_mass;
+    ga2d_body_id mouse;  /* the static body: no shape, at the grab point */
+    ga2d_joint_id drag;
 
     /* right-drag: aim a throw */
     int aiming;
@@ -488,6 +496,63 @@ static void load_shape_scene(app *a, int scene)
     }
 }
 
+/* Scene 11 (J): examples/bridge.c's bridge (its joints braked by their
+   motors, at speed 0) under three boxes, and a chain of capsule links
+   hinged to a static point, a heavy ball at its end, let go level. */
+#define BRIDGE_PLANKS 20
+#define CHAIN_LINKS 12
+static void load_joint_scene(app *a)
+{
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_revolute_joint_def jd = ga2d_default_revolute_joint_def();
+    ga2d_capsule link = {{-0.25f, 0}, {0.25f, 0}, 0.08f};
+    ga2d_body_id prev, pivot;
+    int i;
+    add_ground(a, 0.6f);
+    prev = add_box(a, GA2D_BODY_STATIC, -10.25f, 2.5f, 0.25f, 2.5f, 0, 0.6f, 0); /* the posts */
+    jd.enable_motor = 1; /* joint friction: a motor at speed 0 with at most 5 N m */
+    jd.max_motor_torque = 5;
+    for (i = 0; i <= BRIDGE_PLANKS; ++i) {
+        ga2d_vec p = ga2d_vec_make((ga2d_real)(-10 + i), 5);
+        ga2d_body_id next = i < BRIDGE_PLANKS
+                                ? add_box(a, GA2D_BODY_DYNAMIC, (ga2d_real)(-9.5 + i), 5, 0.5f, 0.125f, 0, 0.6f, 0)
+                                : add_box(a, GA2D_BODY_STATIC, 10.25f, 2.5f, 0.25f, 2.5f, 0, 0.6f, 0);
+        jd.body_a = prev;
+        jd.body_b = next;
+        jd.local_anchor_a = ga2d_body_local_point(a->world, prev, p);
+        jd.local_anchor_b = ga2d_body_local_point(a->world, next, p);
+        ga2d_revolute_joint_create(a->world, &jd);
+        prev = next;
+    }
+    for (i = 0; i < 3; ++i) add_box(a, GA2D_BODY_DYNAMIC, (ga2d_real)(-4 + 4 * i), (ga2d_real)(8 + 2 * i), 0.5f, 0.5f, 0, 0.6f, 0);
+
+    jd = ga2d_default_revolute_joint_def(); /* the chain: links 0.5 m apart, leftward from the pivot */
+    pivot = prev = add_body(a, GA2D_BODY_STATIC, -13, 11, 0, ga2d_vec_make(0, 0));
+    for (i = 0; i < CHAIN_LINKS; ++i) {
+        ga2d_body_id next = add_body(a, GA2D_BODY_DYNAMIC, -13.25 - 0.5 * i, 11, 0, ga2d_vec_make(0, 0));
+        ga2d_shape_create_capsule(a->world, next, &sd, &link);
+        jd.body_a = prev;
+        jd.body_b = next;
+        jd.local_anchor_a = ga2d_body_id_equal(prev, pivot) ? ga2d_vec_make(0, 0) : ga2d_vec_make(-0.25f, 0);
+        jd.local_anchor_b = ga2d_vec_make(0.25f, 0);
+        ga2d_revolute_joint_create(a->world, &jd);
+        prev = next;
+    }
+    sd.density = 20; /* the ball: 10 kg, 70 times a link */
+    {
+        ga2d_body_id ball = add_body(a, GA2D_BODY_DYNAMIC, -13 - 0.5 * CHAIN_LINKS - 0.4, 11, 0, ga2d_vec_make(0, 0));
+        add_circle(a, ball, 0.4, &sd);
+        jd.body_a = prev;
+        jd.body_b = ball;
+        jd.local_anchor_a = ga2d_vec_make(-0.25f, 0);
+        jd.local_anchor_b = ga2d_vec_make(0.4f, 0);
+        ga2d_revolute_joint_create(a->world, &jd);
+    }
+    add_label(a, 0, 9.8f, "BRIDGE: 21 REVOLUTE JOINTS");
+    add_label(a, -13, 12.2f, "CHAIN");
+    a->cam = camera_fit(-21, -1.5, 12, 12.5);
+}
+
 /* Scenes 7, 9 and 10 add bodies as they run: the pile's rows of six every
    0.15 s, a ball over the sensor every 0.5 s, a ball thrown up under the
    platform every 0.6 s. */
@@ -552,6 +617,10 @@ static void scene_after_step(app *a)
         if (a->hits > 0)
             snprintf(a->status, sizeof a->status, "HIT EVENTS %d   LAST: %.2f M/S ON THE %s", a->hits, a->last_hit,
                      a->last_hit_on_platform ? "PLATFORM" : "GROUND");
+    } else if (a->scene == 11) {
+        ga2d_world_counters wc = ga2d_world_get_counters(a->world);
+        snprintf(a->status, sizeof a->status, "JOINTS %d   SOLVED IN THE LAST STEP %d (NONE WHEN ASLEEP)", wc.joint_count,
+                 wc.joints_solved);
     }
 }
 
@@ -646,6 +715,7 @@ static void load_scene(app *a, int scene)
         a->cam = camera_fit(-8, -1.5, 8, 10.5);
         break;
     }
+    case 11: load_joint_scene(a); break;
     default: load_shape_scene(a, scene); break;
     }
 }
@@ -716,61 +786,60 @@ static ga2d_body_id pick_body(const app *a, ga2d_vec p)
     return q.hit;
 }
 
-/* Grab the body under world point p.  The spring is tuned to the mass the
-   cursor feels at the grab point, m_eff = 1 / (1/m + |r|^2 / I) (the
-   smallest over directions): k = m_eff w^2, c = 2 m_eff w with w = 2 pi 5 Hz
-   is then critically damped at 5 Hz there, and stays stable with the force
-   held over a whole 1/60 s step (c dt / m_eff = 1.05 < 2) even at a corner,
-   where m_eff of a box is a quarter of m. */
+/* Grab the body under world point p: a static body with no shape is
+   made there, and a motor joint from it to the grabbed point, whose
+   target (linear_offset, from the static body's anchor) apply_drag moves
+   to the cursor.  Its force is capped at DRAG_WEIGHTS times the body's
+   weight, so a drag lifts what it holds but cannot fling it through the
+   scene; its torque at DRAG_SPIN times the inertia, with the angle target
+   kept at the body's own angle: a brake on spin only. */
 static void start_drag(app *a, ga2d_vec p)
 {
+    ga2d_body_def bd = ga2d_default_body_def(); /* static, no shape */
+    ga2d_motor_joint_def jd = ga2d_default_motor_joint_def();
     ga2d_body_id id = pick_body(a, p);
     ga2d_mass md;
-    ga2d_vec r;
-    double inv_m, omega = 2 * PI_D * DRAG_HERTZ, m_eff;
     if (ga2d_body_id_is_null(id)) return;
     md = ga2d_body_mass_data(a->world, id);
-    r = ga2d_vec_sub(p, ga2d_body_center(a->world, id));
-    inv_m = 1.0 / (double)md.mass;
-    if (md.inertia > 0) inv_m += (double)ga2d_vec_length_sq(r) / (double)md.inertia;
-    m_eff = 1.0 / inv_m;
-    a->grab = id;
-    a->grab_local = ga2d_transform_apply_inv(ga2d_body_transform(a->world, id), p);
-    a->grab_mass = md.mass;
-    a->spring_k = m_eff * omega * omega;
-    a->spring_c = 2.0 * m_eff * omega;
-    a->spin_c = 2.0 * (double)md.inertia; /* a light spin drag: 2 /s */
-    a->dragging = 1;
-    ga2d_body_set_awake(a->world, id, 1);
-}
-
-/* F = k (cursor - grab point) - c v(grab point), at the grab point, capped at
-   100 g of the body's mass; called before every step (forces last one step). */
-static void apply_drag(app *a)
-{
-    ga2d_transform x;
-    ga2d_vec gp, v, f;
-    double fx, fy, len, cap;
-    if (!a->dragging) return;
-    if (!ga2d_body_is_valid(a->world, a->grab)) {
-        a->dragging = 0;
+    bd.position = p;
+    a->mouse = ga2d_body_create(a->world, &bd);
+    jd.body_a = a->mouse;
+    jd.body_b = id;
+    jd.local_anchor_b = ga2d_body_local_point(a->world, id, p); /* A's anchor: its origin, p */
+    jd.angular_offset = ga2d_body_angle(a->world, id);
+    jd.max_force = (ga2d_real)(DRAG_WEIGHTS * (double)md.mass * (double)ga2d_vec_length(ga2d_world_gravity(a->world)));
+    jd.max_torque = (ga2d_real)(DRAG_SPIN * (double)md.inertia);
+    a->drag = ga2d_motor_joint_create(a->world, &jd); /* wakes the body */
+    if (ga2d_joint_id_is_null(a->drag)) {
+        ga2d_body_destroy(a->world, a->mouse);
         return;
     }
-    x = ga2d_body_transform(a->world, a->grab);
-    gp = ga2d_transform_apply(x, a->grab_local);
-    v = ga2d_body_velocity_at(a->world, a->grab, gp);
-    fx = a->spring_k * (double)(a->cursor.x - gp.x) - a->spring_c * (double)v.x;
-    fy = a->spring_k * (double)(a->cursor.y - gp.y) - a->spring_c * (double)v.y;
-    len = sqrt(fx * fx + fy * fy);
-    cap = 1000.0 * (double)a->grab_mass;
-    if (len > cap) {
-        fx *= cap / len;
-        fy *= cap / len;
+    a->grab = id;
+    a->grab_local = jd.local_anchor_b;
+    a->dragging = 1;
+}
+
+/* On release (or when the grabbed body is gone): the joint, then its
+   static body.  (Destroying the body alone would take the joint with it.) */
+static void end_drag(app *a)
+{
+    if (!a->dragging) return;
+    a->dragging = 0;
+    ga2d_joint_destroy(a->world, a->drag); /* STALE_ID if the grabbed body was destroyed: fine */
+    ga2d_body_destroy(a->world, a->mouse);
+}
+
+/* Before every step: the joint's target to the cursor, its angle target
+   to the body's angle (so the torque only brakes spin). */
+static void apply_drag(app *a)
+{
+    if (!a->dragging) return;
+    if (!ga2d_joint_is_valid(a->world, a->drag)) {
+        end_drag(a);
+        return;
     }
-    f = ga2d_vec_make((ga2d_real)fx, (ga2d_real)fy);
-    ga2d_body_apply_force(a->world, a->grab, f, gp);
-    ga2d_body_apply_torque(a->world, a->grab,
-                           (ga2d_real)(-a->spin_c * (double)ga2d_body_angular_velocity(a->world, a->grab)));
+    ga2d_motor_joint_set_linear_offset(a->world, a->drag, ga2d_vec_sub(a->cursor, ga2d_body_position(a->world, a->mouse)));
+    ga2d_motor_joint_set_angular_offset(a->world, a->drag, ga2d_body_angle(a->world, a->grab));
 }
 
 /* A new 1 m box at p with velocity v. */
@@ -801,7 +870,7 @@ static void cull_fallen(app *a)
         ga2d_body_id id = a->bodies[i];
         if (!ga2d_body_is_valid(a->world, id)) continue;
         if (ga2d_body_center(a->world, id).y < -40) {
-            if (a->dragging && ga2d_body_id_equal(id, a->grab)) a->dragging = 0;
+            if (a->dragging && ga2d_body_id_equal(id, a->grab)) end_drag(a);
             ga2d_body_destroy(a->world, id);
             continue;
         }
@@ -1006,7 +1075,7 @@ static void draw_frame(app *a)
         draw_text_shadowed(r, (int)s.x - text_width(a->labels[i].text, 2) / 2, (int)s.y, 2, a->labels[i].text, yellow);
     }
 
-    if (a->dragging) { /* the spring: grab point to cursor */
+    if (a->dragging) { /* the drag: grab point to cursor */
         ga2d_vec gp = ga2d_transform_apply(ga2d_body_transform(a->world, a->grab), a->grab_local);
         SDL_FPoint s = to_screen(&a->cam, gp), e = to_screen(&a->cam, a->cursor);
         SDL_SetRenderDrawColor(r, 255, 255, 255, 255);
@@ -1045,7 +1114,7 @@ static void draw_frame(app *a)
     draw_text(r, 10, 32, 2, line, white);
     if (a->status[0]) draw_text_shadowed(r, 10, HUD_TOP + 4, 2, a->status, yellow);
     draw_text(r, 10, WINDOW_H - HUD_BOTTOM + 8, 2,
-              "1-9, 0 SCENE  R RESET  LEFT DRAG: PULL  RIGHT DRAG: THROW A BOX  P PAUSE  ESC QUIT", dim);
+              "1-9, 0, J SCENE  R RESET  LEFT DRAG: PULL  RIGHT DRAG: THROW A BOX  P PAUSE  ESC QUIT", dim);
 }
 
 /* Saves what the renderer drew (before SDL_RenderPresent) as a BMP. */
@@ -1067,6 +1136,7 @@ static void on_key(app *a, SDL_Keycode k, int *running)
 {
     if (k >= SDLK_1 && k <= SDLK_9) load_scene(a, (int)(k - SDLK_0));
     if (k == SDLK_0) load_scene(a, 10);
+    if (k == SDLK_j) load_scene(a, 11);
     switch (k) {
     case SDLK_ESCAPE: *running = 0; break;
     case SDLK_r: load_scene(a, a->scene); break;
@@ -1109,7 +1179,7 @@ static void on_event(app *a, const SDL_Event *e, int *running)
         break;
     case SDL_MOUSEBUTTONUP:
         a->cursor = to_world(&a->cam, e->button.x, e->button.y);
-        if (e->button.button == SDL_BUTTON_LEFT) a->dragging = 0;
+        if (e->button.button == SDL_BUTTON_LEFT) end_drag(a);
         if (e->button.button == SDL_BUTTON_RIGHT && a->aiming) {
             a->aiming = 0;
             throw_box(a, a->aim_from, throw_velocity(a->aim_from, a->cursor));
@@ -1155,7 +1225,7 @@ static void fake_mouse(app *a, Uint32 type, Uint8 button, ga2d_vec world, int *r
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: sdl_demo [--scene 1-10] [--frames N] [--screenshot FILE.bmp] [--drag-test]\n"
+    fprintf(stderr, "usage: sdl_demo [--scene 1-11] [--frames N] [--screenshot FILE.bmp] [--drag-test]\n"
                     "                [--throw-test] [--substeps 1|2|4|8] [--solver soft|baumgarte|ngs]\n"
                     "                [--no-sleep] [--contacts]\n");
     return 2;

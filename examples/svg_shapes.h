@@ -248,6 +248,7 @@ SVGW_FN void svgs_record(svgs *s, const ga2d_world *w)
     d.circle = svgs__circle;
     d.capsule = svgs__capsule;
     d.segment = svgs__segment;
+    d.draw_joints = 0; /* a joint's lines move: only the still segments are kept */
     d.context = s;
     s->world = w;
     if (ga2d_world_draw(w, &d) != GA2D_OK) s->base.failed = 1;
