@@ -1599,23 +1599,23 @@ static void snapshot_each_kind(void)
 
 void suite_joints_kinds(void)
 {
-    test_run("joint kinds: distance rod pendulum", distance_rod_pendulum);
-    test_run("joint kinds: distance spring period", distance_spring_period);
-    test_run("joint kinds: distance spring, damping ratio 1", distance_spring_critical);
-    test_run("joint kinds: distance rope", distance_rope);
-    test_run("joint kinds: distance motor", distance_motor);
-    test_run("joint kinds: weld cantilever of 5", weld_cantilever);
-    test_run("joint kinds: soft weld", weld_soft);
-    test_run("joint kinds: motor joint holds a pose", motor_joint_holds);
-    test_run("joint kinds: motor joint too weak", motor_joint_too_weak);
-    test_run("joint kinds: prismatic slide", prismatic_slide);
-    test_run("joint kinds: prismatic limits", prismatic_limits);
-    test_run("joint kinds: prismatic motor", prismatic_motor);
-    test_run("joint kinds: prismatic spring", prismatic_spring);
-    test_run("joint kinds: wheel suspension", wheel_suspension);
-    test_run("joint kinds: car on a slope", wheel_car_on_slope);
-    test_run("joint kinds: momentum of each kind", momentum_each_kind);
-    test_run("joint kinds: create errors", create_errors);
-    test_run("joint kinds: setter errors", setter_errors);
-    test_run("joint kinds: snapshot with each kind", snapshot_each_kind);
+    test_run("joints (kinds): distance rod pendulum", distance_rod_pendulum);
+    test_run("joints (kinds): distance spring period", distance_spring_period);
+    test_run("joints (kinds): distance spring, damping ratio 1", distance_spring_critical);
+    test_run("joints (kinds): distance rope", distance_rope);
+    test_run("joints (kinds): distance motor", distance_motor);
+    test_run("joints (kinds): weld cantilever of 5", weld_cantilever);
+    test_run("joints (kinds): soft weld", weld_soft);
+    test_run("joints (kinds): motor joint holds a pose", motor_joint_holds);
+    test_run("joints (kinds): motor joint too weak", motor_joint_too_weak);
+    test_run("joints (kinds): prismatic slide", prismatic_slide);
+    test_run("joints (kinds): prismatic limits", prismatic_limits);
+    test_run("joints (kinds): prismatic motor", prismatic_motor);
+    test_run("joints (kinds): prismatic spring", prismatic_spring);
+    test_run("joints (kinds): wheel suspension", wheel_suspension);
+    test_run("joints (kinds): car on a slope", wheel_car_on_slope);
+    test_run("joints (kinds): momentum of each kind", momentum_each_kind);
+    test_run("joints (kinds): create errors", create_errors);
+    test_run("joints (kinds): setter errors", setter_errors);
+    test_run("joints (kinds): snapshot with each kind", snapshot_each_kind);
 }
