@@ -68,6 +68,7 @@ void suite_features(void);
 void suite_settle(void);
 void suite_accepted(void);
 void suite_joints(void);
+void suite_joints_kinds(void);
 
 #ifdef __cplusplus
 }

@@ -95,6 +95,7 @@ int main(int argc, char **argv)
     suite_features();
     suite_settle();
     suite_joints();
+    suite_joints_kinds();
     suite_accepted();
     suite_determinism();
     suite_snapshot();
