@@ -8279,9 +8279,17 @@ GA2D_API ga2d_real ga2d_joint_reaction_torque(const ga2d_world *w, ga2d_joint_id
    qa~ qb: its angle is angle(B) - angle(A) (2D rotors commute). */
 static ga2d_rotor ga2d__relative_rotor(ga2d_rotor qa, ga2d_rotor qb) { return ga2d_rotor_mul(ga2d_rotor_inverse(qa), qb); }
 
-/* An angle moved into (-pi, pi]. */
+/* An angle moved into (-pi, pi].  Past two turns it is first cut to
+   the exact remainder (fmod is exact): steps of 2 pi alone never end
+   once 2 pi is below the angle's rounding step (2^26 in float, 2^55 in
+   double), and take millions of turns well before that; a revolute or
+   weld joint's reference angle, or a motor joint's angular offset, may
+   be any finite number (fuzz finding: a reference angle of 1e30 hung the
+   step and ga2d_revolute_joint_angle).  Within two turns the bits are
+   the steps' as before. */
 static ga2d_real ga2d__wrap_angle(ga2d_real a)
 {
+    if (!(GA2D__FABS(a) <= 4 * GA2D__PI)) a = (ga2d_real)fmod((double)a, 2 * 3.14159265358979323846);
     while (a > GA2D__PI) a -= 2 * GA2D__PI;
     while (a <= -GA2D__PI) a += 2 * GA2D__PI;
     return a;
