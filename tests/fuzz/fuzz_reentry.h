@@ -11,8 +11,9 @@
    polygons, a counting allocator that may be told to fail, maybe a force
    field), then runs a sequence of outer operations: steps, draws, body
    creation and destruction, snapshot save and load, body and world
-   setters, compaction, the integrator switch (RK4 allocates), and
-   ga2d_world_destroy.  In each callback the input picks up to
+   setters, compaction, the integrator switch (RK4 allocates), joint
+   makers (each kind; the pool grows through the allocator), joint
+   destroys and setters, and ga2d_world_destroy.  In each callback the input picks up to
    FR_MAX_CALLS calls from the whole API (see fr_call), ga2d_world_destroy
    among them.  A world destroyed from a callback is freed when the outer
    call returns; the harness then builds another from the rest of the
@@ -40,6 +41,15 @@
        when the outer call returns (live bytes 0) and never used again;
        from a free hook of the world's own destruction the world reads as
        empty;
+     - joints from a callback: every maker (each kind, any def, a NULL
+       one) answers LOCKED (INVALID_ARGUMENT for NULL) with the null id,
+       ga2d_joint_destroy and every setter LOCKED, and nothing changes
+       (the joint count and snapshot size with the rest); the joint
+       getters read a live joint's bodies live and its readings finite, a
+       stale id zero; a draw calls the segment callback three times a
+       joint; an outer joint call refused leaves the world's bytes as they
+       were, and with the twin on, the same call there answers the same
+       and leaves the same world;
      - getters read finite values for every live id, at every callback;
        the body count seen from a callback is the count of the live ids
        the harness made;
@@ -93,6 +103,7 @@
 #define FR_MAX_LOG 2048 /* force calls per step, for the twin's replay */
 #define FR_WORK_BUDGET 250000L
 #define FR_SCRATCH 512
+#define FR_MAX_JOINTS 32
 
 #ifdef FUZZ_VERBOSE
 #define FR_TRACE(args) (fprintf args)
@@ -112,7 +123,8 @@ enum {
     FR_OP_SAVE,
     FR_OP_LOAD,
     FR_OP_WORLD,
-    FR_OP_DESTROY
+    FR_OP_DESTROY,
+    FR_OP_JOINT
 };
 
 typedef struct fr_buf { unsigned char *p; size_t n, cap; } fr_buf;
@@ -141,6 +153,9 @@ typedef struct fr_state {
     /* every id the harness made (all bodies there are) */
     ga2d_body_id ids[FR_MAX_IDS];
     int nids;
+    /* every joint id the harness made */
+    ga2d_joint_id jids[FR_MAX_JOINTS];
+    int njids;
     int field_on, substeps, rk4;
     long work;
     /* the twin */
@@ -199,6 +214,7 @@ static ga2d_body_id fr_id(fr_state *s)
 }
 
 static int fr_finite_rotor(ga2d_rotor q) { return fz_finite((double)q.c) && fz_finite((double)q.s); }
+static void fr_check_joint(const fr_state *s, ga2d_joint_id id);
 
 /* ------------------------------------------------------ what is seen */
 /* Everything the getters say about one body. */
@@ -340,6 +356,8 @@ static void fr_check_world(fr_state *s)
     FUZZ_CHECK(c.moving_body_count >= 0 && c.moving_body_count <= c.body_count);
     FUZZ_CHECK(c.awake_body_count >= 0 && c.pair_count >= 0 && c.touching_count >= 0 && c.touching_count <= c.pair_count);
     FUZZ_CHECK(fz_finite(ga2d_world_time(s->w)) && fz_finite_vec(ga2d_world_gravity(s->w)));
+    FUZZ_CHECK(c.joint_count >= 0 && c.joints_solved >= 0); /* joints_solved: the last step's */
+    for (i = 0; i < s->njids; ++i) fr_check_joint(s, s->jids[i]);
     for (i = 0; i < s->nids; ++i) {
         fr_body b;
         fr_take_body(s->w, s->ids[i], &b);
@@ -349,6 +367,174 @@ static void fr_check_world(fr_state *s)
         if (b.valid) fr_check_live(s, &b);
         else fr_check_dead(&b);
     }
+}
+
+/* --------------------------------------------------------------- joints */
+/* A tracked joint id (live or not), the null id, a forged one, or a
+   tracked one with its generation off by one. */
+static ga2d_joint_id fr_jid(fr_state *s)
+{
+    unsigned k = fz_u8(&s->rd);
+    ga2d_joint_id id = ga2d_joint_id_null();
+    if (s->njids > 0 && k < 200) return s->jids[k % (unsigned)s->njids];
+    if (k < 215) return id;
+    if (k < 240 || s->njids == 0) {
+        id.index1 = (k & 1) ? 0xFFFFFFFFu : 1 + fz_u8(&s->rd) % 16;
+        id.generation = fz_u32(&s->rd);
+    } else {
+        id = s->jids[fz_u8(&s->rd) % (unsigned)s->njids];
+        id.generation += (k & 1) ? 1u : 0xFFFFFFFFu;
+    }
+    return id;
+}
+
+/* One joint call, decoded before it is made, so that the twin gets the
+   same: a maker (kind 0-3: revolute, distance, weld, motor), a destroy,
+   or one of the 21 setters. */
+typedef struct fr_jcall {
+    int op; /* 0 make, 1 destroy, 2 set */
+    int kind, which, flags, on, null_def;
+    ga2d_body_id a, b;
+    ga2d_joint_id id;
+    ga2d_vec la, lb, v;
+    ga2d_real x[6];
+} fr_jcall;
+
+static ga2d_real fr_jreal(fr_state *s, double scale, int wild) { return wild ? fz_real(&s->rd, scale) : fr_small(s, scale); }
+
+static void fr_jcall_read(fr_state *s, fr_jcall *c, int op)
+{
+    unsigned k = fz_u8(&s->rd);
+    int wild = k >= 208, i;
+    memset(c, 0, sizeof *c);
+    c->op = op;
+    c->kind = (int)(k % 4);
+    c->which = fz_pick(&s->rd, 21);
+    c->flags = (int)fz_u8(&s->rd);
+    c->on = (c->flags & 3) - 1;
+    c->null_def = (c->flags & 0xF0) == 0xF0;
+    c->a = fr_id(s);
+    c->b = (c->flags & 0x1C) == 0 ? c->a : fr_id(s);
+    c->id = fr_jid(s);
+    c->la = fr_vec(s, 0.25, wild && (c->flags & 4));
+    c->lb = fr_vec(s, 0.25, wild && (c->flags & 8));
+    c->v = fr_vec(s, 1, wild);
+    for (i = 0; i < 6; ++i) c->x[i] = fr_jreal(s, 1, wild && (fz_u8(&s->rd) & 1));
+    /* mostly valid numbers: magnitudes where they must not be negative,
+       limits in order */
+    if (!wild) {
+        for (i = 0; i < 6; ++i) c->x[i] = fz_narrow(fabs((double)c->x[i]));
+        if (c->x[1] > c->x[2]) {
+            ga2d_real t = c->x[1];
+            c->x[1] = c->x[2];
+            c->x[2] = t;
+        }
+        c->x[1] = -c->x[1];
+        if (!(c->x[0] > 0)) c->x[0] = 1;
+        if (c->x[3] > 1) c->x[3] = 1;
+    }
+}
+
+/* Makes the call on world w: its result, *out the joint made. */
+static ga2d_result fr_jcall_do(ga2d_world *w, const fr_jcall *c, ga2d_joint_id *out)
+{
+    const ga2d_real *x = c->x;
+    ga2d_joint_id id = c->id;
+    *out = ga2d_joint_id_null();
+    if (c->op == 0) {
+        switch (c->kind) {
+        case 0: {
+            ga2d_revolute_joint_def d = ga2d_default_revolute_joint_def();
+            d.body_a = c->a, d.body_b = c->b, d.local_anchor_a = c->la, d.local_anchor_b = c->lb;
+            d.collide_connected = (c->flags >> 5) & 1;
+            d.enable_limit = (c->flags >> 6) & 1, d.enable_motor = c->flags >> 7, d.enable_spring = c->flags & 1;
+            d.reference_angle = x[5], d.lower_angle = x[1], d.upper_angle = x[2];
+            d.motor_speed = x[5], d.max_motor_torque = x[4], d.hertz = x[3], d.damping_ratio = x[0];
+            return ga2d_revolute_joint_create_checked(w, c->null_def ? NULL : &d, out);
+        }
+        case 1: {
+            ga2d_distance_joint_def d = ga2d_default_distance_joint_def();
+            d.body_a = c->a, d.body_b = c->b, d.local_anchor_a = c->la, d.local_anchor_b = c->lb;
+            d.collide_connected = (c->flags >> 5) & 1;
+            d.length = x[0], d.enable_limit = (c->flags >> 6) & 1, d.min_length = -x[1], d.max_length = x[2];
+            d.enable_spring = c->flags >> 7, d.hertz = x[3], d.damping_ratio = x[4];
+            d.enable_motor = c->flags & 1, d.motor_speed = x[5], d.max_motor_force = x[4];
+            return ga2d_distance_joint_create_checked(w, c->null_def ? NULL : &d, out);
+        }
+        case 2: {
+            ga2d_weld_joint_def d = ga2d_default_weld_joint_def();
+            d.body_a = c->a, d.body_b = c->b, d.local_anchor_a = c->la, d.local_anchor_b = c->lb;
+            d.collide_connected = (c->flags >> 5) & 1;
+            d.reference_angle = x[5], d.linear_hertz = (c->flags & 64) ? x[3] : 0, d.angular_hertz = (c->flags & 128) ? x[4] : 0;
+            d.linear_damping_ratio = x[0], d.angular_damping_ratio = x[2];
+            return ga2d_weld_joint_create_checked(w, c->null_def ? NULL : &d, out);
+        }
+        default: {
+            ga2d_motor_joint_def d = ga2d_default_motor_joint_def();
+            d.body_a = c->a, d.body_b = c->b, d.local_anchor_a = c->la, d.local_anchor_b = c->lb;
+            d.collide_connected = (c->flags >> 5) & 1;
+            d.linear_offset = c->v, d.angular_offset = x[5], d.max_force = x[4] * 100, d.max_torque = x[2] * 10;
+            d.correction_factor = x[3];
+            return ga2d_motor_joint_create_checked(w, c->null_def ? NULL : &d, out);
+        }
+        }
+    }
+    if (c->op == 1) return ga2d_joint_destroy(w, id);
+    switch (c->which) {
+    case 0: return ga2d_revolute_joint_enable_motor(w, id, c->on);
+    case 1: return ga2d_revolute_joint_set_motor_speed(w, id, x[5]);
+    case 2: return ga2d_revolute_joint_set_max_motor_torque(w, id, x[4]);
+    case 3: return ga2d_revolute_joint_enable_limit(w, id, c->on);
+    case 4: return ga2d_revolute_joint_set_limits(w, id, x[1], x[2]);
+    case 5: return ga2d_revolute_joint_enable_spring(w, id, c->on);
+    case 6: return ga2d_revolute_joint_set_spring(w, id, x[3], x[0]);
+    case 7: return ga2d_distance_joint_set_length(w, id, x[0]);
+    case 8: return ga2d_distance_joint_enable_limit(w, id, c->on);
+    case 9: return ga2d_distance_joint_set_length_range(w, id, -x[1], x[2]);
+    case 10: return ga2d_distance_joint_enable_spring(w, id, c->on);
+    case 11: return ga2d_distance_joint_set_spring(w, id, x[3], x[4]);
+    case 12: return ga2d_distance_joint_enable_motor(w, id, c->on);
+    case 13: return ga2d_distance_joint_set_motor_speed(w, id, x[5]);
+    case 14: return ga2d_distance_joint_set_max_motor_force(w, id, x[4]);
+    case 15: return ga2d_weld_joint_set_linear_spring(w, id, x[3], x[0]);
+    case 16: return ga2d_weld_joint_set_angular_spring(w, id, x[4], x[2]);
+    case 17: return ga2d_motor_joint_set_linear_offset(w, id, c->v);
+    case 18: return ga2d_motor_joint_set_angular_offset(w, id, x[5]);
+    case 19: return ga2d_motor_joint_set_max_force(w, id, x[4]);
+    default: return ga2d_motor_joint_set_max_torque(w, id, x[2]);
+    }
+}
+
+/* What the getters say of a joint id: a live joint's bodies live, its
+   readings finite where they must be; a stale id reads zero. */
+static void fr_check_joint(const fr_state *s, ga2d_joint_id id)
+{
+    const ga2d_world *w = s->w;
+    int valid = ga2d_joint_is_valid(w, id), type = (int)ga2d_joint_get_type(w, id);
+    ga2d_body_id a = ga2d_joint_body_a(w, id), b = ga2d_joint_body_b(w, id);
+    ga2d_vec f = ga2d_joint_reaction_force(w, id);
+    ga2d_real t = ga2d_joint_reaction_torque(w, id), len = ga2d_distance_joint_current_length(w, id);
+    ga2d_real angle = ga2d_revolute_joint_angle(w, id);
+    if (!valid) {
+        FUZZ_CHECK(type == GA2D_JOINT_TYPE_COUNT && ga2d_body_id_is_null(a) && ga2d_body_id_is_null(b));
+        FUZZ_CHECK(f.x == 0 && f.y == 0 && t == 0 && len == 0 && angle == 0);
+        FUZZ_CHECK(ga2d_revolute_joint_speed(w, id) == 0 && ga2d_revolute_joint_motor_torque(w, id) == 0);
+        FUZZ_CHECK(ga2d_joint_user_data(w, id) == NULL && ga2d_joint_collide_connected(w, id) == 0);
+        return;
+    }
+    FUZZ_CHECK(type >= 0 && type < GA2D_JOINT_TYPE_COUNT);
+    FUZZ_CHECK(ga2d_body_is_valid(w, a) && ga2d_body_is_valid(w, b) && !ga2d_body_id_equal(a, b));
+    FUZZ_CHECK(ga2d_body_get_type(w, a) == GA2D_BODY_DYNAMIC || ga2d_body_get_type(w, b) == GA2D_BODY_DYNAMIC);
+    FUZZ_CHECK(fz_finite((double)angle) && fz_finite((double)len) && len >= 0);
+    FUZZ_CHECK(ga2d_joint_user_data(w, id) == NULL);
+}
+
+static void fr_remember_joint(fr_state *s, ga2d_joint_id id)
+{
+    int i;
+    for (i = 0; i < s->njids; ++i)
+        if (ga2d_joint_id_equal(s->jids[i], id)) return;
+    if (s->njids < FR_MAX_JOINTS) s->jids[s->njids++] = id;
 }
 
 /* ------------------------------------------------------ the callbacks */
@@ -776,6 +962,24 @@ static void fr_call(fr_state *s, int cb)
         if (cb == FR_CB_FORCE) fr_log_force(s, 2, id, b0.center, b0.center, t, r);
         break;
     }
+    /* ---- joints: made, destroyed, set from a callback: refused */
+    case 53: case 54: case 55: case 56: case 57: {
+        fr_jcall c;
+        ga2d_joint_id made;
+        int op = sel % FR_NCALLS - 53;
+        fr_jcall_read(s, &c, op < 2 ? 0 : op == 2 ? 1 : 2);
+        r = fr_jcall_do(w, &c, &made);
+        FUZZ_CHECK(ga2d_joint_id_is_null(made));
+        mut = c.op == 0 && c.null_def ? 2 : 1;
+        break;
+    }
+    case 58: fr_check_joint(s, fr_jid(s)); break;
+    case 59: {
+        ga2d_vec p = fr_vec(s, 4, fz_u8(&s->rd) < 64), l = ga2d_body_local_point(w, id, p);
+        if (!b0.valid) FUZZ_CHECK(l.x == 0 && l.y == 0);
+        else if (fz_finite_vec(p) && fabs((double)p.x) + fabs((double)p.y) < 1e-3 * FZ_REAL_MAX) FUZZ_CHECK(fz_finite_vec(l));
+        break;
+    }
     /* ---- the rest */
     case 51:
         if (fz_u8(&s->rd) < 64) fr_other_world(s);
@@ -1027,6 +1231,10 @@ static void fr_step(fr_state *s)
     alive = fr_end(s);
     if (!alive) return;
     fr_check_ids_kept(s); /* a step neither makes nor destroys bodies */
+    if (!refused) {
+        ga2d_world_counters c = ga2d_world_get_counters(s->w);
+        FUZZ_CHECK(c.joints_solved <= c.joint_count);
+    }
     if (refused) {
         fr_compare(s, 0, 0);
         return;
@@ -1073,6 +1281,8 @@ static void fr_draw(fr_state *s)
         FUZZ_CHECK(s->cb_count[FR_CB_AABB] == s->count_before);
         FUZZ_CHECK(s->cb_count[FR_CB_POINT] == s->count_before);
         FUZZ_CHECK(s->cb_count[FR_CB_CONTACT] == points);
+        /* each joint: three segments (A's centre, the anchors, B's centre) */
+        FUZZ_CHECK(s->cb_count[FR_CB_SEGMENT] == 3 * ga2d_world_get_counters(s->w).joint_count);
     }
     if (!fr_end(s)) return;
     fr_check_ids_kept(s);
@@ -1213,6 +1423,47 @@ static void fr_body_op(fr_state *s)
     if (!valid) FUZZ_CHECK(r == GA2D_ERR_STALE_ID);
     if (!fr_end(s)) return;
     FUZZ_CHECK(ga2d_world_get_counters(s->w).body_count == s->count_before - (op == 14 && r == GA2D_OK));
+}
+
+/* An outer joint call: allocations call in (a maker grows the pool).  A
+   refused call leaves the world's bytes as they were; with the twin, the
+   same call there gives the same answer and the same world. */
+static void fr_joint(fr_state *s)
+{
+    fr_jcall c;
+    ga2d_joint_id made, tmade;
+    ga2d_result r, rt;
+    int twin, joints;
+    fr_jcall_read(s, &c, fz_pick(&s->rd, 4) == 0 ? 1 : fz_pick(&s->rd, 2) ? 0 : 2);
+    joints = ga2d_world_get_counters(s->w).joint_count;
+    fr_prepare(s);
+    fr_begin(s, FR_OP_JOINT);
+    r = fr_jcall_do(s->w, &c, &made);
+    FR_TRACE((stderr, "joint op %d kind %d which %d on %u/%u (bodies %u %u): %s -> %u (%d allocs)\n", c.op, c.kind, c.which,
+              c.id.index1, c.id.generation, c.a.index1, c.b.index1, ga2d_result_string(r), made.index1, s->cb_count[FR_CB_ALLOC]));
+    FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT && r != GA2D_ERR_LOCKED);
+    if (c.op == 0) FUZZ_CHECK((r == GA2D_OK) == !ga2d_joint_id_is_null(made));
+    if (c.null_def && c.op == 0) FUZZ_CHECK(r == GA2D_ERR_INVALID_ARGUMENT);
+    if (r == GA2D_ERR_OUT_OF_MEMORY) FUZZ_CHECK(fr_failed(s));
+    twin = s->twin_ready && !fr_failed(s) && !s->destroy_requested;
+    if (!fr_end(s)) return;
+    fr_check_ids_kept(s); /* a joint call makes and destroys no body */
+    if (r != GA2D_OK) {
+        FUZZ_CHECK(ga2d_world_get_counters(s->w).joint_count == joints);
+        fr_compare(s, 0, 0); /* refused: as it was */
+        return;
+    }
+    FUZZ_CHECK(ga2d_world_get_counters(s->w).joint_count == joints + (c.op == 0) - (c.op == 1));
+    if (c.op == 0) {
+        static const int type_of[4] = {GA2D_JOINT_REVOLUTE, GA2D_JOINT_DISTANCE, GA2D_JOINT_WELD, GA2D_JOINT_MOTOR};
+        FUZZ_CHECK(ga2d_joint_is_valid(s->w, made) && (int)ga2d_joint_get_type(s->w, made) == type_of[c.kind]);
+        fr_remember_joint(s, made);
+    }
+    fr_check_joint(s, c.op == 0 ? made : c.id);
+    if (!twin) return;
+    rt = fr_jcall_do(s->twin, &c, &tmade);
+    FUZZ_CHECK(rt == r && ga2d_joint_id_equal(made, tmade));
+    fr_compare(s, 1, 0);
 }
 
 /* ------------------------------------------------------------ snapshots */
@@ -1483,7 +1734,8 @@ static int fuzz_reentry_one(const uint8_t *data, size_t size)
                 fr_begin(s, FR_OP_DESTROY);
                 ga2d_world_destroy(s->w);
                 fr_end(s);
-            } else fr_check_world(s);
+            } else if (op == 31) fr_joint(s);
+            else fr_check_world(s);
         }
         if (s->w) {
             /* the end: the world's own destruction, its free hooks calling in */

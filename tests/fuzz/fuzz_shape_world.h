@@ -17,7 +17,15 @@
    accepts, refuses or picks by ids, and may write garbage through the
    manifold it is handed; conveyor speeds; checkpoints saved,
    loaded into another world and back into this one (rollback), and
-   replays: the same steps from one snapshot in two worlds.
+   replays: the same steps from one snapshot in two worlds; joints of
+   every kind (revolute, distance, weld, motor) made on live, stale, null,
+   forged, static and same bodies, through the checked and the plain
+   makers and with a NULL def or out, their numbers ordinary or hostile
+   (NaN, inf, huge, negative, a limit's lower above its upper, length 0,
+   anchors and offsets past the coordinate bound, a hand-zeroed def),
+   collide_connected either way; destroyed (live, stale, forged ids, and
+   with their bodies); every setter, of the joint's kind or another, with
+   good and bad values; the getters.
 
    What is checked (the header's promises, besides fuzz_world.h's):
      - every call answers with a result in range (no crash, no sanitizer
@@ -59,7 +67,24 @@
      - snapshots: a saved world loads into another (same def) and saves to
        the same bytes; loaded back into this one it saves the same bytes;
        two worlds loaded from one snapshot and stepped alike end in the
-       same bytes (the callbacks decide from ids alone).
+       same bytes (the callbacks decide from ids alone);
+     - joints: a maker answers one of the errors its def has (STALE_ID,
+       INVALID_ARGUMENT, NOT_FINITE, TOO_LARGE), OK when it has none and no
+       allocation failed, OUT_OF_MEMORY only when one did; a setter
+       STALE_ID for a stale id, INVALID_ARGUMENT for another kind, else its
+       value's errors; a refused call changes no byte of the world; a made
+       joint reads back (kind, bodies, user data, collide_connected) and
+       the count goes up by one, a destroyed one reads zero everywhere and
+       the count down; a made, set or destroyed joint's dynamic bodies are
+       awake; a joint lives exactly while both its bodies do (destroying a
+       body makes its joints stale); joined dynamic bodies sleep and wake
+       together (one island); bodies joined with collide_connected 0 have
+       no pair; readings (reaction force and torque, angle, speed, length)
+       are finite, the angle within (-pi, pi]; joint_count counts the live
+       joints, and after a step joints_solved <= joint_count; the
+       pre-solve callback's and the force field's joint calls are LOCKED
+       and change nothing; whatever a world with joints accepted, its
+       snapshot loads and saves to the same bytes.
 
    Findings this harness made, each fixed in the header and its input kept
    in tests/fuzz/regress/shape_world/: a body destroyed with its chains
@@ -68,7 +93,8 @@
    whose world no snapshot could load; a contained body keeping the
    field's non-finite cache, which the loader refuses; a sensor end event
    that found no room counted as pending (the next step now reports
-   OUT_OF_MEMORY). */
+   OUT_OF_MEMORY); a revolute joint's reference angle of 1e30 that hung
+   the angle's wrap (now cut by the exact remainder first). */
 #ifndef GA2D_FUZZ_SHAPE_WORLD_H
 #define GA2D_FUZZ_SHAPE_WORLD_H
 
@@ -80,6 +106,7 @@
 #define FSW_MAX_OPEN 1024
 #define FSW_MAX_OPS 160
 #define FSW_SCRATCH 256
+#define FSW_MAX_JOINTS 48
 
 #ifdef FUZZ_VERBOSE
 #define FSW_TRACE(args) (fprintf args)
@@ -102,6 +129,16 @@ typedef struct fsw_chain {
     int n;
     ga2d_shape_id segments[FSW_MAX_POINTS];
 } fsw_chain;
+
+/* A joint the harness made: its id, what it was made with, and a
+   revolute joint's limits while the harness knows them. */
+typedef struct fsw_joint {
+    ga2d_joint_id id;
+    ga2d_body_id a, b;
+    int type, collide, limits_known;
+    ga2d_real lower, upper;
+    void *user;
+} fsw_joint;
 
 /* A growing byte buffer (snapshots). */
 typedef struct fsw_buf { unsigned char *p; size_t n, cap; } fsw_buf;
@@ -139,9 +176,13 @@ struct fsw_state {
     int field_on;         /* the world has fw_field as its force callback (a snapshot does not carry it) */
     int heavy;            /* a heavy shape was tried: a body's sums may be near the range (MASS_OVERFLOW may follow) */
     int contained;        /* a step contained a body (NOT_FINITE) */
+    fsw_joint joints[FSW_MAX_JOINTS];
+    int njoints, joints_lost; /* joints_lost: more joints than the table holds (the count is not checked) */
 };
 
 static void fsw_round_trip(fsw_state *s);
+static void fsw_check_joints(fsw_state *s, int after_step);
+static void fsw_forget_joints(fsw_state *s);
 
 /* ------------------------------------------------------------- buffers */
 static int fsw_save(const ga2d_world *w, fsw_buf *b)
@@ -357,7 +398,7 @@ static int fsw_step_dt(fsw_state *s, ga2d_real dt, ga2d_result *out)
     ga2d_result r;
     int i, asleep[FW_MAX_IDS];
     cost = (long)b->substeps * b->passes * (b->rk4 ? 4 : 1) *
-           (ga2d_world_get_counters(b->w).body_count + s->nshapes + 8 * s->nchains + 1);
+           (ga2d_world_get_counters(b->w).body_count + s->nshapes + 8 * s->nchains + 2 * s->njoints + 1);
     if (b->work + cost > FW_WORK_BUDGET) return 0;
     b->work += cost;
     steps_before = ga2d_world_get_counters(b->w).step_count;
@@ -390,6 +431,7 @@ static int fsw_step_dt(fsw_state *s, ga2d_real dt, ga2d_result *out)
        contained a body too) */
     if (r == GA2D_ERR_NOT_FINITE || r == GA2D_ERR_OUT_OF_MEMORY) s->contained = 1;
     fsw_check_events(s, r == GA2D_ERR_OUT_OF_MEMORY);
+    fsw_check_joints(s, 1);
     return 1;
 }
 
@@ -460,10 +502,40 @@ static void fsw_probe_locked(fsw_cb *cb, ga2d_shape_id a)
     FUZZ_CHECK(ga2d_world_snapshot_load(w, buf, sizeof buf) == GA2D_ERR_LOCKED);
     FUZZ_CHECK(ga2d_world_draw(w, &dd) == GA2D_ERR_LOCKED);
     {
+        /* joints: every maker, the destroy and the setters (on a tracked
+           joint, or a forged id: LOCKED comes first) */
+        ga2d_revolute_joint_def rj = ga2d_default_revolute_joint_def();
+        ga2d_distance_joint_def dj = ga2d_default_distance_joint_def();
+        ga2d_weld_joint_def wj = ga2d_default_weld_joint_def();
+        ga2d_motor_joint_def mj = ga2d_default_motor_joint_def();
+        ga2d_joint_id jid;
+        jid.index1 = 1;
+        jid.generation = 1;
+        if (cb->s && cb->s->njoints > 0) jid = cb->s->joints[cb->calls % (unsigned)cb->s->njoints].id;
+        rj.body_a = dj.body_a = wj.body_a = mj.body_a = body;
+        rj.body_b = dj.body_b = wj.body_b = mj.body_b = ga2d_joint_body_b(w, jid);
+        FUZZ_CHECK(ga2d_revolute_joint_create_checked(w, &rj, &jid) == GA2D_ERR_LOCKED && ga2d_joint_id_is_null(jid));
+        FUZZ_CHECK(ga2d_joint_id_is_null(ga2d_distance_joint_create(w, &dj)));
+        FUZZ_CHECK(ga2d_weld_joint_create_checked(w, &wj, &jid) == GA2D_ERR_LOCKED && ga2d_joint_id_is_null(jid));
+        FUZZ_CHECK(ga2d_motor_joint_create_checked(w, &mj, &jid) == GA2D_ERR_LOCKED);
+        jid.index1 = 1;
+        jid.generation = 1;
+        if (cb->s && cb->s->njoints > 0) jid = cb->s->joints[cb->calls % (unsigned)cb->s->njoints].id;
+        FUZZ_CHECK(ga2d_joint_destroy(w, jid) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_revolute_joint_set_limits(w, jid, -1, 1) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_revolute_joint_enable_motor(w, jid, 1) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_distance_joint_set_length(w, jid, 2) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_distance_joint_set_spring(w, jid, 1, 1) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_weld_joint_set_angular_spring(w, jid, 1, 1) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_motor_joint_set_linear_offset(w, jid, ga2d_vec_make(1, 0)) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_motor_joint_set_max_torque(w, jid, (ga2d_real)NAN) == GA2D_ERR_LOCKED);
+    }
+    {
         ga2d_world_counters after = ga2d_world_get_counters(w);
         ga2d_filter f2 = ga2d_shape_filter(w, a);
         ga2d_vec v2 = ga2d_body_velocity(w, body);
         FUZZ_CHECK(after.body_count == before.body_count && after.pair_count == before.pair_count);
+        FUZZ_CHECK(after.joint_count == before.joint_count);
         FUZZ_CHECK(ga2d_world_snapshot_size(w) == size);
         FUZZ_CHECK(ga2d_shape_is_valid(w, a));
         FUZZ_CHECK(memcmp(&f, &f2, sizeof f) == 0 && memcmp(&v, &v2, sizeof v) == 0);
@@ -1239,6 +1311,7 @@ static void fsw_checkpoint(fsw_state *s)
             b->rk4 = s->ckpt_rk4;
             b->passes = s->ckpt_passes;
             fsw_forget_stale(s);
+            fsw_forget_joints(s);
             fsw_resync(s);
         }
     }
@@ -1307,11 +1380,541 @@ static void fsw_queries(fsw_state *s)
         FUZZ_CHECK(n == 0 || (n == c->n && ga2d_body_is_valid(w, c->body)));
         for (j = 0; j < n; ++j) FUZZ_CHECK(ga2d_shape_id_equal(list[j], c->segments[j]));
     }
+    fsw_check_joints(s, 0);
     n = ga2d_world_get_contacts(w, cd, 8);
     for (i = 0; i < n && i < 8; ++i) {
         FUZZ_CHECK(ga2d_body_id_equal(ga2d_shape_body(w, cd[i].shape_a), cd[i].body_a));
         FUZZ_CHECK(ga2d_body_id_equal(ga2d_shape_body(w, cd[i].shape_b), cd[i].body_b));
         FUZZ_CHECK(cd[i].shape_a.index1 < cd[i].shape_b.index1);
+    }
+}
+
+/* --------------------------------------------------------------- joints */
+/* The joint table: every joint the harness made (live or not), what it
+   was made with, and, for a revolute joint, its limits while the harness
+   knows them (a rollback forgets them). */
+static int fsw_joint_find(const fsw_state *s, ga2d_joint_id id)
+{
+    int i;
+    for (i = 0; i < s->njoints; ++i)
+        if (ga2d_joint_id_equal(s->joints[i].id, id)) return i;
+    return -1;
+}
+
+static void fsw_joint_remember(fsw_state *s, const fsw_joint *e)
+{
+    int i = fsw_joint_find(s, e->id);
+    if (i >= 0) s->joints[i] = *e; /* an id a rollback handed out again */
+    else if (s->njoints < FSW_MAX_JOINTS) s->joints[s->njoints++] = *e;
+    else s->joints_lost = 1;
+}
+
+/* The joint an operation acts on: a tracked one (live or not), the null
+   id, a forged one, or a tracked one with its generation off by one. */
+static ga2d_joint_id fsw_joint_id(fsw_state *s)
+{
+    unsigned k = fz_u8(&s->base.rd);
+    ga2d_joint_id id = ga2d_joint_id_null();
+    if (s->njoints > 0 && k < 208) return s->joints[k % (unsigned)s->njoints].id;
+    if (s->njoints > 0 && k < 224) {
+        id = s->joints[k % (unsigned)s->njoints].id;
+        id.generation += (k & 1) ? 1u : 0xFFFFFFFFu;
+    } else if (k >= 240) {
+        id.index1 = (k & 1) ? 0xFFFFFFFFu : (uint32_t)(k - 239);
+        id.generation = (uint32_t)fz_u8(&s->base.rd);
+    }
+    return id;
+}
+
+/* A joint number: ordinary (k/16 x scale, made non-negative when asked),
+   or (wild) anything: NaN, infinities, huge, negative. */
+static ga2d_real fsw_jreal(fsw_state *s, double scale, int nonneg, int wild)
+{
+    if (wild) return fz_real(&s->base.rd, scale);
+    return nonneg ? fz_narrow((double)fz_u8(&s->base.rd) * scale / 256) : fz_narrow((double)(int8_t)fz_u8(&s->base.rd) * scale / 16);
+}
+
+static int fsw_beyond(double x) { return fz_finite(x) && fabs(x) > (double)(ga2d_real)GA2D_MAX_COORDINATE; }
+static int fsw_vec_beyond(ga2d_vec v) { return fsw_beyond((double)v.x) || fsw_beyond((double)v.y); }
+
+/* What a call may answer: a set of results (bit r), OK only when nothing
+   in it is wrong. */
+#define FSW_BIT(r) (1u << (unsigned)(r))
+static unsigned fsw_allowed(unsigned errors) { return errors ? errors : FSW_BIT(GA2D_OK); }
+
+/* Is there a pair (touching or not) between the bodies a and b? */
+static int fsw_pair_between(fsw_state *s, ga2d_body_id a, ga2d_body_id b)
+{
+    ga2d_world *w = s->base.w;
+    int n = ga2d_world_get_pairs(w, NULL, 0), i, found = 0;
+    ga2d_contact_data *c;
+    if (n <= 0) return 0;
+    c = (ga2d_contact_data *)malloc((size_t)n * sizeof *c);
+    if (!c) return 0;
+    FUZZ_CHECK(ga2d_world_get_pairs(w, c, n) == n);
+    for (i = 0; i < n; ++i)
+        if ((ga2d_body_id_equal(c[i].body_a, a) && ga2d_body_id_equal(c[i].body_b, b)) ||
+            (ga2d_body_id_equal(c[i].body_a, b) && ga2d_body_id_equal(c[i].body_b, a)))
+            found = 1;
+    free(c);
+    return found;
+}
+
+/* A dynamic body a joint call woke is awake (a sleeping one's island with
+   it). */
+static void fsw_check_woken(fsw_state *s, ga2d_body_id a, ga2d_body_id b)
+{
+    ga2d_world *w = s->base.w;
+    if (ga2d_body_get_type(w, a) == GA2D_BODY_DYNAMIC) FUZZ_CHECK(ga2d_body_is_awake(w, a));
+    if (ga2d_body_get_type(w, b) == GA2D_BODY_DYNAMIC) FUZZ_CHECK(ga2d_body_is_awake(w, b));
+}
+
+/* Every tracked joint against the world: a live one reads back what it
+   was made with, its bodies live, finite readings, the island and pair
+   rules; a stale one reads zero; the counters count them. */
+static void fsw_check_joints(fsw_state *s, int after_step)
+{
+    ga2d_world *w = s->base.w;
+    ga2d_world_counters c = ga2d_world_get_counters(w);
+    int i, j, live = 0;
+    /* joints_solved is the last step's: a joint destroyed since counts
+       there and not in joint_count */
+    FUZZ_CHECK(c.joint_count >= 0 && c.joints_solved >= 0);
+    if (after_step) FUZZ_CHECK(c.joints_solved <= c.joint_count);
+    if (s->njoints == 0 && !s->joints_lost) {
+        FUZZ_CHECK(c.joint_count == 0 && (c.joints_solved == 0 || !after_step));
+        return;
+    }
+    for (i = 0; i < s->njoints; ++i) {
+        const fsw_joint *e = &s->joints[i];
+        ga2d_joint_id id = e->id;
+        ga2d_vec f = ga2d_joint_reaction_force(w, id);
+        ga2d_real t = ga2d_joint_reaction_torque(w, id);
+        int valid = ga2d_joint_is_valid(w, id), type = (int)ga2d_joint_get_type(w, id);
+        ga2d_real angle = ga2d_revolute_joint_angle(w, id), speed = ga2d_revolute_joint_speed(w, id);
+        ga2d_real torque = ga2d_revolute_joint_motor_torque(w, id), len = ga2d_distance_joint_current_length(w, id);
+        for (j = 0; j < i; ++j)
+            if (ga2d_joint_id_equal(s->joints[j].id, id)) break;
+        FUZZ_CHECK(j == i); /* one entry an id */
+        if (!valid) {
+            FUZZ_CHECK(type == GA2D_JOINT_TYPE_COUNT && ga2d_body_id_is_null(ga2d_joint_body_a(w, id)) &&
+                       ga2d_body_id_is_null(ga2d_joint_body_b(w, id)));
+            FUZZ_CHECK(ga2d_joint_user_data(w, id) == NULL && ga2d_joint_collide_connected(w, id) == 0);
+            FUZZ_CHECK(f.x == 0 && f.y == 0 && t == 0 && angle == 0 && speed == 0 && torque == 0 && len == 0);
+            continue;
+        }
+        ++live;
+        FUZZ_CHECK(type == e->type);
+        FUZZ_CHECK(ga2d_body_id_equal(ga2d_joint_body_a(w, id), e->a) && ga2d_body_id_equal(ga2d_joint_body_b(w, id), e->b));
+        /* a joint lives only while both its bodies do */
+        FUZZ_CHECK(ga2d_body_is_valid(w, e->a) && ga2d_body_is_valid(w, e->b));
+        FUZZ_CHECK(ga2d_joint_user_data(w, id) == e->user && ga2d_joint_collide_connected(w, id) == e->collide);
+        FUZZ_CHECK(fz_finite_vec(f) && fz_finite((double)t));
+        if (type == GA2D_JOINT_DISTANCE) FUZZ_CHECK(t == 0 && fz_finite((double)len) && len >= 0);
+        else FUZZ_CHECK(len == 0);
+        if (type == GA2D_JOINT_REVOLUTE) {
+            /* within (-pi, pi], the wrap's rounding aside */
+            FUZZ_CHECK(fz_finite((double)angle) && fabs((double)angle) <= 3.14159265358979 * (1 + 8 * FZ_EPS));
+            FUZZ_CHECK(fz_finite((double)torque));
+        } else {
+            FUZZ_CHECK(angle == 0 && speed == 0 && torque == 0);
+        }
+        /* joined bodies are one island: both dynamic, both awake or both
+           asleep */
+        if (ga2d_body_get_type(w, e->a) == GA2D_BODY_DYNAMIC && ga2d_body_get_type(w, e->b) == GA2D_BODY_DYNAMIC)
+            FUZZ_CHECK(ga2d_body_is_awake(w, e->a) == ga2d_body_is_awake(w, e->b));
+        /* collide_connected 0: their shapes make no pair */
+        if (!e->collide) FUZZ_CHECK(!fsw_pair_between(s, e->a, e->b));
+    }
+    if (!s->joints_lost) FUZZ_CHECK(c.joint_count == live);
+}
+
+/* A joint of any kind, on two bodies from the table (the same one, stale,
+   null or forged at times), its numbers ordinary or hostile (NaN, inf,
+   huge, negative, lower above upper, length 0); through the checked or
+   the plain maker, with a NULL def or out at times.  Checked: the answer
+   is one of the errors the def has (OK when it has none and no
+   allocation failed), a refused call changes no byte of the world, a made
+   joint reads back, its dynamic bodies wake, and (collide_connected 0)
+   their pairs end. */
+static void fsw_joint_create(fsw_state *s, const ga2d_body_id *on_bodies)
+{
+    fw_state *b = &s->base;
+    ga2d_world *w = b->w;
+    fz_reader *rd = &b->rd;
+    unsigned flags = fz_u8(rd), kind = fz_u8(rd) % 4, wildness = fz_u8(rd);
+    ga2d_body_id ba = on_bodies ? on_bodies[0] : fw_id(b), bb = on_bodies ? on_bodies[1] : (flags & 7) == 0 ? ba : fw_id(b);
+    ga2d_vec la, lb;
+    int va = ga2d_body_is_valid(w, ba), vb = ga2d_body_is_valid(w, bb), collide = (flags >> 3) & 1, by_hand = (flags & 0x30) == 0x30;
+    int plain = (flags >> 6) == 3, null_arg = (flags >> 6) == 2 && (wildness & 15) == 0, count0, type = 0;
+    unsigned errs = 0;
+    void *user = (flags & 0x40) ? &b->tag : NULL;
+    ga2d_joint_id id;
+    ga2d_result r = GA2D_OK;
+    fsw_guard gd;
+    fsw_joint made;
+    /* half the defs clean; the rest with each field wild at odds
+       (wildness % 8) / 8 */
+    int odds = wildness < 128 ? 0 : (int)(wildness % 8);
+#define FSW_WILD() (fz_u8(rd) % 8 < (unsigned)odds)
+    la = FSW_WILD() ? fw_vec(b, 2, 1) : fsw_vec(s, 0);
+    lb = FSW_WILD() ? fw_vec(b, 2, 1) : fsw_vec(s, 0);
+    if (!fz_finite_vec(la) || !fz_finite_vec(lb)) errs |= FSW_BIT(GA2D_ERR_NOT_FINITE);
+    else if (fsw_vec_beyond(la) || fsw_vec_beyond(lb)) errs |= FSW_BIT(GA2D_ERR_TOO_LARGE);
+    if (!va || !vb) errs |= FSW_BIT(GA2D_ERR_STALE_ID);
+    else if (ga2d_body_id_equal(ba, bb) ||
+             (ga2d_body_get_type(w, ba) != GA2D_BODY_DYNAMIC && ga2d_body_get_type(w, bb) != GA2D_BODY_DYNAMIC))
+        errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT);
+    if (s->njoints == FSW_MAX_JOINTS) return;
+    count0 = ga2d_world_get_counters(w).joint_count;
+    memset(&made, 0, sizeof made);
+    fsw_guard_begin(s, &gd);
+    id = ga2d_joint_id_null();
+    switch (kind) {
+    case 0: {
+        ga2d_revolute_joint_def d = ga2d_default_revolute_joint_def();
+        unsigned on = fz_u8(rd);
+        type = GA2D_JOINT_REVOLUTE;
+        if (by_hand) memset(&d, 0, sizeof d);
+        d.body_a = ba, d.body_b = bb, d.local_anchor_a = la, d.local_anchor_b = lb, d.collide_connected = collide, d.user_data = user;
+        d.enable_limit = on & 1, d.enable_motor = (on >> 1) & 1, d.enable_spring = (on >> 2) & 1;
+        if (on & 8) d.reference_angle = fsw_jreal(s, 4, 0, FSW_WILD());
+        if (on & 16) {
+            d.lower_angle = fsw_jreal(s, 4, 0, FSW_WILD());
+            d.upper_angle = fsw_jreal(s, 4, 0, FSW_WILD());
+        }
+        if (on & 32) {
+            d.motor_speed = fsw_jreal(s, 8, 0, FSW_WILD());
+            d.max_motor_torque = fsw_jreal(s, 100, 1, FSW_WILD());
+        }
+        if (on & 64) {
+            d.hertz = fsw_jreal(s, 30, 1, FSW_WILD());
+            d.damping_ratio = fsw_jreal(s, 4, 1, FSW_WILD());
+        }
+        if (!fz_finite((double)d.reference_angle) || !fz_finite((double)d.lower_angle) || !fz_finite((double)d.upper_angle) ||
+            !fz_finite((double)d.motor_speed) || !fz_finite((double)d.max_motor_torque) || !fz_finite((double)d.hertz) ||
+            !fz_finite((double)d.damping_ratio))
+            errs |= FSW_BIT(GA2D_ERR_NOT_FINITE);
+        if (d.max_motor_torque < 0 || d.hertz < 0 || d.damping_ratio < 0 || (d.enable_limit && d.lower_angle > d.upper_angle))
+            errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT);
+        FSW_TRACE((stderr, "revolute on %u %u limit %d [%g %g] motor %d %g %g spring %d %g %g ref %g\n", ba.index1, bb.index1,
+                   d.enable_limit, (double)d.lower_angle, (double)d.upper_angle, d.enable_motor, (double)d.motor_speed,
+                   (double)d.max_motor_torque, d.enable_spring, (double)d.hertz, (double)d.damping_ratio, (double)d.reference_angle));
+        if (plain) id = ga2d_revolute_joint_create(w, &d);
+        else r = ga2d_revolute_joint_create_checked(w, null_arg && (wildness & 16) ? NULL : &d, null_arg ? NULL : &id);
+        made.limits_known = 1;
+        made.lower = d.lower_angle;
+        made.upper = d.upper_angle;
+        break;
+    }
+    case 1: {
+        ga2d_distance_joint_def d = ga2d_default_distance_joint_def();
+        unsigned on = fz_u8(rd);
+        type = GA2D_JOINT_DISTANCE;
+        if (by_hand) memset(&d, 0, sizeof d);
+        d.body_a = ba, d.body_b = bb, d.local_anchor_a = la, d.local_anchor_b = lb, d.collide_connected = collide, d.user_data = user;
+        d.enable_limit = on & 1, d.enable_motor = (on >> 1) & 1, d.enable_spring = (on >> 2) & 1;
+        if (on & 8) d.length = (on & 128) ? 0 : fsw_jreal(s, 4, 1, FSW_WILD());
+        if (on & 16) {
+            d.min_length = fsw_jreal(s, 4, 1, FSW_WILD());
+            d.max_length = fsw_jreal(s, 4, 1, FSW_WILD());
+        }
+        if (on & 32) {
+            d.motor_speed = fsw_jreal(s, 8, 0, FSW_WILD());
+            d.max_motor_force = fsw_jreal(s, 100, 1, FSW_WILD());
+        }
+        if (on & 64) {
+            d.hertz = fsw_jreal(s, 30, 1, FSW_WILD());
+            d.damping_ratio = fsw_jreal(s, 4, 1, FSW_WILD());
+        }
+        if (!fz_finite((double)d.length) || !fz_finite((double)d.min_length) || !fz_finite((double)d.max_length) ||
+            !fz_finite((double)d.motor_speed) || !fz_finite((double)d.max_motor_force) || !fz_finite((double)d.hertz) ||
+            !fz_finite((double)d.damping_ratio))
+            errs |= FSW_BIT(GA2D_ERR_NOT_FINITE);
+        if ((fz_finite((double)d.length) && !(d.length > 0)) || d.min_length < 0 || d.min_length > d.max_length || d.hertz < 0 ||
+            d.damping_ratio < 0 || d.max_motor_force < 0)
+            errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT);
+        FSW_TRACE((stderr, "distance on %u %u length %g limit %d [%g %g] motor %d %g %g spring %d %g %g\n", ba.index1, bb.index1,
+                   (double)d.length, d.enable_limit, (double)d.min_length, (double)d.max_length, d.enable_motor,
+                   (double)d.motor_speed, (double)d.max_motor_force, d.enable_spring, (double)d.hertz, (double)d.damping_ratio));
+        if (plain) id = ga2d_distance_joint_create(w, &d);
+        else r = ga2d_distance_joint_create_checked(w, null_arg && (wildness & 16) ? NULL : &d, null_arg ? NULL : &id);
+        break;
+    }
+    case 2: {
+        ga2d_weld_joint_def d = ga2d_default_weld_joint_def();
+        unsigned on = fz_u8(rd);
+        type = GA2D_JOINT_WELD;
+        if (by_hand) memset(&d, 0, sizeof d);
+        d.body_a = ba, d.body_b = bb, d.local_anchor_a = la, d.local_anchor_b = lb, d.collide_connected = collide, d.user_data = user;
+        if (on & 1) d.reference_angle = fsw_jreal(s, 4, 0, FSW_WILD());
+        if (on & 2) {
+            d.linear_hertz = fsw_jreal(s, 30, 1, FSW_WILD());
+            d.linear_damping_ratio = fsw_jreal(s, 4, 1, FSW_WILD());
+        }
+        if (on & 4) {
+            d.angular_hertz = fsw_jreal(s, 30, 1, FSW_WILD());
+            d.angular_damping_ratio = fsw_jreal(s, 4, 1, FSW_WILD());
+        }
+        if (!fz_finite((double)d.reference_angle) || !fz_finite((double)d.linear_hertz) || !fz_finite((double)d.angular_hertz) ||
+            !fz_finite((double)d.linear_damping_ratio) || !fz_finite((double)d.angular_damping_ratio))
+            errs |= FSW_BIT(GA2D_ERR_NOT_FINITE);
+        if (d.linear_hertz < 0 || d.angular_hertz < 0 || d.linear_damping_ratio < 0 || d.angular_damping_ratio < 0)
+            errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT);
+        FSW_TRACE((stderr, "weld on %u %u ref %g linear %g %g angular %g %g\n", ba.index1, bb.index1, (double)d.reference_angle,
+                   (double)d.linear_hertz, (double)d.linear_damping_ratio, (double)d.angular_hertz, (double)d.angular_damping_ratio));
+        if (plain) id = ga2d_weld_joint_create(w, &d);
+        else r = ga2d_weld_joint_create_checked(w, null_arg && (wildness & 16) ? NULL : &d, null_arg ? NULL : &id);
+        break;
+    }
+    default: {
+        ga2d_motor_joint_def d = ga2d_default_motor_joint_def();
+        unsigned on = fz_u8(rd);
+        type = GA2D_JOINT_MOTOR;
+        if (by_hand) memset(&d, 0, sizeof d);
+        d.body_a = ba, d.body_b = bb, d.local_anchor_a = la, d.local_anchor_b = lb, d.collide_connected = collide, d.user_data = user;
+        if (on & 1) d.linear_offset = FSW_WILD() ? fw_vec(b, 4, 1) : fsw_vec(s, 0);
+        if (on & 2) d.angular_offset = fsw_jreal(s, 4, 0, FSW_WILD());
+        if (on & 4) {
+            d.max_force = fsw_jreal(s, 100, 1, FSW_WILD());
+            d.max_torque = fsw_jreal(s, 100, 1, FSW_WILD());
+        }
+        if (on & 8) d.correction_factor = FSW_WILD() ? fz_real(rd, 1) : fz_narrow((double)fz_u8(rd) / 255);
+        if (!fz_finite_vec(d.linear_offset) || !fz_finite((double)d.angular_offset) || !fz_finite((double)d.max_force) ||
+            !fz_finite((double)d.max_torque) || !fz_finite((double)d.correction_factor))
+            errs |= FSW_BIT(GA2D_ERR_NOT_FINITE);
+        if (d.max_force < 0 || d.max_torque < 0 || d.correction_factor < 0 || d.correction_factor > 1)
+            errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT);
+        if (fsw_vec_beyond(d.linear_offset)) errs |= FSW_BIT(GA2D_ERR_TOO_LARGE);
+        FSW_TRACE((stderr, "motor joint on %u %u offset (%g %g) %g max %g %g factor %g\n", ba.index1, bb.index1,
+                   (double)d.linear_offset.x, (double)d.linear_offset.y, (double)d.angular_offset, (double)d.max_force,
+                   (double)d.max_torque, (double)d.correction_factor));
+        if (plain) id = ga2d_motor_joint_create(w, &d);
+        else r = ga2d_motor_joint_create_checked(w, null_arg && (wildness & 16) ? NULL : &d, null_arg ? NULL : &id);
+        break;
+    }
+    }
+#undef FSW_WILD
+    if (plain) r = ga2d_joint_id_is_null(id) ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK;
+    FSW_TRACE((stderr, "joint create kind %u (plain %d null %d) errors %x: %s -> %u\n", kind, plain, null_arg, errs,
+               ga2d_result_string(r), id.index1));
+    FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT);
+    FUZZ_CHECK((r == GA2D_OK) == !ga2d_joint_id_is_null(id));
+    if (null_arg) FUZZ_CHECK(r == GA2D_ERR_INVALID_ARGUMENT);
+    else if (plain) FUZZ_CHECK((r == GA2D_OK) == (errs == 0 && b->alloc.failures == gd.failures));
+    else if (b->alloc.failures != gd.failures && r == GA2D_ERR_OUT_OF_MEMORY) FUZZ_CHECK(errs == 0);
+    else FUZZ_CHECK(fsw_allowed(errs) & FSW_BIT(r));
+    fsw_guard_end(s, &gd, r);
+    if (r != GA2D_OK) {
+        FUZZ_CHECK(ga2d_world_get_counters(w).joint_count == count0);
+        return;
+    }
+    {
+        fsw_joint e = made;
+        e.id = id;
+        e.a = ba;
+        e.b = bb;
+        e.type = type;
+        e.collide = collide;
+        e.user = user;
+        fsw_joint_remember(s, &e);
+    }
+    FUZZ_CHECK(ga2d_joint_is_valid(w, id) && (int)ga2d_joint_get_type(w, id) == type);
+    FUZZ_CHECK(ga2d_world_get_counters(w).joint_count == count0 + 1);
+    fsw_check_woken(s, ba, bb);
+    if (!collide) FUZZ_CHECK(!fsw_pair_between(s, ba, bb));
+    fsw_check_joints(s, 0);
+    /* whatever a world accepted, its snapshot loads */
+    if (fz_u8(rd) < 64) fsw_round_trip(s);
+}
+
+/* Destroys a joint (a tracked one, stale, null or forged): OK for a live
+   one (it goes stale, its bodies wake, the count drops), else STALE_ID
+   and nothing changes. */
+static void fsw_joint_destroy(fsw_state *s)
+{
+    ga2d_world *w = s->base.w;
+    ga2d_joint_id id = fsw_joint_id(s);
+    int valid = ga2d_joint_is_valid(w, id), count0 = ga2d_world_get_counters(w).joint_count;
+    ga2d_body_id a = ga2d_joint_body_a(w, id), b = ga2d_joint_body_b(w, id);
+    ga2d_result r;
+    fsw_guard gd;
+    fsw_guard_begin(s, &gd);
+    r = ga2d_joint_destroy(w, id);
+    FSW_TRACE((stderr, "joint destroy %u/%u (valid %d): %s\n", id.index1, id.generation, valid, ga2d_result_string(r)));
+    FUZZ_CHECK(r == (valid ? GA2D_OK : GA2D_ERR_STALE_ID));
+    fsw_guard_end(s, &gd, r);
+    FUZZ_CHECK(ga2d_world_get_counters(w).joint_count == count0 - (r == GA2D_OK));
+    if (r != GA2D_OK) return;
+    FUZZ_CHECK(!ga2d_joint_is_valid(w, id) && ga2d_joint_get_type(w, id) == GA2D_JOINT_TYPE_COUNT);
+    FUZZ_CHECK(ga2d_joint_destroy(w, id) == GA2D_ERR_STALE_ID);
+    fsw_check_woken(s, a, b);
+}
+
+/* Every setter, on any joint id: mostly one of the joint's own kind, with
+   a value ordinary or hostile.  The answer: STALE_ID for a stale id,
+   INVALID_ARGUMENT for another kind, else one of the value's errors (OK
+   when it has none); a refused call changes no byte of the world, an
+   accepted one wakes the bodies. */
+#define FSW_NSETTERS 21
+static void fsw_joint_set(fsw_state *s)
+{
+    static const int kind_of[FSW_NSETTERS] = {GA2D_JOINT_REVOLUTE, GA2D_JOINT_REVOLUTE, GA2D_JOINT_REVOLUTE, GA2D_JOINT_REVOLUTE,
+                                              GA2D_JOINT_REVOLUTE, GA2D_JOINT_REVOLUTE, GA2D_JOINT_REVOLUTE, GA2D_JOINT_DISTANCE,
+                                              GA2D_JOINT_DISTANCE, GA2D_JOINT_DISTANCE, GA2D_JOINT_DISTANCE, GA2D_JOINT_DISTANCE,
+                                              GA2D_JOINT_DISTANCE, GA2D_JOINT_DISTANCE, GA2D_JOINT_DISTANCE, GA2D_JOINT_WELD,
+                                              GA2D_JOINT_WELD,     GA2D_JOINT_MOTOR,    GA2D_JOINT_MOTOR,    GA2D_JOINT_MOTOR,
+                                              GA2D_JOINT_MOTOR};
+    static const int first[4][2] = {{7, 8}, {0, 7}, {15, 2}, {17, 4}}; /* by kind: distance, revolute, weld, motor */
+    fw_state *bs = &s->base;
+    ga2d_world *w = bs->w;
+    fz_reader *rd = &bs->rd;
+    ga2d_joint_id id = fsw_joint_id(s);
+    int valid = ga2d_joint_is_valid(w, id), type = (int)ga2d_joint_get_type(w, id), k = fsw_joint_find(s, id);
+    unsigned pick = fz_u8(rd), wildness = fz_u8(rd);
+    int which, wild = wildness < 48, on = (int)(wildness & 3) - 1; /* enable: -1, 0, 1, 2 */
+    ga2d_real x = 0, y = 0;
+    ga2d_vec v = ga2d_vec_make(0, 0);
+    unsigned errs = 0;
+    ga2d_result r;
+    fsw_guard gd;
+    ga2d_body_id a = ga2d_joint_body_a(w, id), b = ga2d_joint_body_b(w, id);
+    if (valid && pick < 192) {
+        int slot = type == GA2D_JOINT_DISTANCE ? 0 : type == GA2D_JOINT_REVOLUTE ? 1 : type == GA2D_JOINT_WELD ? 2 : 3;
+        which = first[slot][0] + (int)(fz_u8(rd) % (unsigned)first[slot][1]);
+    } else {
+        which = (int)(fz_u8(rd) % FSW_NSETTERS);
+    }
+    if (!valid) errs = FSW_BIT(GA2D_ERR_STALE_ID);
+    else if (type != kind_of[which]) errs = FSW_BIT(GA2D_ERR_INVALID_ARGUMENT);
+    fsw_guard_begin(s, &gd);
+    switch (which) {
+    case 0: r = ga2d_revolute_joint_enable_motor(w, id, on); break;
+    case 1:
+        x = fsw_jreal(s, 8, 0, wild);
+        r = ga2d_revolute_joint_set_motor_speed(w, id, x);
+        break;
+    case 2:
+        x = fsw_jreal(s, 100, 1, wild);
+        r = ga2d_revolute_joint_set_max_motor_torque(w, id, x);
+        break;
+    case 3:
+        if (!errs && on && k >= 0 && s->joints[k].limits_known && s->joints[k].lower > s->joints[k].upper)
+            errs = FSW_BIT(GA2D_ERR_INVALID_ARGUMENT);
+        else if (!errs && on && !(k >= 0 && s->joints[k].limits_known))
+            errs = FSW_BIT(GA2D_OK) | FSW_BIT(GA2D_ERR_INVALID_ARGUMENT); /* the limits are not known here */
+        r = ga2d_revolute_joint_enable_limit(w, id, on);
+        break;
+    case 4:
+        x = fsw_jreal(s, 4, 0, wild);
+        y = fsw_jreal(s, 4, 0, wild || (wildness & 4));
+        r = ga2d_revolute_joint_set_limits(w, id, x, y);
+        break;
+    case 5: r = ga2d_revolute_joint_enable_spring(w, id, on); break;
+    case 6: case 11: case 15: case 16:
+        x = fsw_jreal(s, 30, 1, wild);
+        y = fsw_jreal(s, 4, 1, wild);
+        r = which == 6    ? ga2d_revolute_joint_set_spring(w, id, x, y)
+            : which == 11 ? ga2d_distance_joint_set_spring(w, id, x, y)
+            : which == 15 ? ga2d_weld_joint_set_linear_spring(w, id, x, y)
+                          : ga2d_weld_joint_set_angular_spring(w, id, x, y);
+        break;
+    case 7:
+        x = (wildness & 8) ? 0 : fsw_jreal(s, 4, 1, wild);
+        r = ga2d_distance_joint_set_length(w, id, x);
+        break;
+    case 8: r = ga2d_distance_joint_enable_limit(w, id, on); break;
+    case 9:
+        x = fsw_jreal(s, 4, 1, wild);
+        y = fsw_jreal(s, 4, 1, wild || (wildness & 4));
+        r = ga2d_distance_joint_set_length_range(w, id, x, y);
+        break;
+    case 10: r = ga2d_distance_joint_enable_spring(w, id, on); break;
+    case 12: r = ga2d_distance_joint_enable_motor(w, id, on); break;
+    case 13:
+        x = fsw_jreal(s, 8, 0, wild);
+        r = ga2d_distance_joint_set_motor_speed(w, id, x);
+        break;
+    case 14: case 19: case 20:
+        x = fsw_jreal(s, 100, 1, wild);
+        r = which == 14 ? ga2d_distance_joint_set_max_motor_force(w, id, x)
+            : which == 19 ? ga2d_motor_joint_set_max_force(w, id, x)
+                          : ga2d_motor_joint_set_max_torque(w, id, x);
+        break;
+    case 17:
+        v = wild ? fw_vec(bs, 4, 1) : fsw_vec(s, 0);
+        r = ga2d_motor_joint_set_linear_offset(w, id, v);
+        break;
+    default:
+        x = fsw_jreal(s, 4, 0, wild);
+        r = ga2d_motor_joint_set_angular_offset(w, id, x);
+        break;
+    }
+    if (!errs) {
+        /* the value's own errors */
+        int two = which == 4 || which == 6 || which == 9 || which == 11 || which == 15 || which == 16;
+        if (!fz_finite((double)x) || (two && !fz_finite((double)y)) || !fz_finite_vec(v)) errs |= FSW_BIT(GA2D_ERR_NOT_FINITE);
+        switch (which) {
+        case 2: case 14: case 19: case 20: if (x < 0) errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT); break;
+        case 4: if (x > y) errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT); break;
+        case 6: case 11: case 15: case 16: if (x < 0 || y < 0) errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT); break;
+        case 7: if (fz_finite((double)x) && !(x > 0)) errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT); break;
+        case 9: if (x < 0 || x > y) errs |= FSW_BIT(GA2D_ERR_INVALID_ARGUMENT); break;
+        case 17: if (fsw_vec_beyond(v)) errs |= FSW_BIT(GA2D_ERR_TOO_LARGE); break;
+        default: break;
+        }
+    }
+    FSW_TRACE((stderr, "joint set %d on %u (valid %d type %d) x %g y %g v (%g %g) on %d: %s (allowed %x)\n", which, id.index1, valid,
+               type, (double)x, (double)y, (double)v.x, (double)v.y, on, ga2d_result_string(r), fsw_allowed(errs)));
+    FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT);
+    FUZZ_CHECK(fsw_allowed(errs) & FSW_BIT(r));
+    fsw_guard_end(s, &gd, r);
+    if (r != GA2D_OK) return;
+    FUZZ_CHECK(ga2d_joint_is_valid(w, id) && (int)ga2d_joint_get_type(w, id) == type);
+    fsw_check_woken(s, a, b);
+    if (which == 4 && k >= 0) {
+        s->joints[k].limits_known = 1;
+        s->joints[k].lower = x;
+        s->joints[k].upper = y;
+    }
+    if (fz_u8(rd) < 16) fsw_round_trip(s);
+}
+
+/* A chain: 2 to 6 joints, each between a tracked body and the next in
+   the table (ropes, bridges, ragdolls: islands of several bodies), each
+   made as fsw_joint_create makes one. */
+static void fsw_joint_chain(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    int n = 2 + fz_pick(&b->rd, 5), at = fz_u8(&b->rd), i;
+    for (i = 0; i < n && b->nids > 1; ++i) {
+        ga2d_body_id pair[2];
+        pair[0] = b->ids[(at + i) % b->nids];
+        pair[1] = b->ids[(at + i + 1) % b->nids];
+        fsw_joint_create(s, pair);
+    }
+}
+
+/* One joint operation: make (most often), a chain, set, destroy, or
+   check. */
+static void fsw_joint_op(fsw_state *s)
+{
+    unsigned k = fz_u8(&s->base.rd) % 8;
+    if (k < 3) fsw_joint_create(s, NULL);
+    else if (k == 3) fsw_joint_chain(s);
+    else if (k < 6) fsw_joint_set(s);
+    else if (k == 6) fsw_joint_destroy(s);
+    else fsw_check_joints(s, 0);
+}
+
+/* After a rollback: the joints the lost future made are gone (their ids
+   will come again), and what the harness knew of limits is old. */
+static void fsw_forget_joints(fsw_state *s)
+{
+    int i;
+    for (i = 0; i < s->njoints; ++i) {
+        s->joints[i].limits_known = 0;
+        if (!ga2d_joint_is_valid(s->base.w, s->joints[i].id)) s->joints[i--] = s->joints[--s->njoints];
     }
 }
 
@@ -1404,7 +2007,10 @@ static int fuzz_shape_world_one(const uint8_t *data, size_t size)
         } else if (op == 37) {
             /* one of the next few allocations fails (whichever call makes it) */
             b->alloc.fail_at = b->alloc.attempts + 1 + fz_pick(&b->rd, 4);
-        } else fsw_shape_create(s);
+        } else if (op == 38) fsw_joint_op(s);
+        else fsw_shape_create(s);
+        /* a destroyed body's joints are stale */
+        if (op >= 23 && op < 30 && s->njoints > 0) fsw_check_joints(s, 0);
     }
     /* a couple of ordinary steps, the queries, a round trip */
     for (i = 0; i < 2; ++i) {

@@ -3,8 +3,9 @@
    over the stack, a stack, a falling triangle, a kinematic body, a ball, a
    capsule and a rounded box resting on an open chain, a destroyed body's,
    shape's and chain's free slots, after some steps, so that contacts,
-   warm-start impulses and the sensor's visitors exist): every shape type,
-   sensor visitor lists and chain lists reach the loader.
+   warm-start impulses and the sensor's visitors exist; and joints of the
+   four kinds, with a free joint slot): every shape type, sensor visitor
+   lists, chain lists and joints reach the loader.
 
    The buffer is either the input itself, or the scene's own snapshot
    edited by the input (bytes set, flipped, words and reals written at
@@ -148,6 +149,67 @@ static ga2d_world *fs_scene(fz_alloc *a, ga2d_body_id *ids, int *n)
         d.angular_velocity = 0;
         ids[(*n)++] = ga2d_body_create(w, &d);
         ga2d_shape_create_polygon(w, ids[*n - 1], &sd, &rounded);
+    }
+    {
+        /* joints: a pendulum on the ground (revolute: limit, motor), a bob
+           below it on a distance joint (spring, range, motor), a box
+           welded to that (soft), a motor joint from the ground driving the
+           triangle, and a joint made and destroyed: a free joint slot */
+        ga2d_revolute_joint_def rj = ga2d_default_revolute_joint_def();
+        ga2d_distance_joint_def dj = ga2d_default_distance_joint_def();
+        ga2d_weld_joint_def wj = ga2d_default_weld_joint_def();
+        ga2d_motor_joint_def mj = ga2d_default_motor_joint_def();
+        ga2d_body_id pend, bob, box;
+        d = ga2d_default_body_def();
+        d.type = GA2D_BODY_DYNAMIC;
+        d.polygon = ga2d_polygon_box((ga2d_real)0.1, (ga2d_real)0.5);
+        d.position = ga2d_vec_make(-6, (ga2d_real)5.5);
+        pend = ids[(*n)++] = ga2d_body_create(w, &d);
+        d.polygon = ga2d_polygon_regular(5, (ga2d_real)0.25);
+        d.position = ga2d_vec_make(-6, 3);
+        bob = ids[(*n)++] = ga2d_body_create(w, &d);
+        d.polygon = ga2d_polygon_box((ga2d_real)0.2, (ga2d_real)0.2);
+        d.position = ga2d_vec_make((ga2d_real)-5.5, 3);
+        box = ids[(*n)++] = ga2d_body_create(w, &d);
+        rj.body_a = ids[0];
+        rj.body_b = pend;
+        rj.local_anchor_a = ga2d_vec_make(-6, 7);
+        rj.local_anchor_b = ga2d_vec_make(0, (ga2d_real)0.5);
+        rj.enable_limit = rj.enable_motor = 1;
+        rj.lower_angle = (ga2d_real)-0.5;
+        rj.upper_angle = (ga2d_real)0.75;
+        rj.motor_speed = 1;
+        rj.max_motor_torque = 5;
+        rj.reference_angle = (ga2d_real)0.1;
+        ga2d_revolute_joint_create(w, &rj);
+        dj.body_a = pend;
+        dj.body_b = bob;
+        dj.local_anchor_a = ga2d_vec_make(0, (ga2d_real)-0.5);
+        dj.length = (ga2d_real)1.5;
+        dj.enable_spring = dj.enable_limit = dj.enable_motor = 1;
+        dj.hertz = 3;
+        dj.damping_ratio = (ga2d_real)0.5;
+        dj.min_length = 1;
+        dj.max_length = 2;
+        dj.max_motor_force = 2;
+        dj.motor_speed = (ga2d_real)0.25;
+        dj.collide_connected = 1;
+        ga2d_distance_joint_create(w, &dj);
+        wj.body_a = bob;
+        wj.body_b = box;
+        wj.local_anchor_a = ga2d_vec_make((ga2d_real)0.25, 0);
+        wj.local_anchor_b = ga2d_vec_make((ga2d_real)-0.25, 0);
+        wj.angular_hertz = 5;
+        wj.angular_damping_ratio = 1;
+        ga2d_weld_joint_create(w, &wj);
+        mj.body_a = ids[0];
+        mj.body_b = ids[4];
+        mj.linear_offset = ga2d_vec_make(2, 4);
+        mj.angular_offset = (ga2d_real)0.5;
+        mj.max_force = 20;
+        mj.max_torque = 2;
+        ga2d_joint_destroy(w, ga2d_weld_joint_create(w, &wj));
+        ga2d_motor_joint_create(w, &mj);
     }
     d = ga2d_default_body_def();
     d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);

@@ -296,6 +296,29 @@ static void fw_field(ga2d_world *w, void *ctx)
         FUZZ_CHECK(ga2d_world_enable_sleep(w, 0) == GA2D_ERR_LOCKED);
         FUZZ_CHECK(ga2d_world_enable_friction(w, 0) == GA2D_ERR_LOCKED);
         FUZZ_CHECK(ga2d_world_draw(w, &dd) == GA2D_ERR_LOCKED);
+        {
+            /* joints: made, destroyed, set: refused first of all */
+            ga2d_revolute_joint_def rj = ga2d_default_revolute_joint_def();
+            ga2d_distance_joint_def dj = ga2d_default_distance_joint_def();
+            ga2d_weld_joint_def wj = ga2d_default_weld_joint_def();
+            ga2d_motor_joint_def mj = ga2d_default_motor_joint_def();
+            ga2d_joint_id jid, made;
+            int joints = ga2d_world_get_counters(w).joint_count;
+            jid.index1 = 1;
+            jid.generation = 1;
+            rj.body_a = dj.body_a = wj.body_a = mj.body_a = any;
+            rj.body_b = dj.body_b = wj.body_b = mj.body_b = s->nids > 1 ? s->ids[1] : any;
+            FUZZ_CHECK(ga2d_revolute_joint_create_checked(w, &rj, &made) == GA2D_ERR_LOCKED && ga2d_joint_id_is_null(made));
+            FUZZ_CHECK(ga2d_distance_joint_create_checked(w, &dj, &made) == GA2D_ERR_LOCKED && ga2d_joint_id_is_null(made));
+            FUZZ_CHECK(ga2d_joint_id_is_null(ga2d_weld_joint_create(w, &wj)));
+            FUZZ_CHECK(ga2d_joint_id_is_null(ga2d_motor_joint_create(w, &mj)));
+            FUZZ_CHECK(ga2d_joint_destroy(w, jid) == GA2D_ERR_LOCKED);
+            FUZZ_CHECK(ga2d_revolute_joint_set_motor_speed(w, jid, 1) == GA2D_ERR_LOCKED);
+            FUZZ_CHECK(ga2d_distance_joint_enable_limit(w, jid, 1) == GA2D_ERR_LOCKED);
+            FUZZ_CHECK(ga2d_weld_joint_set_linear_spring(w, jid, 1, 1) == GA2D_ERR_LOCKED);
+            FUZZ_CHECK(ga2d_motor_joint_set_angular_offset(w, jid, 1) == GA2D_ERR_LOCKED);
+            FUZZ_CHECK(ga2d_world_get_counters(w).joint_count == joints);
+        }
         if (ga2d_body_is_valid(w, any)) {
             fw_snap before, after;
             fw_take(w, any, &before);
