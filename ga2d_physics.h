@@ -9078,6 +9078,13 @@ static void ga2d__joint_forget(ga2d__joint *j)
     j->spring_impulse = j->motor_impulse = j->lower_impulse = j->upper_impulse = j->impulse = 0;
 }
 
+/* A joint spring's hertz, capped at a quarter of the substep rate (0:
+   none). */
+static ga2d_real ga2d__joint_hertz(const ga2d__step_context *c, ga2d_real hertz)
+{
+    return hertz < GA2D__HERTZ_CAP * c->inv_h ? hertz : GA2D__HERTZ_CAP * c->inv_h;
+}
+
 /* Stage, over the step's joints: anchors, masses and the angle where the
    step began; a side the solver does not move gets its solver body.  The
    solver bodies must be there (ga2d__reserve_sbodies). */
@@ -9098,8 +9105,12 @@ static void ga2d__prepare_joints(ga2d__step_context *c, int begin, int end)
         j->iia = ma ? a->sim.inv_inertia : 0;
         j->iib = mb ? b->sim.inv_inertia : 0;
         j->axial_mass = j->iia + j->iib > 0 ? 1 / (j->iia + j->iib) : 0;
-        j->spring = ga2d__make_soft(j->enable_spring || j->type == GA2D_JOINT_WELD ? j->hertz : 0, j->damping_ratio, c->h);
-        j->linear_spring = ga2d__make_soft(j->linear_hertz, j->linear_damping_ratio, c->h);
+        /* a spring asked stiffer than a quarter of the substep rate is
+           made at that rate (as contacts are): stiffer, the one biased
+           pass a substep rings and grows */
+        j->spring = ga2d__make_soft(ga2d__joint_hertz(c, j->enable_spring || j->type == GA2D_JOINT_WELD ? j->hertz : 0),
+                                    j->damping_ratio, c->h);
+        j->linear_spring = ga2d__make_soft(ga2d__joint_hertz(c, j->linear_hertz), j->linear_damping_ratio, c->h);
         j->target = ga2d_rotate(a->sim.q, j->offset);
         if (!w->def.enable_warm_starting) ga2d__joint_forget(j);
         ga2d__still_body(c, j->body[0]);

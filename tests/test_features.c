@@ -271,6 +271,23 @@ static void every_setter_and_push_wakes_the_island(void)
     }
 }
 
+/* Making a joint wakes both its bodies: a hinge put on a sleeping stack
+   must act at once (the README's joints section). */
+static void making_a_joint_wakes_its_bodies(void)
+{
+    ga2d_body_id lower, upper;
+    ga2d_world *w = sleeping_pair(&lower, &upper);
+    ga2d_revolute_joint_def d = ga2d_default_revolute_joint_def();
+    if (!w) return;
+    d.body_a = lower;
+    d.body_b = upper;
+    d.local_anchor_a = v2(0, 0.5);
+    d.local_anchor_b = v2(0, -0.5);
+    CHECK(!ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &d)));
+    CHECK(ga2d_body_is_awake(w, lower) && ga2d_body_is_awake(w, upper));
+    ga2d_world_destroy(w);
+}
+
 /* The README's other half: damping, restitution and user data change
    nothing for a body at rest, and leave its island asleep (waking it would
    cost a game its sleeping piles each time it tags a body). */
@@ -874,6 +891,7 @@ void suite_features(void)
 {
     test_run("features: sensors report what falls through them, at the predicted steps", sensor_free_fall);
     test_run("features: every setter and push wakes a sleeping island", every_setter_and_push_wakes_the_island);
+    test_run("features: making a joint wakes both its bodies", making_a_joint_wakes_its_bodies);
     test_run("features: damping, restitution and user data leave a sleeping island asleep",
              setters_that_change_nothing_at_rest_leave_it_asleep);
     test_run("features: the sleep switch", sleep_switch);
