@@ -563,8 +563,9 @@ static void weld_cantilever(void)
    spring k = I_eff (2 pi f)^2 with I_eff the disc's I (A static) exactly
    (top comment).  The issue's bound is 10%; the scheme's rest is exact,
    so the check is the settling: critically damped, the slow eigenvalue
-   lam (critical_lambda) leaves th (480 lam^480) after 2 s (from rest at
-   0: the same decay of the offset), plus the angle's rounding 8 u.
+   lam (critical_lambda) leaves at most th 480 lam^480 of the start's
+   offset th after 2 s (the run is 4 s: looser still), plus the angle's
+   rounding 8 u.
    (2) The same disc hanging, linear_hertz f (damping 1), angular rigid,
    under gravity: the linear spring (a 2x2 block over the mass m, no
    lever) rests g / (2 pi f)^2 below the pivot, the same way. */
@@ -730,7 +731,8 @@ static ga2d_prismatic_joint_def prismatic_def(ga2d_body_id a, ga2d_body_id b, do
 
 /* A box (0.4 x 0.2) on a frictionless slide along an axis at theta from
    the horizontal in the world: A a static body turned by 0.4 rad, the
-   axis theta - 0.4 in its frame, both anchors at the box's centre.
+   axis theta - 0.4 in its frame and the reference angle -0.4 (B level),
+   both anchors at the box's centre.
    Gravity (0, -g): along the axis a = -g sin theta.  With A static and
    B's anchor at its centre, the normal row, the angle row and the axis
    are decoupled (the block's k12 and the axis's levers vanish), so the
