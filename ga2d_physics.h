@@ -8329,6 +8329,16 @@ static ga2d_vec ga2d__axis_of(ga2d_vec d)
 
 static ga2d_vec ga2d__distance_span(const ga2d_world *w, const ga2d__joint *j);
 
+/* An impulse of the last substep as a force or torque (impulse / h),
+   saturated at the largest real: a huge body's impulse over a tiny
+   substep can pass the range, and 0 stays 0 even when 1/h overflowed. */
+static ga2d_real ga2d__rate_of(const ga2d_world *w, ga2d_real impulse)
+{
+    double r = (double)impulse * (double)w->step.inv_h;
+    if (impulse == 0 || r != r) return 0;
+    return r > (double)GA2D__MAX ? GA2D__MAX : (r < -(double)GA2D__MAX ? -GA2D__MAX : (ga2d_real)r);
+}
+
 GA2D_API ga2d_vec ga2d_joint_reaction_force(const ga2d_world *w, ga2d_joint_id id)
 {
     const ga2d__joint *j = ga2d__joint_lookup(w, id);
@@ -8345,7 +8355,7 @@ GA2D_API ga2d_vec ga2d_joint_reaction_force(const ga2d_world *w, ga2d_joint_id i
         break;
     default: P = j->linear_impulse; break;
     }
-    return ga2d_vec_scale(P, w->step.inv_h);
+    return ga2d_vec_make(ga2d__rate_of(w, P.x), ga2d__rate_of(w, P.y));
 }
 
 GA2D_API ga2d_real ga2d_joint_reaction_torque(const ga2d_world *w, ga2d_joint_id id)
@@ -8359,7 +8369,7 @@ GA2D_API ga2d_real ga2d_joint_reaction_torque(const ga2d_world *w, ga2d_joint_id
     case GA2D_JOINT_WHEEL: L = j->motor_impulse; break;
     default: L = ga2d__joint_axial_impulse(j); break;
     }
-    return L * w->step.inv_h;
+    return ga2d__rate_of(w, L);
 }
 
 /* B's rotor relative to A's (B's turn seen from A), as a unit rotor
@@ -8405,7 +8415,7 @@ GA2D_API ga2d_real ga2d_revolute_joint_speed(const ga2d_world *w, ga2d_joint_id 
 GA2D_API ga2d_real ga2d_revolute_joint_motor_torque(const ga2d_world *w, ga2d_joint_id id)
 {
     const ga2d__joint *j = ga2d__revolute_of(w, id);
-    return j ? j->motor_impulse * w->step.inv_h : 0;
+    return j ? ga2d__rate_of(w, j->motor_impulse) : 0;
 }
 
 /* A joint of `type` a setter may change (waking its bodies), or why not. */
@@ -8962,7 +8972,7 @@ GA2D_API ga2d_real ga2d_wheel_joint_translation(const ga2d_world *w, ga2d_joint_
 GA2D_API ga2d_real ga2d_wheel_joint_motor_torque(const ga2d_world *w, ga2d_joint_id id)
 {
     const ga2d__joint *j = ga2d__joint_lookup(w, id);
-    return j && j->type == GA2D_JOINT_WHEEL ? j->motor_impulse * w->step.inv_h : 0;
+    return j && j->type == GA2D_JOINT_WHEEL ? ga2d__rate_of(w, j->motor_impulse) : 0;
 }
 
 #define GA2D__P GA2D_JOINT_PRISMATIC
