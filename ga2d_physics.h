@@ -899,8 +899,9 @@ GA2D_API ga2d_result ga2d_world_compact(ga2d_world *w);
    Load, then step, gives the same bits as the original steps: contacts and
    their warm-start impulses are in it, and the solver's order does not
    depend on where things sit in memory.  The loading world keeps its own
-   allocator and force callback; body user_data pointers are restored as
-   saved (they mean something only in the process that saved them).
+   allocator and force callback; user_data pointers (bodies', shapes' and
+   joints') are restored as saved (they mean something only in the process
+   that saved them).
    save: BUFFER_TOO_SMALL if cap < ga2d_world_snapshot_size(w) (buf
    untouched), OUT_OF_MEMORY.  load: BAD_SNAPSHOT for a truncated,
    corrupted or wrong-version buffer, OUT_OF_MEMORY, LOCKED; on any error
@@ -10884,6 +10885,11 @@ static void ga2d__io_joint(ga2d__codec *k, ga2d__joint *j)
     ga2d__io_real(k, &j->max_torque);
     ga2d__io_real(k, &j->correction);
     ga2d__io_vec(k, &j->offset);
+    {
+        uint64_t user = (uint64_t)(uintptr_t)j->user_data;
+        ga2d__io_u64(k, &user); /* restored as saved, as a body's: see ga2d_world_snapshot_load */
+        j->user_data = (void *)(uintptr_t)user;
+    }
 }
 
 static void ga2d__io_polygon(ga2d__codec *k, ga2d_polygon *p)
