@@ -10385,6 +10385,7 @@ static void ga2d__io_counters(ga2d__codec *k, ga2d_world_counters *c)
 static void ga2d__io_joint(ga2d__codec *k, ga2d__joint *j)
 {
     int s;
+    uint64_t user = (uint64_t)(uintptr_t)j->user_data;
     for (s = 0; s < 2; ++s) {
         ga2d__io_int(k, &j->body[s]);
         ga2d__io_vec(k, &j->local[s]);
@@ -10414,6 +10415,10 @@ static void ga2d__io_joint(ga2d__codec *k, ga2d__joint *j)
     ga2d__io_real(k, &j->max_torque);
     ga2d__io_real(k, &j->correction);
     ga2d__io_vec(k, &j->offset);
+    /* restored as saved, as a body's and a shape's (fuzz finding: a joint
+       read back NULL user data after a rollback) */
+    ga2d__io_u64(k, &user);
+    j->user_data = (void *)(uintptr_t)user;
 }
 
 static void ga2d__io_polygon(ga2d__codec *k, ga2d_polygon *p)
