@@ -23,7 +23,9 @@
        failed;
      - an accepted buffer gives a world that saves and loads again to the
        same bytes, and steps without crashing, with every awake body
-       finite after steps that report OK or NOT_FINITE (containment);
+       finite after steps that report OK or NOT_FINITE (containment), the
+       lines drawn (segment shapes, joints) finite, and no more joints
+       solved than there are;
      - nothing leaks (the allocator gets every byte back). */
 #ifndef GA2D_FUZZ_SNAPSHOT_H
 #define GA2D_FUZZ_SNAPSHOT_H
@@ -259,12 +261,24 @@ static void fs_collect_capsule(ga2d_body_id id, ga2d_vec c1, ga2d_vec c2, ga2d_r
     fs_add((fs_bodies *)ctx, id);
 }
 
+/* Segments (segment shapes, the joints' three lines): finite ends. */
+static void fs_segment(ga2d_vec a, ga2d_vec b, uint32_t color, void *ctx)
+{
+    (void)color;
+    (void)ctx;
+    FUZZ_CHECK(fz_finite_vec(a) && fz_finite_vec(b));
+}
+
 static void fs_check_finite(const ga2d_world *w)
 {
     fs_bodies all;
     ga2d_debug_draw dd = ga2d_default_debug_draw();
+    ga2d_world_counters counts = ga2d_world_get_counters(w);
     int i;
     all.n = 0;
+    /* after a step: the joints it solved are among those there are */
+    FUZZ_CHECK(counts.joint_count >= 0 && counts.joints_solved >= 0 && counts.joints_solved <= counts.joint_count);
+    dd.segment = fs_segment;
     dd.polygon = fs_collect;
     dd.circle = fs_collect_circle;
     dd.capsule = fs_collect_capsule;
