@@ -4995,49 +4995,7 @@ GA2D_API ga2d_result ga2d_world_set_force_callback(ga2d_world *w, ga2d_force_fn 
     return GA2D_OK;
 }
 
-/* ---------------------------------------------------------------- bodies */
-GA2D_API ga2d_body_def ga2d_default_body_def(void)
-{
-    ga2d_body_def d;
-    memset(&d, 0, sizeof d);
-    d.type = GA2D_BODY_STATIC;
-    d.rotor = ga2d_rotor_identity();
-    d.density = GA2D__R(GA2D_DEFAULT_DENSITY);
-    d.friction = GA2D__R(GA2D_DEFAULT_FRICTION);
-    d.gravity_scale = 1;
-    d.is_awake = 1;
-    d.filter = ga2d_default_filter();
-    d.internal_cookie = GA2D_DEF_COOKIE;
-    return d;
-}
-
-/* The one place a body def's zeros become defaults (see "Defs"); a zero
-   rotor means the identity in every def. */
-static void ga2d__resolve_body_def(const ga2d_body_def *in, ga2d_body_def *out)
-{
-    ga2d_body_def dflt = ga2d_default_body_def();
-    int stamped = in->internal_cookie == GA2D_DEF_COOKIE;
-    memset(out, 0, sizeof *out);
-    out->internal_cookie = GA2D_DEF_COOKIE;
-    GA2D__TAKE(type);
-    GA2D__TAKE(position);
-    out->rotor = in->rotor.c == 0 && in->rotor.s == 0 ? dflt.rotor : in->rotor;
-    GA2D__TAKE(velocity);
-    GA2D__TAKE(angular_velocity);
-    GA2D__TAKE(polygon);
-    GA2D__TAKE(density);
-    GA2D__TAKE(friction);
-    GA2D__TAKE(restitution);
-    GA2D__TAKE(linear_damping);
-    GA2D__TAKE(angular_damping);
-    GA2D__TAKE(gravity_scale);
-    GA2D__TAKE(fixed_rotation);
-    GA2D__TAKE(is_awake);
-    GA2D__TAKE(user_data);
-    GA2D__TAKE(filter);
-}
-
-
+/* ----------------------------------------------------- definitions checked */
 /* A polygon rebuilt from its vertices, as ga2d_polygon_make checks them
    (a hand-filled struct could be anything), with its radius: finite, not
    negative, within GA2D_MAX_COORDINATE. */
@@ -5178,32 +5136,150 @@ static ga2d_result ga2d__body_def_check(const ga2d_body_def *d)
     return ga2d__geometry_check(&g, (int)d->type, d->density, &g);
 }
 
-GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *def)
+/* ---------------------------------------------------------------- sensors */
+/* Appends a sensor event; on failure the step (or the next one, for a
+   destruction) reports OUT_OF_MEMORY. */
+static int ga2d__push_sensor_event(ga2d_world *w, int end, ga2d_shape_id sensor, ga2d_shape_id visitor)
 {
-    ga2d_body_def d;
-    if (!def) return GA2D_ERR_INVALID_ARGUMENT;
-    ga2d__resolve_body_def(def, &d);
-    return ga2d__body_def_check(&d);
+    ga2d_sensor_event **arr = end ? &w->sensor_end : &w->sensor_begin;
+    int *count = end ? &w->sensor_end_count : &w->sensor_begin_count;
+    int *cap = end ? &w->sensor_end_capacity : &w->sensor_begin_capacity;
+    if (!ga2d__grow(&w->mem, (void **)arr, cap, *count + 1, sizeof **arr)) {
+        w->step.error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    (*arr)[*count].sensor = sensor;
+    (*arr)[*count].visitor = visitor;
+    ++*count;
+    return 1;
 }
 
-/* Adds slot i to the moving list (capacity ensured by the caller). */
-static void ga2d__moving_add(ga2d_world *w, int i)
+/* An end from a destruction waits for the next step's events; one that
+   found no room makes that step report OUT_OF_MEMORY. */
+static void ga2d__push_sensor_end_pending(ga2d_world *w, ga2d_shape_id sensor, ga2d_shape_id visitor)
 {
-    w->bodies[i].move_index = w->moving_count;
-    w->moving[w->moving_count++] = i;
+    if (ga2d__push_sensor_event(w, 1, sensor, visitor)) ++w->sensor_end_pending;
+    else w->sensor_end_lost = 1;
 }
 
-static void ga2d__moving_remove(ga2d_world *w, int i)
+/* A shape about to go: a sensor ends its overlaps, a visitor leaves every
+   sensor that holds it; the ends wait for the next step's events. */
+static void ga2d__sensor_forget(ga2d_world *w, int k)
 {
-    int k = w->bodies[i].move_index, last;
-    if (k < 0) return;
-    last = w->moving[--w->moving_count];
-    w->moving[k] = last;
-    w->bodies[last].move_index = k;
-    w->bodies[i].move_index = -1;
+    ga2d__shape *sh = &w->shapes[k];
+    int i, j;
+    if (w->sensor_count == 0) return;
+    ga2d__enter(w);
+    if (sh->is_sensor) {
+        for (i = 0; i < sh->visitor_count; ++i) {
+            ga2d__push_sensor_end_pending(w, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, sh->visitors[i]));
+        }
+        GA2D__FREE_ARRAY(&w->mem, sh->visitors, sh->visitor_capacity);
+        sh->visitors = NULL;
+        sh->visitor_count = sh->visitor_capacity = 0;
+        --w->sensor_count;
+    } else {
+        for (i = 0; i < w->shape_used; ++i) {
+            ga2d__shape *se = &w->shapes[i];
+            if (se->type < 0 || !se->is_sensor) continue;
+            for (j = 0; j < se->visitor_count && se->visitors[j] != k; ++j) continue;
+            if (j == se->visitor_count) continue;
+            ga2d__push_sensor_end_pending(w, ga2d__shape_id_of(w, i), ga2d__shape_id_of(w, k));
+            memmove(&se->visitors[j], &se->visitors[j + 1], (size_t)(se->visitor_count - j - 1) * sizeof *se->visitors);
+            --se->visitor_count;
+        }
+    }
+    ga2d__leave(w);
 }
 
-/* ------------------------------------------------------------ shapes */
+/* Collects a sensor's candidates (the tree query's callback). */
+static void ga2d__sensor_found(void *ctx, int other)
+{
+    ga2d_world *w = (ga2d_world *)ctx;
+    if (!ga2d__grow(&w->mem, (void **)&w->sensor_scratch, &w->sensor_scratch_capacity, w->sensor_scratch_count + 1,
+                    sizeof *w->sensor_scratch)) {
+        w->step.error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    w->sensor_scratch[w->sensor_scratch_count++] = other;
+}
+
+/* Whether a visitor overlaps a sensor now (touching counts). */
+static int ga2d__sensor_sees(const ga2d_world *w, const ga2d__shape *se, int v)
+{
+    const ga2d__shape *vi = &w->shapes[v];
+    ga2d_manifold m;
+    if (vi->type < 0 || vi->is_sensor || !vi->sensor_events || vi->body == se->body || !ga2d_should_collide(se->filter, vi->filter))
+        return 0;
+    return ga2d__collide_geometries(&se->geom, ga2d__body_xf(&w->bodies[se->body]), &vi->geom,
+                                    ga2d__body_xf(&w->bodies[vi->body]), w->slop, 0, &m) > 0;
+}
+
+/* Book-keeping after the step: each sensor, in slot order, finds what
+   overlaps its shape now (a query of both trees with its own box, then an
+   exact test), and the changes against what it held are its events. */
+static void ga2d__update_sensors(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, i, j, n;
+    for (k = 0; k < w->shape_used && w->sensor_count > 0; ++k) {
+        ga2d__shape *se = &w->shapes[k];
+        ga2d_aabb box;
+        if (se->type < 0 || !se->is_sensor) continue;
+        box = ga2d__shape_aabb(se, ga2d__body_xf(&w->bodies[se->body]));
+        w->sensor_scratch_count = 0;
+        ga2d__tree_query(&w->trees[0], box, ga2d__sensor_found, w);
+        ga2d__tree_query(&w->trees[1], box, ga2d__sensor_found, w);
+        if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
+        for (i = 0, n = 0; i < w->sensor_scratch_count; ++i)
+            if (ga2d__sensor_sees(w, se, w->sensor_scratch[i])) w->sensor_scratch[n++] = w->sensor_scratch[i];
+        w->counters.sensor_tests += w->sensor_scratch_count;
+        if (n > 1) qsort(w->sensor_scratch, (size_t)n, sizeof *w->sensor_scratch, ga2d__cmp_int);
+        if (!ga2d__grow(&w->mem, (void **)&se->visitors, &se->visitor_capacity, n, sizeof *se->visitors)) {
+            c->error = GA2D_ERR_OUT_OF_MEMORY;
+            return;
+        }
+        /* the two ascending lists, merged: what is only new began, what is only old ended */
+        for (i = 0, j = 0; i < n || j < se->visitor_count;) {
+            int now = i < n ? w->sensor_scratch[i] : -1, was = j < se->visitor_count ? se->visitors[j] : -1;
+            if (was < 0 || (now >= 0 && now < was)) {
+                ga2d__push_sensor_event(w, 0, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, now));
+                ++i;
+            } else if (now < 0 || was < now) {
+                ga2d__push_sensor_event(w, 1, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, was));
+                ++j;
+            } else {
+                ++i;
+                ++j;
+            }
+        }
+        if (n > 0) memcpy(se->visitors, w->sensor_scratch, (size_t)n * sizeof *se->visitors);
+        se->visitor_count = n;
+    }
+}
+
+GA2D_API ga2d_sensor_events ga2d_world_sensor_events(const ga2d_world *w)
+{
+    ga2d_sensor_events e;
+    memset(&e, 0, sizeof e);
+    if (!w) return e;
+    e.begin = w->sensor_begin;
+    e.begin_count = w->sensor_begin_count;
+    e.end = w->sensor_end;
+    e.end_count = w->sensor_end_count - w->sensor_end_pending;
+    return e;
+}
+
+GA2D_API int ga2d_shape_get_sensor_overlaps(const ga2d_world *w, ga2d_shape_id sensor, ga2d_shape_id *out, int capacity)
+{
+    const ga2d__shape *se = ga2d__shape_lookup(w, sensor);
+    int i;
+    if (!se || !se->is_sensor) return 0;
+    for (i = 0; out && i < se->visitor_count && i < capacity; ++i) out[i] = ga2d__shape_id_of(w, se->visitors[i]);
+    return se->visitor_count;
+}
+
+/* ----------------------------------------- shapes: mass, slots and proxies */
 /* A shape's exact mass properties at density rho in its body's frame (a
    segment has none). */
 static ga2d_mass ga2d__shape_mass(const ga2d__shape *s, ga2d_real rho)
@@ -5438,6 +5514,105 @@ static void ga2d__shape_proxy(ga2d_world *w, int k)
     ga2d__buffer_move(w, k);
 }
 
+/* A shape's proxy and queue entry go, and its slot is freed (its
+   contacts are gone already).  The queue entry goes with it: the slot,
+   reused before the next step, queues again, and the buffer is sized for
+   one entry per slot (destroy-create cycles between steps overflowed it). */
+static void ga2d__shape_free(ga2d_world *w, int k)
+{
+    ga2d__shape *sh = &w->shapes[k];
+    ga2d__body *b = &w->bodies[sh->body];
+    int prev = -1, j;
+    ga2d__sensor_forget(w, k);
+    ga2d__tree_destroy(ga2d__tree_of(w, sh), sh->proxy);
+    if (sh->in_move)
+        for (j = 0; j < w->move_count; ++j)
+            if (w->move_buf[j] == k) {
+                w->move_buf[j] = w->move_buf[--w->move_count];
+                break;
+            }
+    for (j = b->shape_head; j != k; j = w->shapes[j].next) prev = j;
+    if (prev >= 0) w->shapes[prev].next = sh->next;
+    else b->shape_head = sh->next;
+    if (b->shape_tail == k) b->shape_tail = prev;
+    --b->shape_count;
+    --w->shape_count;
+    w->hit_shapes -= sh->hit_events;
+    sh->in_move = 0;
+    sh->type = -1;
+    sh->generation = ga2d__next_generation(sh->generation);
+    sh->next_free = w->shape_free;
+    w->shape_free = k;
+}
+
+/* ---------------------------------------------------------------- bodies */
+GA2D_API ga2d_body_def ga2d_default_body_def(void)
+{
+    ga2d_body_def d;
+    memset(&d, 0, sizeof d);
+    d.type = GA2D_BODY_STATIC;
+    d.rotor = ga2d_rotor_identity();
+    d.density = GA2D__R(GA2D_DEFAULT_DENSITY);
+    d.friction = GA2D__R(GA2D_DEFAULT_FRICTION);
+    d.gravity_scale = 1;
+    d.is_awake = 1;
+    d.filter = ga2d_default_filter();
+    d.internal_cookie = GA2D_DEF_COOKIE;
+    return d;
+}
+
+/* The one place a body def's zeros become defaults (see "Defs"); a zero
+   rotor means the identity in every def. */
+static void ga2d__resolve_body_def(const ga2d_body_def *in, ga2d_body_def *out)
+{
+    ga2d_body_def dflt = ga2d_default_body_def();
+    int stamped = in->internal_cookie == GA2D_DEF_COOKIE;
+    memset(out, 0, sizeof *out);
+    out->internal_cookie = GA2D_DEF_COOKIE;
+    GA2D__TAKE(type);
+    GA2D__TAKE(position);
+    out->rotor = in->rotor.c == 0 && in->rotor.s == 0 ? dflt.rotor : in->rotor;
+    GA2D__TAKE(velocity);
+    GA2D__TAKE(angular_velocity);
+    GA2D__TAKE(polygon);
+    GA2D__TAKE(density);
+    GA2D__TAKE(friction);
+    GA2D__TAKE(restitution);
+    GA2D__TAKE(linear_damping);
+    GA2D__TAKE(angular_damping);
+    GA2D__TAKE(gravity_scale);
+    GA2D__TAKE(fixed_rotation);
+    GA2D__TAKE(is_awake);
+    GA2D__TAKE(user_data);
+    GA2D__TAKE(filter);
+}
+
+
+GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *def)
+{
+    ga2d_body_def d;
+    if (!def) return GA2D_ERR_INVALID_ARGUMENT;
+    ga2d__resolve_body_def(def, &d);
+    return ga2d__body_def_check(&d);
+}
+
+/* Adds slot i to the moving list (capacity ensured by the caller). */
+static void ga2d__moving_add(ga2d_world *w, int i)
+{
+    w->bodies[i].move_index = w->moving_count;
+    w->moving[w->moving_count++] = i;
+}
+
+static void ga2d__moving_remove(ga2d_world *w, int i)
+{
+    int k = w->bodies[i].move_index, last;
+    if (k < 0) return;
+    last = w->moving[--w->moving_count];
+    w->moving[k] = last;
+    w->bodies[last].move_index = k;
+    w->bodies[i].move_index = -1;
+}
+
 static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
 {
     ga2d_body_id id = ga2d_body_id_null();
@@ -5526,180 +5701,6 @@ GA2D_API ga2d_body_id ga2d_body_create(ga2d_world *w, const ga2d_body_def *def)
     return id;
 }
 
-/* ---------------------------------------------------------------- sensors */
-/* Appends a sensor event; on failure the step (or the next one, for a
-   destruction) reports OUT_OF_MEMORY. */
-static int ga2d__push_sensor_event(ga2d_world *w, int end, ga2d_shape_id sensor, ga2d_shape_id visitor)
-{
-    ga2d_sensor_event **arr = end ? &w->sensor_end : &w->sensor_begin;
-    int *count = end ? &w->sensor_end_count : &w->sensor_begin_count;
-    int *cap = end ? &w->sensor_end_capacity : &w->sensor_begin_capacity;
-    if (!ga2d__grow(&w->mem, (void **)arr, cap, *count + 1, sizeof **arr)) {
-        w->step.error = GA2D_ERR_OUT_OF_MEMORY;
-        return 0;
-    }
-    (*arr)[*count].sensor = sensor;
-    (*arr)[*count].visitor = visitor;
-    ++*count;
-    return 1;
-}
-
-/* An end from a destruction waits for the next step's events; one that
-   found no room makes that step report OUT_OF_MEMORY. */
-static void ga2d__push_sensor_end_pending(ga2d_world *w, ga2d_shape_id sensor, ga2d_shape_id visitor)
-{
-    if (ga2d__push_sensor_event(w, 1, sensor, visitor)) ++w->sensor_end_pending;
-    else w->sensor_end_lost = 1;
-}
-
-/* A shape about to go: a sensor ends its overlaps, a visitor leaves every
-   sensor that holds it; the ends wait for the next step's events. */
-static void ga2d__sensor_forget(ga2d_world *w, int k)
-{
-    ga2d__shape *sh = &w->shapes[k];
-    int i, j;
-    if (w->sensor_count == 0) return;
-    ga2d__enter(w);
-    if (sh->is_sensor) {
-        for (i = 0; i < sh->visitor_count; ++i) {
-            ga2d__push_sensor_end_pending(w, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, sh->visitors[i]));
-        }
-        GA2D__FREE_ARRAY(&w->mem, sh->visitors, sh->visitor_capacity);
-        sh->visitors = NULL;
-        sh->visitor_count = sh->visitor_capacity = 0;
-        --w->sensor_count;
-    } else {
-        for (i = 0; i < w->shape_used; ++i) {
-            ga2d__shape *se = &w->shapes[i];
-            if (se->type < 0 || !se->is_sensor) continue;
-            for (j = 0; j < se->visitor_count && se->visitors[j] != k; ++j) continue;
-            if (j == se->visitor_count) continue;
-            ga2d__push_sensor_end_pending(w, ga2d__shape_id_of(w, i), ga2d__shape_id_of(w, k));
-            memmove(&se->visitors[j], &se->visitors[j + 1], (size_t)(se->visitor_count - j - 1) * sizeof *se->visitors);
-            --se->visitor_count;
-        }
-    }
-    ga2d__leave(w);
-}
-
-/* Collects a sensor's candidates (the tree query's callback). */
-static void ga2d__sensor_found(void *ctx, int other)
-{
-    ga2d_world *w = (ga2d_world *)ctx;
-    if (!ga2d__grow(&w->mem, (void **)&w->sensor_scratch, &w->sensor_scratch_capacity, w->sensor_scratch_count + 1,
-                    sizeof *w->sensor_scratch)) {
-        w->step.error = GA2D_ERR_OUT_OF_MEMORY;
-        return;
-    }
-    w->sensor_scratch[w->sensor_scratch_count++] = other;
-}
-
-/* Whether a visitor overlaps a sensor now (touching counts). */
-static int ga2d__sensor_sees(const ga2d_world *w, const ga2d__shape *se, int v)
-{
-    const ga2d__shape *vi = &w->shapes[v];
-    ga2d_manifold m;
-    if (vi->type < 0 || vi->is_sensor || !vi->sensor_events || vi->body == se->body || !ga2d_should_collide(se->filter, vi->filter))
-        return 0;
-    return ga2d__collide_geometries(&se->geom, ga2d__body_xf(&w->bodies[se->body]), &vi->geom,
-                                    ga2d__body_xf(&w->bodies[vi->body]), w->slop, 0, &m) > 0;
-}
-
-/* Book-keeping after the step: each sensor, in slot order, finds what
-   overlaps its shape now (a query of both trees with its own box, then an
-   exact test), and the changes against what it held are its events. */
-static void ga2d__update_sensors(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int k, i, j, n;
-    for (k = 0; k < w->shape_used && w->sensor_count > 0; ++k) {
-        ga2d__shape *se = &w->shapes[k];
-        ga2d_aabb box;
-        if (se->type < 0 || !se->is_sensor) continue;
-        box = ga2d__shape_aabb(se, ga2d__body_xf(&w->bodies[se->body]));
-        w->sensor_scratch_count = 0;
-        ga2d__tree_query(&w->trees[0], box, ga2d__sensor_found, w);
-        ga2d__tree_query(&w->trees[1], box, ga2d__sensor_found, w);
-        if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
-        for (i = 0, n = 0; i < w->sensor_scratch_count; ++i)
-            if (ga2d__sensor_sees(w, se, w->sensor_scratch[i])) w->sensor_scratch[n++] = w->sensor_scratch[i];
-        w->counters.sensor_tests += w->sensor_scratch_count;
-        if (n > 1) qsort(w->sensor_scratch, (size_t)n, sizeof *w->sensor_scratch, ga2d__cmp_int);
-        if (!ga2d__grow(&w->mem, (void **)&se->visitors, &se->visitor_capacity, n, sizeof *se->visitors)) {
-            c->error = GA2D_ERR_OUT_OF_MEMORY;
-            return;
-        }
-        /* the two ascending lists, merged: what is only new began, what is only old ended */
-        for (i = 0, j = 0; i < n || j < se->visitor_count;) {
-            int now = i < n ? w->sensor_scratch[i] : -1, was = j < se->visitor_count ? se->visitors[j] : -1;
-            if (was < 0 || (now >= 0 && now < was)) {
-                ga2d__push_sensor_event(w, 0, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, now));
-                ++i;
-            } else if (now < 0 || was < now) {
-                ga2d__push_sensor_event(w, 1, ga2d__shape_id_of(w, k), ga2d__shape_id_of(w, was));
-                ++j;
-            } else {
-                ++i;
-                ++j;
-            }
-        }
-        if (n > 0) memcpy(se->visitors, w->sensor_scratch, (size_t)n * sizeof *se->visitors);
-        se->visitor_count = n;
-    }
-}
-
-GA2D_API ga2d_sensor_events ga2d_world_sensor_events(const ga2d_world *w)
-{
-    ga2d_sensor_events e;
-    memset(&e, 0, sizeof e);
-    if (!w) return e;
-    e.begin = w->sensor_begin;
-    e.begin_count = w->sensor_begin_count;
-    e.end = w->sensor_end;
-    e.end_count = w->sensor_end_count - w->sensor_end_pending;
-    return e;
-}
-
-GA2D_API int ga2d_shape_get_sensor_overlaps(const ga2d_world *w, ga2d_shape_id sensor, ga2d_shape_id *out, int capacity)
-{
-    const ga2d__shape *se = ga2d__shape_lookup(w, sensor);
-    int i;
-    if (!se || !se->is_sensor) return 0;
-    for (i = 0; out && i < se->visitor_count && i < capacity; ++i) out[i] = ga2d__shape_id_of(w, se->visitors[i]);
-    return se->visitor_count;
-}
-
-/* A shape's proxy and queue entry go, and its slot is freed (its
-   contacts are gone already).  The queue entry goes with it: the slot,
-   reused before the next step, queues again, and the buffer is sized for
-   one entry per slot (destroy-create cycles between steps overflowed it). */
-static void ga2d__shape_free(ga2d_world *w, int k)
-{
-    ga2d__shape *sh = &w->shapes[k];
-    ga2d__body *b = &w->bodies[sh->body];
-    int prev = -1, j;
-    ga2d__sensor_forget(w, k);
-    ga2d__tree_destroy(ga2d__tree_of(w, sh), sh->proxy);
-    if (sh->in_move)
-        for (j = 0; j < w->move_count; ++j)
-            if (w->move_buf[j] == k) {
-                w->move_buf[j] = w->move_buf[--w->move_count];
-                break;
-            }
-    for (j = b->shape_head; j != k; j = w->shapes[j].next) prev = j;
-    if (prev >= 0) w->shapes[prev].next = sh->next;
-    else b->shape_head = sh->next;
-    if (b->shape_tail == k) b->shape_tail = prev;
-    --b->shape_count;
-    --w->shape_count;
-    w->hit_shapes -= sh->hit_events;
-    sh->in_move = 0;
-    sh->type = -1;
-    sh->generation = ga2d__next_generation(sh->generation);
-    sh->next_free = w->shape_free;
-    w->shape_free = k;
-}
-
 static void ga2d__chain_free(ga2d_world *w, int k);
 
 GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
@@ -5736,6 +5737,36 @@ GA2D_API ga2d_result ga2d_body_destroy(ga2d_world *w, ga2d_body_id id)
     return GA2D_OK;
 }
 
+GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id) { return ga2d__lookup(w, id) != NULL; }
+
+GA2D_API int ga2d_body_is_awake(const ga2d_world *w, ga2d_body_id id)
+{
+    const ga2d__body *b = ga2d__lookup(w, id);
+    return b ? b->awake : 0;
+}
+
+/* Sleeping on request puts the body's whole touching island to sleep;
+   waking wakes it.  Only dynamic bodies sleep. */
+GA2D_API ga2d_result ga2d_body_set_awake(ga2d_world *w, ga2d_body_id id, int awake)
+{
+    ga2d__body *b;
+    ga2d_result r = ga2d__writable(w, id, &b);
+    int n, i;
+    if (r != GA2D_OK) return r;
+    if (awake) {
+        ga2d__wake(w, ga2d__slot(id));
+        return GA2D_OK;
+    }
+    if (b->type != GA2D_BODY_DYNAMIC || !b->awake) return GA2D_OK;
+    n = ga2d__flip_island(w, ga2d__slot(id), 1);
+    for (i = 0; i < n; ++i) {
+        w->bodies[w->wake_queue[i]].sleep_time = 0;
+        ga2d__put_to_sleep(w, w->wake_queue[i]);
+    }
+    return GA2D_OK;
+}
+
+/* ------------------------------------------------------------------ shapes */
 GA2D_API ga2d_shape_id ga2d_shape_id_null(void) { ga2d_shape_id id; id.index1 = 0; id.generation = 0; return id; }
 GA2D_API int ga2d_shape_id_is_null(ga2d_shape_id id) { return id.index1 == 0; }
 GA2D_API int ga2d_shape_id_equal(ga2d_shape_id a, ga2d_shape_id b) { return a.index1 == b.index1 && a.generation == b.generation; }
@@ -6236,36 +6267,7 @@ GA2D_API int ga2d_chain_get_segments(const ga2d_world *w, ga2d_chain_id id, ga2d
     return c->count;
 }
 
-GA2D_API int ga2d_body_is_valid(const ga2d_world *w, ga2d_body_id id) { return ga2d__lookup(w, id) != NULL; }
-
-GA2D_API int ga2d_body_is_awake(const ga2d_world *w, ga2d_body_id id)
-{
-    const ga2d__body *b = ga2d__lookup(w, id);
-    return b ? b->awake : 0;
-}
-
-/* Sleeping on request puts the body's whole touching island to sleep;
-   waking wakes it.  Only dynamic bodies sleep. */
-GA2D_API ga2d_result ga2d_body_set_awake(ga2d_world *w, ga2d_body_id id, int awake)
-{
-    ga2d__body *b;
-    ga2d_result r = ga2d__writable(w, id, &b);
-    int n, i;
-    if (r != GA2D_OK) return r;
-    if (awake) {
-        ga2d__wake(w, ga2d__slot(id));
-        return GA2D_OK;
-    }
-    if (b->type != GA2D_BODY_DYNAMIC || !b->awake) return GA2D_OK;
-    n = ga2d__flip_island(w, ga2d__slot(id), 1);
-    for (i = 0; i < n; ++i) {
-        w->bodies[w->wake_queue[i]].sleep_time = 0;
-        ga2d__put_to_sleep(w, w->wake_queue[i]);
-    }
-    return GA2D_OK;
-}
-
-/* ---------------------------------------------------------------- getters */
+/* ------------------------------------------------------------ body getters */
 GA2D_API ga2d_body_type ga2d_body_get_type(const ga2d_world *w, ga2d_body_id id)
 {
     const ga2d__body *b = ga2d__lookup(w, id);
@@ -6352,7 +6354,7 @@ GA2D_API void *ga2d_body_user_data(const ga2d_world *w, ga2d_body_id id)
     return b ? b->user_data : NULL;
 }
 
-/* ---------------------------------------------------------------- setters */
+/* ------------------------------------------------------------ body setters */
 GA2D_API ga2d_result ga2d_body_set_transform(ga2d_world *w, ga2d_body_id id, ga2d_vec position, ga2d_rotor q)
 {
     ga2d__body *b;
@@ -6570,6 +6572,279 @@ GA2D_API ga2d_result ga2d_body_apply_angular_impulse(ga2d_world *w, ga2d_body_id
     ga2d__wake(w, ga2d__slot(id));
     b->sim.w += b->sim.inv_inertia * impulse;
     return GA2D_OK;
+}
+
+/* ======================================================== collision stages */
+/* The stages flag what book-keeping must visit in bit sets (a bit per
+   item, set by the item's own stage), visited in item order. */
+/* The first set bit from i on, below n, or -1. */
+static int ga2d__next_bit(const uint64_t *bits, int i, int n)
+{
+    for (; i < n; i = (i | 63) + 1) {
+        uint64_t w = bits[i >> 6] >> (i & 63);
+        if (w) {
+            while (!(w & 1)) {
+                w >>= 1;
+                ++i;
+            }
+            return i < n ? i : -1;
+        }
+    }
+    return -1;
+}
+
+/* Bits [0, n) cleared. */
+static void ga2d__bits_zero(uint64_t *bits, int n)
+{
+    if (n > 0) memset(bits, 0, (size_t)((n + 63) / 64) * sizeof *bits);
+}
+
+/* Stage, over the moving bodies: a body any of whose shapes' fat boxes no
+   longer holds what it can reach in this step gets new boxes for all its
+   shapes, written into their own tree leaves (a leaf's box is read by
+   nothing else until ga2d__refit_proxies moves it in the tree), and its
+   bit. */
+static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        const ga2d__body *b = &w->bodies[w->moving[k]];
+        int s, refit = 0;
+        ga2d_aabb fat;
+        for (s = b->shape_head; s >= 0 && !refit; s = w->shapes[s].next) refit = ga2d__needs_refit(w, b, &w->shapes[s], &fat);
+        if (!refit) continue;
+        if (b->shape_count == 1) {
+            const ga2d__shape *sh = &w->shapes[b->shape_head];
+            ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
+        } else {
+            for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
+                const ga2d__shape *sh = &w->shapes[s];
+                ga2d__needs_refit(w, b, sh, &fat);
+                ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
+            }
+        }
+        c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
+    }
+}
+
+/* Book-keeping: the marked bodies' new shape boxes move in the tree, in
+   the moving list's order (the tree's shape depends on it), and the
+   shapes queue for pair finding; then the queue is sorted, without
+   destroyed shapes and repeats (a slot destroyed and reused). */
+static void ga2d__refit_proxies(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, n;
+    for (k = ga2d__next_bit(c->refits, 0, w->moving_count); k >= 0; k = ga2d__next_bit(c->refits, k + 1, w->moving_count)) {
+        int s;
+        for (s = w->bodies[w->moving[k]].shape_head; s >= 0; s = w->shapes[s].next) {
+            ga2d__shape *sh = &w->shapes[s];
+            ga2d__tree *t = ga2d__tree_of(w, sh);
+            ga2d__tree_move(t, sh->proxy, t->nodes[sh->proxy].box);
+            ga2d__buffer_move(w, s);
+        }
+    }
+    if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
+    for (k = 0, n = 0; k < w->move_count; ++k) {
+        int s = w->move_buf[k];
+        if (w->shapes[s].type >= 0 && w->shapes[s].in_move && (n == 0 || w->move_buf[n - 1] != s))
+            w->move_buf[n++] = s;
+    }
+    w->move_count = n;
+    w->new_pair_count = 0;
+}
+
+/* Stage, over the queued shapes: each queued shape (moved out of its
+   box, created, teleported, refiltered) is queried against the moving
+   tree (and, if its body moves, the static tree); the pairs it finds are
+   listed. */
+static void ga2d__find_pairs(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        int s = w->move_buf[k];
+        ga2d__pair_query q;
+        ga2d_aabb box = ga2d__fat_box(w, &w->shapes[s]);
+        q.w = w;
+        q.self = s;
+        ga2d__tree_query(&w->trees[1], box, ga2d__pair_found, &q);
+        if (w->bodies[w->shapes[s].body].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
+    }
+}
+
+/* Book-keeping: the new pairs' contacts are created in key order, so the
+   result is a function of the world's state alone, and the queue empties. */
+static void ga2d__create_pairs(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, n;
+    if (w->new_pair_count > 1) qsort(w->new_pairs, (size_t)w->new_pair_count, sizeof *w->new_pairs, ga2d__cmp_u64);
+    for (k = 0, n = w->new_pair_count; k < n; ++k) {
+        uint64_t key = w->new_pairs[k];
+        if (k > 0 && w->new_pairs[k - 1] == key) continue;
+        if (!ga2d__create_contact(w, (int)(key >> 32), (int)(uint32_t)key)) c->error = GA2D_ERR_OUT_OF_MEMORY;
+    }
+    /* out of memory: some pairs were not made, so every queued shape stays
+       queued and is searched again next step (pairs already made are kept) */
+    if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
+    for (k = 0; k < w->move_count; ++k) w->shapes[w->move_buf[k]].in_move = 0;
+    w->move_count = 0;
+}
+
+/* A point's impulses taken over from point j of the last manifold. */
+static void ga2d__take_impulses(ga2d_manifold_point *p, const ga2d_manifold *last, int j)
+{
+    p->normal_impulse = last->points[j].normal_impulse;
+    p->tangent_impulse = last->points[j].tangent_impulse;
+    p->persisted = 1;
+}
+
+/* Warm starting: each point of a new manifold m takes the impulses of the
+   last manifold's point with its id; a point whose id is new takes those
+   of a last point that no id claimed and that lay within `near` of it (A's
+   anchors compared: the relative ones, so nothing large is subtracted).
+   One touch can be named two ways: when two faces are nearly parallel
+   (as in a resting pile of rounded polygons), which of them is the
+   reference turns on a tolerance the faces' tilt sits at, so rounding
+   flips it between steps, and each flip renamed both points.  Started
+   cold, a loaded contact dropped its load for a step; in float a pile's
+   rounding flipped one such pair every few steps, and the kicks fed a
+   cycle that never settled (1.6e-2 m/s after 300 s, bodies 100 x their
+   rest speed).  `near` is half a slop: as far as ga2d__reuse_manifold
+   lets a point be carried and still be the same touch. */
+static void ga2d__warm_points(const ga2d_manifold *last, ga2d_manifold *m, ga2d_real near)
+{
+    int i, j, taken = 0; /* bit j: last point j gave its impulses */
+    for (i = 0; i < m->count; ++i)
+        for (j = 0; j < last->count; ++j)
+            if (last->points[j].id == m->points[i].id) {
+                ga2d__take_impulses(&m->points[i], last, j);
+                taken |= 1 << j;
+            }
+    for (i = 0; i < m->count; ++i) {
+        ga2d_real best = near;
+        int k = -1;
+        if (m->points[i].persisted) continue;
+        for (j = 0; j < last->count; ++j) {
+            ga2d_real d;
+            if (taken & (1 << j)) continue;
+            d = ga2d__length(ga2d_vec_sub(m->points[i].anchor_a, last->points[j].anchor_a));
+            if (d <= best) {
+                best = d;
+                k = j;
+            }
+        }
+        if (k < 0) continue;
+        ga2d__take_impulses(&m->points[i], last, k);
+        taken |= 1 << k;
+    }
+}
+
+/* Stage, over the contact pool: each contact whose fat boxes still
+   overlap gets a new manifold (or its last one carried along,
+   ga2d__reuse_manifold), whose points take over the impulses of the old
+   points with the same id (warm starting).  What changes in the world
+   (events, destruction, waking) is left to ga2d__contact_changes. */
+static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int ci;
+    for (ci = begin; ci < end; ++ci) {
+        ga2d__contact *ct = &w->contacts[ci];
+        const ga2d__body *a, *b;
+        ga2d_transform xa, xb;
+        ga2d_manifold m;
+        int touching;
+        if (ct->next_free != -2) continue;
+        a = &w->bodies[ct->a];
+        b = &w->bodies[ct->b];
+        /* a pair with nothing awake that moves has nothing new to say */
+        if (!(a->awake && a->type != GA2D_BODY_STATIC) && !(b->awake && b->type != GA2D_BODY_STATIC)) continue;
+        if (!ga2d_aabb_overlaps(ga2d__fat_box(w, &w->shapes[ct->shape_a]), ga2d__fat_box(w, &w->shapes[ct->shape_b]))) {
+            ct->flags = GA2D__CONTACT_DISJOINT;
+            c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
+            continue;
+        }
+        xa = ga2d__body_xf(a);
+        xb = ga2d__body_xf(b);
+        if (ga2d__reuse_manifold(w, ct, a, b, xa, xb)) {
+            ++w->counters.manifolds_carried;
+        } else {
+            /* keep points as far apart as the pair can close in one step:
+               speculative points only let bodies approach up to the gap */
+            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
+                              GA2D__FABS(b->sim.w) * b->extent;
+            ga2d__collide_geometries(&w->shapes[ct->shape_a].geom, xa, &w->shapes[ct->shape_b].geom, xb, w->slop,
+                                     w->speculative + reach * c->dt, &m);
+            ga2d__hold_manifold(&ct->held, xa, xb, &m);
+            ga2d__warm_points(&ct->manifold, &m, GA2D__R(0.5) * w->slop);
+            touching = m.count > 0;
+            if (!touching && ct->touching) { /* the end is reported with the last touching manifold */
+                ct->flags |= GA2D__CONTACT_ENDED;
+                ct->end_normal = m.normal;
+            } else {
+                ct->manifold = m;
+            }
+            if (touching && !ct->touching) ct->flags |= GA2D__CONTACT_BEGAN;
+            ct->touching = touching;
+        }
+        if (ct->touching && (!a->awake || !b->awake)) ct->flags |= GA2D__CONTACT_WAKES;
+        if (ct->flags) c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
+    }
+}
+
+/* Book-keeping before the narrowphase: a clear bit for every pool contact.
+   Out of memory, the step reports it and keeps the last manifolds. */
+static int ga2d__reserve_changes(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    if (!ga2d__grow(&w->mem, (void **)&c->changed, &c->changed_capacity, (w->contact_used + 63) / 64,
+                    sizeof *c->changed)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    ga2d__bits_zero(c->changed, w->contact_used);
+    w->counters.manifolds_carried = 0;
+    return 1;
+}
+
+/* Book-keeping, in pool order, of the contacts the narrowphase flagged:
+   touching begins and ends become events, a contact whose boxes parted is
+   destroyed, and a touch wakes a sleeping island once every contact is
+   updated (waking in the stage would let the pool's order decide which
+   contacts of the woken island are updated in this step). */
+static void ga2d__contact_changes(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int ci, used = w->contact_used, wakes = 0;
+    for (ci = ga2d__next_bit(c->changed, 0, used); ci >= 0; ci = ga2d__next_bit(c->changed, ci + 1, used)) {
+        ga2d__contact *ct = &w->contacts[ci];
+        int f = ct->flags;
+        if (f & GA2D__CONTACT_DISJOINT) {
+            ct->flags = 0;
+            if (ct->touching) ga2d__push_event(w, 1, ct);
+            ga2d__destroy_contact(w, ci);
+            continue;
+        }
+        if (f & GA2D__CONTACT_ENDED) {
+            ga2d__push_event(w, 1, ct);
+            memset(&ct->manifold, 0, sizeof ct->manifold); /* as ga2d__collide left it: no point */
+            ct->manifold.normal = ct->end_normal;
+        }
+        if (f & GA2D__CONTACT_BEGAN) ga2d__push_event(w, 0, ct);
+        ct->flags = f & GA2D__CONTACT_WAKES;
+        wakes += ct->flags != 0;
+    }
+    for (ci = ga2d__next_bit(c->changed, 0, used); ci >= 0 && wakes > 0; ci = ga2d__next_bit(c->changed, ci + 1, used)) {
+        ga2d__contact *ct = &w->contacts[ci];
+        if (ct->next_free != -2 || !ct->flags) continue;
+        ct->flags = 0;
+        --wakes;
+        ga2d__wake(w, ct->a);
+        ga2d__wake(w, ct->b);
+    }
 }
 
 /* ========================================================== contact solver */
@@ -10031,279 +10306,6 @@ static void ga2d__integrate_positions(ga2d__step_context *c)
         ga2d__run(c, ga2d__cache_field, n);
     }
     ga2d__run(c, ga2d__close_kick, n);
-}
-
-/* ------------------------------------------------------- collision stages */
-/* The stages flag what book-keeping must visit in bit sets (a bit per
-   item, set by the item's own stage), visited in item order. */
-/* The first set bit from i on, below n, or -1. */
-static int ga2d__next_bit(const uint64_t *bits, int i, int n)
-{
-    for (; i < n; i = (i | 63) + 1) {
-        uint64_t w = bits[i >> 6] >> (i & 63);
-        if (w) {
-            while (!(w & 1)) {
-                w >>= 1;
-                ++i;
-            }
-            return i < n ? i : -1;
-        }
-    }
-    return -1;
-}
-
-/* Bits [0, n) cleared. */
-static void ga2d__bits_zero(uint64_t *bits, int n)
-{
-    if (n > 0) memset(bits, 0, (size_t)((n + 63) / 64) * sizeof *bits);
-}
-
-/* Stage, over the moving bodies: a body any of whose shapes' fat boxes no
-   longer holds what it can reach in this step gets new boxes for all its
-   shapes, written into their own tree leaves (a leaf's box is read by
-   nothing else until ga2d__refit_proxies moves it in the tree), and its
-   bit. */
-static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int k;
-    for (k = begin; k < end; ++k) {
-        const ga2d__body *b = &w->bodies[w->moving[k]];
-        int s, refit = 0;
-        ga2d_aabb fat;
-        for (s = b->shape_head; s >= 0 && !refit; s = w->shapes[s].next) refit = ga2d__needs_refit(w, b, &w->shapes[s], &fat);
-        if (!refit) continue;
-        if (b->shape_count == 1) {
-            const ga2d__shape *sh = &w->shapes[b->shape_head];
-            ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
-        } else {
-            for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
-                const ga2d__shape *sh = &w->shapes[s];
-                ga2d__needs_refit(w, b, sh, &fat);
-                ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
-            }
-        }
-        c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
-    }
-}
-
-/* Book-keeping: the marked bodies' new shape boxes move in the tree, in
-   the moving list's order (the tree's shape depends on it), and the
-   shapes queue for pair finding; then the queue is sorted, without
-   destroyed shapes and repeats (a slot destroyed and reused). */
-static void ga2d__refit_proxies(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int k, n;
-    for (k = ga2d__next_bit(c->refits, 0, w->moving_count); k >= 0; k = ga2d__next_bit(c->refits, k + 1, w->moving_count)) {
-        int s;
-        for (s = w->bodies[w->moving[k]].shape_head; s >= 0; s = w->shapes[s].next) {
-            ga2d__shape *sh = &w->shapes[s];
-            ga2d__tree *t = ga2d__tree_of(w, sh);
-            ga2d__tree_move(t, sh->proxy, t->nodes[sh->proxy].box);
-            ga2d__buffer_move(w, s);
-        }
-    }
-    if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
-    for (k = 0, n = 0; k < w->move_count; ++k) {
-        int s = w->move_buf[k];
-        if (w->shapes[s].type >= 0 && w->shapes[s].in_move && (n == 0 || w->move_buf[n - 1] != s))
-            w->move_buf[n++] = s;
-    }
-    w->move_count = n;
-    w->new_pair_count = 0;
-}
-
-/* Stage, over the queued shapes: each queued shape (moved out of its
-   box, created, teleported, refiltered) is queried against the moving
-   tree (and, if its body moves, the static tree); the pairs it finds are
-   listed. */
-static void ga2d__find_pairs(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int k;
-    for (k = begin; k < end; ++k) {
-        int s = w->move_buf[k];
-        ga2d__pair_query q;
-        ga2d_aabb box = ga2d__fat_box(w, &w->shapes[s]);
-        q.w = w;
-        q.self = s;
-        ga2d__tree_query(&w->trees[1], box, ga2d__pair_found, &q);
-        if (w->bodies[w->shapes[s].body].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
-    }
-}
-
-/* Book-keeping: the new pairs' contacts are created in key order, so the
-   result is a function of the world's state alone, and the queue empties. */
-static void ga2d__create_pairs(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int k, n;
-    if (w->new_pair_count > 1) qsort(w->new_pairs, (size_t)w->new_pair_count, sizeof *w->new_pairs, ga2d__cmp_u64);
-    for (k = 0, n = w->new_pair_count; k < n; ++k) {
-        uint64_t key = w->new_pairs[k];
-        if (k > 0 && w->new_pairs[k - 1] == key) continue;
-        if (!ga2d__create_contact(w, (int)(key >> 32), (int)(uint32_t)key)) c->error = GA2D_ERR_OUT_OF_MEMORY;
-    }
-    /* out of memory: some pairs were not made, so every queued shape stays
-       queued and is searched again next step (pairs already made are kept) */
-    if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
-    for (k = 0; k < w->move_count; ++k) w->shapes[w->move_buf[k]].in_move = 0;
-    w->move_count = 0;
-}
-
-/* A point's impulses taken over from point j of the last manifold. */
-static void ga2d__take_impulses(ga2d_manifold_point *p, const ga2d_manifold *last, int j)
-{
-    p->normal_impulse = last->points[j].normal_impulse;
-    p->tangent_impulse = last->points[j].tangent_impulse;
-    p->persisted = 1;
-}
-
-/* Warm starting: each point of a new manifold m takes the impulses of the
-   last manifold's point with its id; a point whose id is new takes those
-   of a last point that no id claimed and that lay within `near` of it (A's
-   anchors compared: the relative ones, so nothing large is subtracted).
-   One touch can be named two ways: when two faces are nearly parallel
-   (as in a resting pile of rounded polygons), which of them is the
-   reference turns on a tolerance the faces' tilt sits at, so rounding
-   flips it between steps, and each flip renamed both points.  Started
-   cold, a loaded contact dropped its load for a step; in float a pile's
-   rounding flipped one such pair every few steps, and the kicks fed a
-   cycle that never settled (1.6e-2 m/s after 300 s, bodies 100 x their
-   rest speed).  `near` is half a slop: as far as ga2d__reuse_manifold
-   lets a point be carried and still be the same touch. */
-static void ga2d__warm_points(const ga2d_manifold *last, ga2d_manifold *m, ga2d_real near)
-{
-    int i, j, taken = 0; /* bit j: last point j gave its impulses */
-    for (i = 0; i < m->count; ++i)
-        for (j = 0; j < last->count; ++j)
-            if (last->points[j].id == m->points[i].id) {
-                ga2d__take_impulses(&m->points[i], last, j);
-                taken |= 1 << j;
-            }
-    for (i = 0; i < m->count; ++i) {
-        ga2d_real best = near;
-        int k = -1;
-        if (m->points[i].persisted) continue;
-        for (j = 0; j < last->count; ++j) {
-            ga2d_real d;
-            if (taken & (1 << j)) continue;
-            d = ga2d__length(ga2d_vec_sub(m->points[i].anchor_a, last->points[j].anchor_a));
-            if (d <= best) {
-                best = d;
-                k = j;
-            }
-        }
-        if (k < 0) continue;
-        ga2d__take_impulses(&m->points[i], last, k);
-        taken |= 1 << k;
-    }
-}
-
-/* Stage, over the contact pool: each contact whose fat boxes still
-   overlap gets a new manifold (or its last one carried along,
-   ga2d__reuse_manifold), whose points take over the impulses of the old
-   points with the same id (warm starting).  What changes in the world
-   (events, destruction, waking) is left to ga2d__contact_changes. */
-static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
-{
-    ga2d_world *w = c->world;
-    int ci;
-    for (ci = begin; ci < end; ++ci) {
-        ga2d__contact *ct = &w->contacts[ci];
-        const ga2d__body *a, *b;
-        ga2d_transform xa, xb;
-        ga2d_manifold m;
-        int touching;
-        if (ct->next_free != -2) continue;
-        a = &w->bodies[ct->a];
-        b = &w->bodies[ct->b];
-        /* a pair with nothing awake that moves has nothing new to say */
-        if (!(a->awake && a->type != GA2D_BODY_STATIC) && !(b->awake && b->type != GA2D_BODY_STATIC)) continue;
-        if (!ga2d_aabb_overlaps(ga2d__fat_box(w, &w->shapes[ct->shape_a]), ga2d__fat_box(w, &w->shapes[ct->shape_b]))) {
-            ct->flags = GA2D__CONTACT_DISJOINT;
-            c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
-            continue;
-        }
-        xa = ga2d__body_xf(a);
-        xb = ga2d__body_xf(b);
-        if (ga2d__reuse_manifold(w, ct, a, b, xa, xb)) {
-            ++w->counters.manifolds_carried;
-        } else {
-            /* keep points as far apart as the pair can close in one step:
-               speculative points only let bodies approach up to the gap */
-            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
-                              GA2D__FABS(b->sim.w) * b->extent;
-            ga2d__collide_geometries(&w->shapes[ct->shape_a].geom, xa, &w->shapes[ct->shape_b].geom, xb, w->slop,
-                                     w->speculative + reach * c->dt, &m);
-            ga2d__hold_manifold(&ct->held, xa, xb, &m);
-            ga2d__warm_points(&ct->manifold, &m, GA2D__R(0.5) * w->slop);
-            touching = m.count > 0;
-            if (!touching && ct->touching) { /* the end is reported with the last touching manifold */
-                ct->flags |= GA2D__CONTACT_ENDED;
-                ct->end_normal = m.normal;
-            } else {
-                ct->manifold = m;
-            }
-            if (touching && !ct->touching) ct->flags |= GA2D__CONTACT_BEGAN;
-            ct->touching = touching;
-        }
-        if (ct->touching && (!a->awake || !b->awake)) ct->flags |= GA2D__CONTACT_WAKES;
-        if (ct->flags) c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
-    }
-}
-
-/* Book-keeping before the narrowphase: a clear bit for every pool contact.
-   Out of memory, the step reports it and keeps the last manifolds. */
-static int ga2d__reserve_changes(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    if (!ga2d__grow(&w->mem, (void **)&c->changed, &c->changed_capacity, (w->contact_used + 63) / 64,
-                    sizeof *c->changed)) {
-        c->error = GA2D_ERR_OUT_OF_MEMORY;
-        return 0;
-    }
-    ga2d__bits_zero(c->changed, w->contact_used);
-    w->counters.manifolds_carried = 0;
-    return 1;
-}
-
-/* Book-keeping, in pool order, of the contacts the narrowphase flagged:
-   touching begins and ends become events, a contact whose boxes parted is
-   destroyed, and a touch wakes a sleeping island once every contact is
-   updated (waking in the stage would let the pool's order decide which
-   contacts of the woken island are updated in this step). */
-static void ga2d__contact_changes(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int ci, used = w->contact_used, wakes = 0;
-    for (ci = ga2d__next_bit(c->changed, 0, used); ci >= 0; ci = ga2d__next_bit(c->changed, ci + 1, used)) {
-        ga2d__contact *ct = &w->contacts[ci];
-        int f = ct->flags;
-        if (f & GA2D__CONTACT_DISJOINT) {
-            ct->flags = 0;
-            if (ct->touching) ga2d__push_event(w, 1, ct);
-            ga2d__destroy_contact(w, ci);
-            continue;
-        }
-        if (f & GA2D__CONTACT_ENDED) {
-            ga2d__push_event(w, 1, ct);
-            memset(&ct->manifold, 0, sizeof ct->manifold); /* as ga2d__collide left it: no point */
-            ct->manifold.normal = ct->end_normal;
-        }
-        if (f & GA2D__CONTACT_BEGAN) ga2d__push_event(w, 0, ct);
-        ct->flags = f & GA2D__CONTACT_WAKES;
-        wakes += ct->flags != 0;
-    }
-    for (ci = ga2d__next_bit(c->changed, 0, used); ci >= 0 && wakes > 0; ci = ga2d__next_bit(c->changed, ci + 1, used)) {
-        ga2d__contact *ct = &w->contacts[ci];
-        if (ct->next_free != -2 || !ct->flags) continue;
-        ct->flags = 0;
-        --wakes;
-        ga2d__wake(w, ct->a);
-        ga2d__wake(w, ct->b);
-    }
 }
 
 /* ------------------------------------------------------ the substep plan */
