@@ -10,7 +10,7 @@
      x =  16 .. 20   flat;
      x =  20 .. 27.7 a straight 15 degree ramp, 8 m along its slope;
      then a plateau 10 m long ending in a wall.
-   The car: a 2.4 m x 0.5 m chassis of 2.4 kg; two discs of radius 0.4 m
+   The car: a 2.4 m x 0.5 m chassis of 1.2 kg; two discs of radius 0.4 m
    and 0.5 kg (density 1), on wheel joints 0.9 m either side of the
    chassis's middle, 0.5 m below it, whose suspension is a 4 Hz spring
    with damping ratio 0.7 and whose motors drive at DRIVE rad/s (clockwise:

@@ -214,6 +214,7 @@ static void set_motors(car *s, double speed)
      taken 4 times (the bumps' crests are 0.99 /m curved: v^2 kappa =
      1.6 g): sink <= slop + 4 m g / (m_w omega_c^2) + v sin(15) /
      omega_c.  A wheel through the chain would sink 0.4 m.
+     Parked, both wheels touch the ramp: sink >= -slop.
    - creep: braked, the car stops, and its suspension and pitch modes
      decay (the heave's at zeta 2 pi 4 m_eff / (m_c / 2) = 7 /s, with
      m_eff the suspension's mass; the pitch's less: taken at half, 3.5
@@ -264,6 +265,8 @@ static void car_over_bumps(void)
             step(s.w);
             for (b = 0; b < 3; ++b)
                 if (len(ga2d_body_velocity(s.w, s.body[b])) > fastest) fastest = len(ga2d_body_velocity(s.w, s.body[b]));
+            for (k = 0; k < 2; ++k) /* both wheels on the ramp: touching it, within a slop */
+                CHECK(wheel_sink(&s, k) >= -GA2D_LINEAR_SLOP && wheel_sink(&s, k) <= sink_bound);
         }
         creep = len(ga2d_vec_sub(ga2d_body_center(s.w, s.body[0]), parked));
         /* drive on to the plateau's end: 12 m at 4 m/s, 10 s is ample */
@@ -295,9 +298,10 @@ static void car_over_bumps(void)
 /* ============================================================== bridge */
 /* examples/bridge.c's bridge: 20 planks of 1 m x 0.25 m (0.25 kg) on 21
    revolute joints spanning a 20 m gap exactly between two static posts,
-   a 1 m box of 10 kg (40 planks) dropped on its middle from 3 m above
-   the deck.  Each joint's motor, at speed 0 with at most `friction` N m,
-   is the hinge's friction (examples/bridge.c: a rusty hinge).
+   a 1 m box of 10 kg (40 planks; also 2.5 and 40 kg) dropped on its
+   middle from 3 m above the deck.  Each joint's motor, at speed 0 with
+   at most `friction` N m (5, or 0: off), is the hinge's friction
+   (examples/bridge.c: a rusty hinge).
 
    The planks span the gap exactly, so the deck sags only as far as the
    joints stretch: each is the spring k_j = m_eff omega_s^2 along the
@@ -314,25 +318,25 @@ static void car_over_bumps(void)
      stiffness, the force being T along the deck plus, where the box
      sits, its push on the tilted planks (below its weight m_b g): a
      separation <= (H / cos th_max + m_b g) / k, for k of each joint.
-   - Settling: the box bounces on the deck with its weight's string
-     sag d = a th: th^3 = 10 W_b / (a k_j) (the half's stretch 10 T /
-     k_j equals a th^2 / 2, T = W_b / (2 th); the box's weight W_b alone
-     is the smallest load, so the shallowest angle).  The joints' dampers
-     act on the bounce through the stretch, d(stretch)/dy = th a side:
-     the bounce sees c_v = 2 th^2 c_a, and its amplitude decays at c_v /
-     (2 M), M the box and every plank (the most that moves).  The dampers
-     alone (no joint friction, no numerical damping: both only take
-     energy out) bring the box from its landing speed sqrt(2 g 2.375 m)
-     to the sleep speed (0.05 m/s) within ln(v0 / 0.05) (2 M) / c_v,
-     and then the island sleeps after 0.5 s at rest.  That is why the
-     bridge rings for tens of seconds: the dampers are sized for the
-     planks' m_eff (0.125 kg), the load is 80 times that; the bounce's
-     damping ratio is zeta sqrt(m_eff / M) small.  Box2D v3 uses the
-     same feedback (60 Hz, ratio 2) and rings as long (README). */
+   - Settling: the box bounces on the deck, which sags under its weight
+     W_b to th = d / a with th^3 = 10 W_b / (a k_j) (the half's stretch
+     10 T / k_j equals a th^2 / 2 with T = W_b / (2 th); the box's weight
+     alone is the smallest load, so the shallowest angle).  The box
+     lowered by dy stretches each half by th dy, so the joints' dampers
+     resist its bounce as c_v = 2 th^2 c_a, and the bounce's amplitude
+     decays at c_v / (2 M), M the box and every plank (the most that
+     moves).  The dampers alone (joint friction and the step's numerical
+     damping only take more energy out) bring the box from its landing
+     speed sqrt(2 g 2.375 m) to the sleep speed (0.05 m/s) within
+     ln(v0 / 0.05) 2 M / c_v, and the island sleeps 0.5 s later.  That
+     is why the bridge rings for tens of seconds: the dampers are sized
+     for the planks' m_eff (0.125 kg), the load is 80 times that, and
+     the bounce's damping ratio c_v / (2 sqrt(k_v M)) is about 0.01 (k_v
+     = 2 (k_a th^2 + T / a), its stiffness).  Box2D v3 uses the same
+     feedback (60 Hz, ratio 2) and rings as long (README). */
 #define PLANKS 20
 #define BRIDGE_JOINTS (PLANKS + 1)
 #define DECK_Y 5.0
-#define BOX_KG 10.0
 
 typedef struct bridge {
     ga2d_world *w;
@@ -354,7 +358,7 @@ static void hinge(bridge *s, int k, ga2d_body_id a, ga2d_body_id b, double x, do
     CHECK_RESULT(ga2d_revolute_joint_create_checked(s->w, &jd, &s->j[k]), GA2D_OK);
 }
 
-static void make_bridge(bridge *s, const ga2d_world_def *wd, double friction)
+static void make_bridge(bridge *s, const ga2d_world_def *wd, double friction, double box_kg)
 {
     ga2d_body_def bd = ga2d_default_body_def();
     ga2d_body_id left, right, prev;
@@ -380,7 +384,7 @@ static void make_bridge(bridge *s, const ga2d_world_def *wd, double friction)
     }
     hinge(s, PLANKS, prev, right, 10, friction);
     bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
-    bd.density = (ga2d_real)BOX_KG;
+    bd.density = (ga2d_real)box_kg;
     bd.position = v2(0, DECK_Y + 3);
     s->body[PLANKS] = ga2d_body_create(s->w, &bd);
 }
@@ -394,19 +398,20 @@ static double bridge_separation(const bridge *s, int k)
 
 static void bridge_settles(void)
 {
-    static const double frictions[2] = {5, 0};
-    int a, f;
+    static const double frictions[2] = {5, 0}, box_kgs[3] = {10, 2.5, 40};
+    int a, f, m;
+    for (m = 0; m < 3; ++m)
     for (a = 0; a < 2; ++a)
         for (f = 0; f < 2; ++f) {
             ga2d_world_def wd = world_def(a, 1);
-            const double mp = 0.25, mb = BOX_KG, half = 10, v_sleep = 0.05, time_to_sleep = 0.5;
+            const double mp = 0.25, mb = box_kgs[m], half = 10, v_sleep = 0.05, time_to_sleep = 0.5;
             const double kj = mp / 2 * omega_s() * omega_s(), cj = 2 * JOINT_ZETA * mp / 2 * omega_s();
             const double th = cbrt(10 * mb * G / (half * kj)), cv = 2 * th * th * cj / 10, M = mb + PLANKS * mp;
             const double v0 = sqrt(2 * G * 2.375), t_bound = log(v0 / v_sleep) * 2 * M / cv + time_to_sleep;
             double worst = 0, rest = 0, rest_bound = 0, asleep_at = -1, th0, th20, H, thmax;
             bridge s;
             int i, k;
-            make_bridge(&s, &wd, frictions[f]);
+            make_bridge(&s, &wd, frictions[f], mb);
             for (i = 1; i <= (int)(t_bound / DT) + 1 && asleep_at < 0; ++i) {
                 step(s.w);
                 for (k = 0; k < BRIDGE_JOINTS; ++k)
@@ -426,10 +431,10 @@ static void bridge_settles(void)
                 if (bound > rest_bound) rest_bound = bound;
             }
             if (verbose())
-                printf("joint scenes: bridge (%s, joint friction %g N m): asleep at %.4g s (<= %.4g: the joints' dampers "
+                printf("joint scenes: bridge (%s, %g kg box, joint friction %g N m): asleep at %.4g s (<= %.4g: the joints' dampers "
                        "alone, decay %.3g /s), worst separation %.3g m (at impact), at rest %.3g m (<= %.3g: "
                        "tension %.4g N at the posts, sag angle %.3g rad; derived %.3g rad), sag %.3g m\n",
-                       def_name[a], frictions[f], asleep_at, t_bound, cv / (2 * M),
+                       def_name[a], mb, frictions[f], asleep_at, t_bound, cv / (2 * M),
                        worst, rest, rest_bound, H / cos(thmax), thmax, th,
                        DECK_Y + 0.625 - (double)ga2d_body_center(s.w, s.body[PLANKS]).y);
             ga2d_world_destroy(s.w);
