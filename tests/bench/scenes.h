@@ -13,8 +13,8 @@
 
    A body is a box (hx, hy) unless it lists shapes of its own (shape_count
    > 0: circles, capsules, convex polygons with an optional rounding, in
-   the body's frame; s.shapes).  The first six scenes are boxes only, which
-   is all the peer runner builds.  Two scenes use the shapes, and bodies
+   the body's frame; s.shapes).  The first six scenes are boxes only; the
+   peer runner builds those and joint_grid (bodies of one circle).  Two scenes use the shapes, and bodies
    that come and go: a body is made just before step `birth` and, when
    `death` > 0, destroyed just before step `death`.  Bodies are listed in
    order of birth, so a driver walks them with one cursor:
