@@ -296,7 +296,7 @@ static void tree_find_pairs(tree_bp *bp)
         if (k > 0 && bp->new_pairs[k - 1] == key) continue;
         if (!ga2d__pairs_reserve(bp->w)) exit(2);
         ga2d__pairs_put(bp->w->pair_keys, bp->w->pair_vals, bp->w->pair_capacity, key, 0);
-        ++bp->w->pair_count;
+        ++bp->w->contact_count; /* the pair set's fill: one key per contact (ga2d__pairs_reserve) */
         if (bp->list_count == bp->list_cap) {
             bp->list_cap = bp->list_cap ? 2 * bp->list_cap : 1024;
             bp->list = (uint64_t *)realloc(bp->list, (size_t)bp->list_cap * sizeof *bp->list);
@@ -314,6 +314,7 @@ static void tree_find_pairs(tree_bp *bp)
         if (ga2d_aabb_overlaps(tree_of(bp, a)->nodes[bp->proxy[a]].box, tree_of(bp, b)->nodes[bp->proxy[b]].box))
             continue;
         ga2d__pairs_remove(bp->w, key);
+        --bp->w->contact_count;
         bp->list[k--] = bp->list[--bp->list_count];
         ++bp->ended;
     }

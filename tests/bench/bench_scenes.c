@@ -17,6 +17,14 @@
    bit: a run that does not is reported, as is a run that fails.
    Single-machine times: compare rows with each other.
 
+   A constraint's cost: each scene's whole step over the constraints it
+   solved (contacts and joints per timed step, from the counters), in µs
+   per constraint.  When joint_grid (joints only) and large_pyramid
+   (contacts only, about as many bodies, the same 4 substeps) both run,
+   a last line and CSV row give µs per joint over µs per contact: the
+   joints' goal is a ratio of at most 1.  joint_grid also prints its
+   worst joint separation at the end.
+
      bench_scenes [out.csv [scene ...]]
 
    writes the CSV when given a path, and runs only the named scenes (of
@@ -36,7 +44,7 @@
 static const char *const SCENES[] = {
     "large_pyramid", "many_pyramids", "smash", "tumbler", "pyramid20", "stack10",
 #ifndef BENCH_BOXES_ONLY
-    "rain",          "mixed_pile",
+    "rain",          "mixed_pile",    "joint_grid",
 #endif
 };
 #define SCENE_COUNT ((int)(sizeof SCENES / sizeof SCENES[0]))
@@ -50,17 +58,52 @@ static int selected(int argc, char **argv, const char *name)
     return argc <= 2;
 }
 
+/* The two scenes whose cost per constraint is compared */
+#define JOINT_SCENE "joint_grid"
+#define CONTACT_SCENE "large_pyramid"
+
+/* What a scene's runs solved per timed step (the first run's: ga2d is
+   deterministic, so every run solves the same), and its median ms/step. */
+typedef struct solved {
+    double contacts, joints, ms;
+    int seen;
+} solved;
+
+/* µs of a whole step per constraint solved in it (NaN when none). */
+static double us_per_constraint(const solved *v)
+{
+    double n = v->contacts + v->joints;
+    return n > 0 ? 1e3 * v->ms / n : (double)NAN;
+}
+
 /* One table row and CSV line; returns 0 when every run went well. */
 static int report(FILE *csv, const char *name, int bodies, double *ms, int runs, const char *figure_name, double figure,
-                  int failed, int differ, double seconds)
+                  int failed, int differ, double seconds, solved *v)
 {
     double lo = sr_min(ms, runs), med = sr_median(ms, runs);
+    v->ms = med;
     printf("%-14s %7d %12.4g %10.4g  %-26s %.3e%s%s\n", name, bodies, med, lo, figure_name, figure,
            differ ? "  (runs differ!)" : "", failed ? "  (FAILED)" : "");
     if (csv)
-        fprintf(csv, "%s,%d,%.6g,%.6g,\"%s\",%.9g,%d,%d,%.2f\n", name, bodies, med, lo, figure_name, figure, failed,
-                differ, seconds);
+        fprintf(csv, "%s,%d,%.6g,%.6g,\"%s\",%.9g,%d,%d,%.2f,%.6g,%.6g,%.6g\n", name, bodies, med, lo, figure_name,
+                figure, failed, differ, seconds, v->contacts, v->joints, us_per_constraint(v));
     return failed || differ;
+}
+
+/* The cost of a joint against a contact's, when both scenes ran. */
+static void compare_costs(FILE *csv, const solved *joint, const solved *contact)
+{
+    double per_joint = us_per_constraint(joint), per_contact = us_per_constraint(contact);
+    printf("cost per constraint (whole step / constraints solved per step; median ms/step):\n");
+    printf("  %-14s %8.0f joints   %9.4g ms/step  %.4g us per joint\n", JOINT_SCENE, joint->joints, joint->ms,
+           per_joint);
+    printf("  %-14s %8.0f contacts %9.4g ms/step  %.4g us per contact\n", CONTACT_SCENE, contact->contacts, contact->ms,
+           per_contact);
+    printf("  per joint / per contact: %.3f (goal: at most 1)\n", per_joint / per_contact);
+    if (csv)
+        fprintf(csv, "%s/%s,%d,%.6g,%.6g,\"us per joint / us per contact\",%.9g,0,0,0,%.6g,%.6g,%.6g\n", JOINT_SCENE,
+                CONTACT_SCENE, 0, per_joint, per_contact, per_joint / per_contact, contact->contacts, joint->joints,
+                per_joint);
 }
 
 int main(int argc, char **argv)
@@ -68,6 +111,7 @@ int main(int argc, char **argv)
     const int asked = sr_runs_from_env("BENCH_RUNS", DEFAULT_RUNS), runs = asked < MAX_RUNS ? asked : MAX_RUNS;
     FILE *csv = argc > 1 ? fopen(argv[1], "w") : NULL;
     double ms[MAX_RUNS], start = sr_now_ms();
+    solved joint = {0, 0, 0, 0}, contact = {0, 0, 0, 0};
     int i, r, bad = 0;
     if (argc > 1 && !csv) {
         fprintf(stderr, "bench_scenes: cannot write %s\n", argv[1]);
@@ -76,12 +120,15 @@ int main(int argc, char **argv)
     printf("bench_scenes (ga2d_real %s): defaults, dt = 1/60; ms per ga2d_world_step over %d runs\n",
            sizeof(ga2d_real) == sizeof(double) ? "double" : "float", runs);
     printf("%-14s %7s %12s %10s  %-26s %s\n", "scene", "bodies", "ms/step med", "min", "figure", "value");
-    if (csv) fprintf(csv, "scene,bodies,ms_per_step_median,ms_per_step_min,figure,value,failed,runs_differ,seconds\n");
+    if (csv)
+        fprintf(csv, "scene,bodies,ms_per_step_median,ms_per_step_min,figure,value,failed,runs_differ,seconds,"
+                     "contacts_per_step,joints_per_step,us_per_constraint\n");
 
     for (i = 0; i < SCENE_COUNT; ++i) {
         bench_scene s;
         ga2d_world_def wd;
-        double figure = 0, t0 = sr_now_ms();
+        solved v = {0, 0, 0, 1};
+        double figure = 0, gap = 0, t0 = sr_now_ms();
         int failed = 0, differ = 0;
         if (!selected(argc, argv, SCENES[i])) continue;
         if (bench_scene_make(SCENES[i], &s) != 0) {
@@ -93,13 +140,22 @@ int main(int argc, char **argv)
             sr_result res;
             failed |= !sr_run_scene(&s, wd, 0, &res);
             ms[r] = res.ms;
-            if (r == 0)
+            if (r == 0) {
                 figure = res.figure;
-            else
+                gap = res.joint_gap;
+                v.contacts = res.contacts;
+                v.joints = res.joints;
+            } else {
                 differ |= memcmp(&figure, &res.figure, sizeof figure) != 0;
+            }
         }
         bad |= report(csv, s.name, s.peak, ms, runs, bench_scene_figure_name(&s), figure, failed, differ,
-                      (sr_now_ms() - t0) / 1e3);
+                      (sr_now_ms() - t0) / 1e3, &v);
+        if (s.joint_count > 0)
+            printf("%-14s %7s %d joints, %.0f solved per step; worst joint separation at the end %.3e m\n", "", "",
+                   s.joint_count, v.joints, gap);
+        if (strcmp(s.name, JOINT_SCENE) == 0 && !failed) joint = v;
+        if (strcmp(s.name, CONTACT_SCENE) == 0 && !failed) contact = v;
         bench_scene_free(&s);
     }
 
@@ -116,9 +172,13 @@ int main(int argc, char **argv)
             else
                 differ |= memcmp(&figure, &res.figure, sizeof figure) != 0;
         }
-        bad |= report(csv, sr_closed_form_name[i], sr_closed_form_bodies[i], ms, runs, sr_closed_form_figure[i], figure,
-                      failed, differ, (sr_now_ms() - t0) / 1e3);
+        {
+            solved none = {0, 0, 0, 0};
+            bad |= report(csv, sr_closed_form_name[i], sr_closed_form_bodies[i], ms, runs, sr_closed_form_figure[i],
+                          figure, failed, differ, (sr_now_ms() - t0) / 1e3, &none);
+        }
     }
+    if (joint.seen && contact.seen) compare_costs(csv, &joint, &contact);
     printf("bench_scenes: %.1f s in all\n", (sr_now_ms() - start) / 1e3);
     if (csv) fclose(csv);
     return bad;

@@ -85,9 +85,12 @@ static ga2d_vec sr__vec(double x, double y) { return ga2d_vec_make((ga2d_real)x,
 
 /* What one run reports. */
 typedef struct sr_result {
-    double ms;     /* ms per ga2d_world_step after the warm-up */
-    double figure; /* the scene's accuracy figure */
-    int ok;        /* built, every step GA2D_OK, figure finite */
+    double ms;        /* ms per ga2d_world_step after the warm-up */
+    double figure;    /* the scene's accuracy figure */
+    double contacts;  /* contacts the timed steps solved, per step (mean; counters.constraint_count) */
+    double joints;    /* joints the timed steps solved, per step (mean; counters.joints_solved) */
+    double joint_gap; /* a scene with joints: the worst separation at the end, m (bench_scene_joint_gap) */
+    int ok;           /* built, every step GA2D_OK, figure finite */
 } sr_result;
 
 /* --------------------------------------------------------- scenes.h scenes */
@@ -173,6 +176,61 @@ static ga2d_body_id sr__make_body(ga2d_world *w, const bench_scene *s, int i, in
     return id;
 }
 
+/* The scene's joints in w, in list order, between the bodies ids; 0 when
+   ga2d refuses one.  Built with BENCH_BOXES_ONLY (a header from before
+   joints), a scene with joints is refused. */
+static int sr__make_joints(ga2d_world *w, const bench_scene *s, const ga2d_body_id *ids)
+{
+#ifdef BENCH_BOXES_ONLY
+    (void)w;
+    (void)ids;
+    return s->joint_count == 0;
+#else
+    int i;
+    for (i = 0; i < s->joint_count; ++i) {
+        const bench_joint *j = &s->joints[i];
+        ga2d_revolute_joint_def d = ga2d_default_revolute_joint_def();
+        d.body_a = ids[j->a];
+        d.body_b = ids[j->b];
+        d.local_anchor_a = sr__vec(j->ax, j->ay);
+        d.local_anchor_b = sr__vec(j->bx, j->by);
+        if (ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &d))) return 0;
+    }
+    return 1;
+#endif
+}
+
+/* Joints the last step solved (0 in a header from before joints). */
+static int sr__joints_solved(const ga2d_world *w)
+{
+#ifdef BENCH_BOXES_ONLY
+    (void)w;
+    return 0;
+#else
+    return ga2d_world_get_counters(w).joints_solved;
+#endif
+}
+
+/* The worst joint separation of s in w at the end of a run, m (0 without
+   joints; NaN when out of memory). */
+static double sr__joint_gap(const ga2d_world *w, const bench_scene *s, const ga2d_body_id *ids)
+{
+    double *pose, gap;
+    int i;
+    if (s->joint_count == 0) return 0;
+    pose = (double *)malloc((size_t)s->count * 3 * sizeof *pose);
+    if (!pose) return (double)NAN;
+    for (i = 0; i < s->count; ++i) {
+        ga2d_vec p = ga2d_body_position(w, ids[i]);
+        pose[i] = (double)p.x;
+        pose[s->count + i] = (double)p.y;
+        pose[2 * s->count + i] = (double)ga2d_body_angle(w, ids[i]);
+    }
+    gap = bench_scene_joint_gap(s, pose, pose + s->count, pose + 2 * s->count);
+    free(pose);
+    return gap;
+}
+
 /* Sum of m v over the dynamic bodies alive, in double. */
 static void sr__momentum(const ga2d_world *w, const bench_scene *s, const ga2d_body_id *ids, double p[2])
 {
@@ -248,7 +306,7 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
     sr__death *deaths = (sr__death *)malloc((size_t)(s->count > 0 ? s->count : 1) * sizeof *deaths);
     ga2d_contact_data *contacts = NULL;
     const ga2d_real dt = (ga2d_real)s->dt;
-    double p0[2] = {0, 0}, total = 0, deepest = 0;
+    double p0[2] = {0, 0}, total = 0, deepest = 0, contacts_solved = 0, joints_solved = 0;
     ga2d_vec start = ga2d_vec_make(0, 0);
     int i, k, capacity = 0, born = 0, dead = 0, dying = 0, through = 0, ok = w != NULL && ids != NULL && deaths != NULL;
     memset(out, 0, sizeof *out);
@@ -265,7 +323,9 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
         ids[born] = sr__make_body(w, s, born, fixed_rotation);
         ok = !ga2d_body_id_is_null(ids[born]);
     }
-    if (ok && s->figure == BENCH_FIG_DRIFT) start = ga2d_body_center(w, ids[s->probe]);
+    /* joints join bodies made with the world (scenes.h) */
+    if (ok) ok = sr__make_joints(w, s, ids);
+    if (ok && (s->figure == BENCH_FIG_DRIFT || s->figure == BENCH_FIG_SAG)) start = ga2d_body_center(w, ids[s->probe]);
     if (ok && s->figure == BENCH_FIG_MOMENTUM) sr__momentum(w, s, ids, p0);
     for (k = 0; ok && k < s->steps; ++k) {
         double t0;
@@ -292,7 +352,11 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
         if (!ok) break;
         t0 = sr_now_ms();
         r = ga2d_world_step(w, dt);
-        if (k >= SR_WARMUP) total += sr_now_ms() - t0;
+        if (k >= SR_WARMUP) {
+            total += sr_now_ms() - t0;
+            contacts_solved += ga2d_world_get_counters(w).constraint_count;
+            joints_solved += sr__joints_solved(w);
+        }
         ok = r == GA2D_OK;
         if (s->figure == BENCH_FIG_PENETRATION) {
             double d = sr__deepest(w, &contacts, &capacity);
@@ -301,9 +365,14 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
     }
     if (ok) {
         out->ms = total / (s->steps - SR_WARMUP);
+        out->contacts = contacts_solved / (s->steps - SR_WARMUP);
+        out->joints = joints_solved / (s->steps - SR_WARMUP);
+        out->joint_gap = sr__joint_gap(w, s, ids);
         if (s->figure == BENCH_FIG_DRIFT) {
             ga2d_vec c = ga2d_body_center(w, ids[s->probe]);
             out->figure = hypot((double)c.x - (double)start.x, (double)c.y - (double)start.y);
+        } else if (s->figure == BENCH_FIG_SAG) {
+            out->figure = (double)start.y - (double)ga2d_body_center(w, ids[s->probe]).y;
         } else if (s->figure == BENCH_FIG_MOMENTUM) {
             double p[2];
             sr__momentum(w, s, ids, p);
@@ -315,7 +384,7 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
         } else {
             out->figure = deepest;
         }
-        ok = isfinite(out->figure);
+        ok = isfinite(out->figure) && isfinite(out->joint_gap);
     }
     out->ok = ok;
     free(contacts);

@@ -13,8 +13,8 @@
 
    A body is a box (hx, hy) unless it lists shapes of its own (shape_count
    > 0: circles, capsules, convex polygons with an optional rounding, in
-   the body's frame; s.shapes).  The first six scenes are boxes only, which
-   is all the peer runner builds.  Two scenes use the shapes, and bodies
+   the body's frame; s.shapes).  The first six scenes are boxes only; the
+   peer runner builds those and joint_grid (bodies of one circle).  Two scenes use the shapes, and bodies
    that come and go: a body is made just before step `birth` and, when
    `death` > 0, destroyed just before step `death`.  Bodies are listed in
    order of birth, so a driver walks them with one cursor:
@@ -24,6 +24,14 @@
                  oldest groups recycled once 40 columns stand;
      mixed_pile  5 000 circles, capsules, boxes and rounded polygons
                  poured in waves into a 50 m wide open box.
+
+   A scene may also list joints (s.joints): revolute joints (pins), each
+   between two of its bodies at a local anchor on each, made with the
+   world after the bodies, in list order; no limit, motor or spring, and
+   the joined bodies do not collide.  One scene has them:
+     joint_grid  Box2D v3's joint grid: 100 x 100 circles, each pinned to
+                 its neighbour above and to its left, hanging from seven
+                 static bodies in the middle of the top row.
 
    Every scene has one accuracy figure, which every driver measures the
    same way (s.figure):
@@ -37,7 +45,13 @@
                             centre below lo_y while between lo_x and hi_x)
                             when they are destroyed or at the end of the
                             run (rain; a bone that rolled off a floor's end
-                            falls past them all, and is not counted).
+                            falls past them all, and is not counted);
+     BENCH_FIG_SAG          how far the probe body ends below where it
+                            started (start y - end y; joint_grid's bottom
+                            corner), m.
+   A scene with joints also has their worst separation: the largest
+   distance between a joint's two anchors in the world at the end of the
+   run (bench_scene_joint_gap, from each engine's poses).
 
    Header-only and C89-friendly, usable from C and C++:
      bench_scene s;
@@ -50,7 +64,7 @@
 #include <string.h>
 
 enum { BENCH_STATIC = 0, BENCH_KINEMATIC = 1, BENCH_DYNAMIC = 2 };
-enum { BENCH_FIG_DRIFT = 0, BENCH_FIG_MOMENTUM = 1, BENCH_FIG_PENETRATION = 2, BENCH_FIG_THROUGH = 3 };
+enum { BENCH_FIG_DRIFT = 0, BENCH_FIG_MOMENTUM = 1, BENCH_FIG_PENETRATION = 2, BENCH_FIG_THROUGH = 3, BENCH_FIG_SAG = 4 };
 enum { BENCH_SHAPE_CIRCLE = 1, BENCH_SHAPE_CAPSULE = 2, BENCH_SHAPE_POLYGON = 3 };
 #define BENCH_MAX_VERTICES 8
 
@@ -83,6 +97,14 @@ typedef struct bench_body {
     double lo_x, hi_x, lo_y; /* below lo_y, between lo_x and hi_x */
 } bench_body;
 
+/* A revolute joint: bodies a and b (indices into s.bodies, both made with
+   the world), pinned where anchor (ax, ay) of a's frame meets anchor
+   (bx, by) of b's. */
+typedef struct bench_joint {
+    int a, b;
+    double ax, ay, bx, by;
+} bench_joint;
+
 typedef struct bench_scene {
     const char *name;
     int steps;          /* steps the benchmark runs */
@@ -93,12 +115,14 @@ typedef struct bench_scene {
     bench_body *bodies; /* malloc'd, in order of birth */
     int shape_count;    /* shapes of the bodies that list their own */
     bench_shape *shapes;
+    int joint_count;    /* joints, made after the bodies (0: none) */
+    bench_joint *joints;
     int peak;           /* the most bodies alive at once (count, if none come or go) */
     int figure;         /* BENCH_FIG_* */
     int probe;          /* BENCH_FIG_DRIFT: the body whose drift is measured */
     /* kinematic walls turn at pivot_w rad/s about (pivot_x, pivot_y) */
     double pivot_x, pivot_y, pivot_w;
-    int body_cap, shape_cap, failed; /* building: room, and no memory */
+    int body_cap, shape_cap, joint_cap, failed; /* building: room, and no memory */
 } bench_scene;
 
 /* ---------------------------------------------------------------- build */
@@ -188,6 +212,26 @@ static bench_shape *bench__shape_capsule(bench_scene *s, int k, double x1, doubl
     return sh;
 }
 
+/* A revolute joint between bodies a and b at their local anchors. */
+static void bench__joint(bench_scene *s, int a, int b, double ax, double ay, double bx, double by)
+{
+    bench_joint *j, *grown;
+    if (s->failed || a < 0 || b < 0) return;
+    grown = (bench_joint *)bench__grow(s->joints, &s->joint_cap, s->joint_count, sizeof *s->joints);
+    if (!grown) {
+        s->failed = 1;
+        return;
+    }
+    s->joints = grown;
+    j = &s->joints[s->joint_count++];
+    j->a = a;
+    j->b = b;
+    j->ax = ax;
+    j->ay = ay;
+    j->bx = bx;
+    j->by = by;
+}
+
 /* A pyramid of `base` boxes of half-extent a, its row i at
    y = (2i+1) a + base_y and box j (j = i..base-1) at
    x = (i+1) a + 2 (j-i) a + x0; returns the top box's index. */
@@ -204,9 +248,11 @@ static void bench_scene_free(bench_scene *s)
 {
     free(s->bodies);
     free(s->shapes);
+    free(s->joints);
     s->bodies = NULL;
     s->shapes = NULL;
-    s->count = s->shape_count = s->body_cap = s->shape_cap = 0;
+    s->joints = NULL;
+    s->count = s->shape_count = s->body_cap = s->shape_cap = s->joint_count = s->joint_cap = 0;
 }
 
 /* The velocity a kinematic wall at centre (x, y) needs to be where the
@@ -405,6 +451,64 @@ static void bench__mixed_pile(bench_scene *s)
         }
 }
 
+/* --------------------------------------------------------- joint_grid */
+/* After Box2D v3's "joint_grid" benchmark (erincatto/box2d,
+   shared/benchmarks.c, CreateJointGrid; its benchmark/main.c runs it 500
+   steps at 1/60 s, 4 substeps): N x N circles of radius 0.4 m, density 1,
+   body (k, i) at (k, -i) m for k, i = 0..N-1, made k by k and i by i
+   within; static where i = 0 and N/2 - 3 <= k <= N/2 + 3 (seven bodies in
+   the middle of the top row), else dynamic.  Each body (k, i) is pinned,
+   in this order, to the body above, (k, i - 1), at (0, -0.5) of that one
+   and (0, 0.5) of its own, and to the body on its left, (k - 1, i), at
+   (0.5, 0) of that one and (-0.5, 0) of its own: each pin sits halfway
+   between the two centres, so the grid starts with every joint closed.
+   The circles are in filter category 2 and collide only with other
+   categories, so no two meet: the step has no contacts, only joints.
+   Sleep off.  Box2D also pins the six neighbouring pairs of static bodies
+   in the top row, which no engine solves (ga2d refuses a joint with no
+   dynamic body); they are left out: 2 N (N - 1) - 6 joints. */
+#define BENCH_GRID_N 100
+#define BENCH_GRID_RADIUS 0.4
+#define BENCH_GRID_FIXED 3 /* static: the top row's bodies within this many of the middle */
+
+static void bench__joint_grid(bench_scene *s, int n)
+{
+    int k, i;
+    for (k = 0; k < n; ++k)
+        for (i = 0; i < n; ++i) {
+            int fixed = i == 0 && k >= n / 2 - BENCH_GRID_FIXED && k <= n / 2 + BENCH_GRID_FIXED;
+            int body = bench__push(s, fixed ? BENCH_STATIC : BENCH_DYNAMIC, k, -i, 0, 0);
+            bench_shape *sh = bench__shape(s, body, BENCH_SHAPE_CIRCLE);
+            if (!sh) return;
+            sh->radius = BENCH_GRID_RADIUS;
+            sh->category = 2;
+            sh->mask = ~2u;
+            /* above: (k, i - 1) is the body made just before (dynamic: i > 0) */
+            if (i > 0) bench__joint(s, body - 1, body, 0, -0.5, 0, 0.5);
+            /* left: (k - 1, i) was made n bodies before */
+            if (k > 0 && !(fixed && s->bodies[body - n].type == BENCH_STATIC))
+                bench__joint(s, body - n, body, 0.5, 0, -0.5, 0);
+        }
+    s->probe = n - 1; /* (0, N - 1): the bottom-left corner */
+}
+
+/* The largest distance between a joint's two anchors in the world, m,
+   given every body's pose (x[i], y[i], angle[i]: its origin and turn). */
+static double bench_scene_joint_gap(const bench_scene *s, const double *x, const double *y, const double *angle)
+{
+    double worst = 0;
+    int i;
+    for (i = 0; i < s->joint_count; ++i) {
+        const bench_joint *j = &s->joints[i];
+        double ca = cos(angle[j->a]), sa = sin(angle[j->a]), cb = cos(angle[j->b]), sb = sin(angle[j->b]);
+        double dx = x[j->b] + cb * j->bx - sb * j->by - (x[j->a] + ca * j->ax - sa * j->ay);
+        double dy = y[j->b] + sb * j->bx + cb * j->by - (y[j->a] + sa * j->ax + ca * j->ay);
+        double d = sqrt(dx * dx + dy * dy);
+        if (!(d <= worst)) worst = d; /* a NaN sticks */
+    }
+    return worst;
+}
+
 /* The most bodies alive at once. */
 static int bench__peak(const bench_scene *s)
 {
@@ -425,7 +529,7 @@ static int bench__peak(const bench_scene *s)
 
 /* Fills *s with the named scene; returns 0, or -1 for an unknown name or
    no memory.  Names: large_pyramid, many_pyramids, smash, tumbler,
-   pyramid20, stack10, rain, mixed_pile. */
+   pyramid20, stack10, rain, mixed_pile, joint_grid. */
 static int bench_scene_make(const char *name, bench_scene *s)
 {
     int i, j;
@@ -510,6 +614,11 @@ static int bench_scene_make(const char *name, bench_scene *s)
         s->steps = 1000;
         s->figure = BENCH_FIG_PENETRATION;
         bench__mixed_pile(s);
+    } else if (strcmp(name, "joint_grid") == 0) {
+        s->name = "joint_grid";
+        s->steps = 500;
+        s->figure = BENCH_FIG_SAG;
+        bench__joint_grid(s, BENCH_GRID_N);
     } else {
         return -1;
     }
@@ -524,8 +633,8 @@ static int bench_scene_make(const char *name, bench_scene *s)
 /* The accuracy figure's name, for tables. */
 static const char *bench_scene_figure_name(const bench_scene *s)
 {
-    static const char *names[4] = {"top box drift (m)", "momentum error (rel.)", "deepest penetration (m)",
-                                   "bodies through a floor"};
+    static const char *names[5] = {"top box drift (m)", "momentum error (rel.)", "deepest penetration (m)",
+                                   "bodies through a floor", "bottom corner's sag (m)"};
     return names[s->figure];
 }
 

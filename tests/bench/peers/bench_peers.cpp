@@ -1,7 +1,9 @@
 /* bench_peers.cpp - ga2d against Box2D 2.4.1 and Chipmunk 7 on the
    benchmark scenes of tests/bench/scenes.h (`make bench-peers`).
 
-   Every engine builds the same list of boxes; for each scene the three
+   Every engine builds the same list of bodies: boxes, or (joint_grid)
+   bodies of one circle at their origin, and the scene's revolute joints
+   (Box2D's b2RevoluteJoint, Chipmunk's pivot joint); for each scene the three
    engines run alternately (run r: ga2d, Box2D, Chipmunk, each with a fresh
    world; then ga2d built with -mavx2, where the CPU has AVX2), so a slow
    spell of the machine hits all of them.  Only the world
@@ -43,6 +45,7 @@
 #define PEERS_BOX2D_VERSION ""
 #endif
 
+static const double kPi = 3.14159265358979323846;
 static const int kUntimedSteps = 10;
 static const int kBox2dVelocityIterations = 8;
 static const int kBox2dPositionIterations = 3;
@@ -54,6 +57,13 @@ static const double kChipmunkSleepTime = 0.5;
 /* an overlap deeper than 40 % of a tumbler box: counted, as a sign of boxes
    passing through each other */
 static const double kDeepOverlap = 0.1;
+/* In a scene with joints, a body faster than this has blown up: the run
+   stops there and the engine's row says so (not a failure of the runner).
+   Four times the speed of a fall from 150 m, sqrt(2 g 150) = 55 m/s: the
+   joint grid is 99 m tall and the softest engine stretches it by half.
+   (Chipmunk 7's pivot grid passes it at about step 180; its broadphase
+   then takes a second a step.) */
+static const double kBlownUpSpeed = 200;
 
 static double now_ms()
 {
@@ -75,11 +85,27 @@ public:
     virtual bool awake(int i) const = 0;
 };
 
+/* The one shape of body b when it is a circle at the body's origin (the
+   bodies with shapes the runner builds); NULL for a box (no shapes of its
+   own) or anything else (then the world is not built). */
+static const bench_shape *lone_circle(const bench_scene &s, const bench_body &b)
+{
+    if (b.shape_count != 1) return NULL;
+    const bench_shape *sh = &s.shapes[b.shape_first];
+    return sh->kind == BENCH_SHAPE_CIRCLE && sh->x1 == 0 && sh->y1 == 0 ? sh : NULL;
+}
+
+/* A body the runner cannot build: shapes other than one centred circle. */
+static bool unsupported(const bench_scene &s, const bench_body &b) { return b.shape_count > 0 && !lone_circle(s, b); }
+
 /* One build of ga2d_peer.c: the generic one, or the -mavx2 one. */
 struct Ga2dBuild {
     ga2d_peer *(*create)(double gx, double gy, int sleep, int capacity);
     int (*add_box)(ga2d_peer *p, int type, double x, double y, double hx, double hy, double vx, double vy, double w,
                    double density, double friction, int asleep);
+    int (*add_circle)(ga2d_peer *p, int type, double x, double y, double radius, double density, double friction,
+                      unsigned category, unsigned mask);
+    int (*add_revolute)(ga2d_peer *p, int a, int b, double ax, double ay, double bx, double by);
     int (*step)(ga2d_peer *p, double dt);
     void (*pose)(const ga2d_peer *p, int i, double *x, double *y, double *angle);
     void (*velocity)(const ga2d_peer *p, int i, double *vx, double *vy);
@@ -88,7 +114,9 @@ struct Ga2dBuild {
     void (*destroy)(ga2d_peer *p);
 };
 
-#define GA2D_BUILD(P) {P##create, P##add_box, P##step, P##pose, P##velocity, P##is_awake, P##set_velocity, P##destroy}
+#define GA2D_BUILD(P)                                                                                               \
+    {P##create,   P##add_box,  P##add_circle,   P##add_revolute, P##step,                                          \
+     P##pose,     P##velocity, P##is_awake,     P##set_velocity, P##destroy}
 static const Ga2dBuild kGa2dGeneric = GA2D_BUILD(ga2d_peer_);
 #if PEERS_AVX2
 static const Ga2dBuild kGa2dAvx2 = GA2D_BUILD(ga2d_peer_avx2_);
@@ -100,7 +128,17 @@ public:
     {
         for (int i = 0; ok_ && i < s.count; ++i) {
             const bench_body &b = s.bodies[i];
-            ok_ = f_.add_box(p_, b.type, b.x, b.y, b.hx, b.hy, b.vx, b.vy, b.w, b.density, b.friction, b.asleep) == i;
+            const bench_shape *c = lone_circle(s, b);
+            if (unsupported(s, b))
+                ok_ = false;
+            else if (c)
+                ok_ = f_.add_circle(p_, b.type, b.x, b.y, c->radius, c->density, c->friction, c->category, c->mask) == i;
+            else
+                ok_ = f_.add_box(p_, b.type, b.x, b.y, b.hx, b.hy, b.vx, b.vy, b.w, b.density, b.friction, b.asleep) == i;
+        }
+        for (int i = 0; ok_ && i < s.joint_count; ++i) {
+            const bench_joint &j = s.joints[i];
+            ok_ = f_.add_revolute(p_, j.a, j.b, j.ax, j.ay, j.bx, j.by) == 0;
         }
     }
     ~Ga2dWorld() { f_.destroy(p_); }
@@ -121,7 +159,7 @@ private:
 
 class Box2dWorld : public World {
 public:
-    explicit Box2dWorld(const bench_scene &s) : world_(b2Vec2((float)s.gx, (float)s.gy))
+    explicit Box2dWorld(const bench_scene &s) : world_(b2Vec2((float)s.gx, (float)s.gy)), ok_(true)
     {
         world_.SetAllowSleeping(s.sleep != 0);
         bodies_.reserve((size_t)s.count);
@@ -134,18 +172,41 @@ public:
             bd.angularVelocity = (float)b.w;
             bd.awake = !b.asleep;
             b2Body *body = world_.CreateBody(&bd);
+            const bench_shape *c = lone_circle(s, b);
             b2PolygonShape box;
-            box.SetAsBox((float)b.hx, (float)b.hy);
+            b2CircleShape circle;
             b2FixtureDef fd;
-            fd.shape = &box;
-            fd.density = (float)b.density;
-            fd.friction = (float)b.friction; /* Box2D mixes pairs as sqrt(mu_a mu_b) */
+            ok_ = ok_ && !unsupported(s, b);
+            if (c) {
+                circle.m_radius = (float)c->radius;
+                fd.shape = &circle;
+                fd.density = (float)c->density;
+                fd.friction = (float)c->friction;
+                /* Box2D 2.4's filter bits are 16 wide; the scenes use the low ones */
+                fd.filter.categoryBits = (uint16)c->category;
+                fd.filter.maskBits = (uint16)c->mask;
+            } else {
+                box.SetAsBox((float)b.hx, (float)b.hy);
+                fd.shape = &box;
+                fd.density = (float)b.density;
+                fd.friction = (float)b.friction; /* Box2D mixes pairs as sqrt(mu_a mu_b) */
+            }
             fd.restitution = 0;
             body->CreateFixture(&fd);
             bodies_.push_back(body);
         }
+        for (int i = 0; ok_ && i < s.joint_count; ++i) {
+            const bench_joint &j = s.joints[i];
+            b2RevoluteJointDef jd; /* collideConnected false, no limit or motor */
+            jd.bodyA = bodies_[(size_t)j.a];
+            jd.bodyB = bodies_[(size_t)j.b];
+            jd.localAnchorA.Set((float)j.ax, (float)j.ay);
+            jd.localAnchorB.Set((float)j.bx, (float)j.by);
+            jd.referenceAngle = jd.bodyB->GetAngle() - jd.bodyA->GetAngle();
+            world_.CreateJoint(&jd);
+        }
     }
-    bool ok() const { return true; }
+    bool ok() const { return ok_; }
     bool step(double dt)
     {
         world_.Step((float)dt, kBox2dVelocityIterations, kBox2dPositionIterations);
@@ -172,13 +233,14 @@ public:
     bool awake(int i) const { return bodies_[(size_t)i]->IsAwake(); }
 
 private:
-    b2World world_; /* owns the bodies */
+    b2World world_; /* owns the bodies and joints */
     std::vector<b2Body *> bodies_;
+    bool ok_;
 };
 
 class ChipmunkWorld : public World {
 public:
-    explicit ChipmunkWorld(const bench_scene &s) : space_(cpSpaceNew())
+    explicit ChipmunkWorld(const bench_scene &s) : space_(cpSpaceNew()), ok_(true)
     {
         cpSpaceSetIterations(space_, kChipmunkIterations);
         cpSpaceSetGravity(space_, cpv(s.gx, s.gy));
@@ -189,8 +251,13 @@ public:
         shapes_.reserve((size_t)s.count);
         for (int i = 0; i < s.count; ++i) {
             const bench_body &b = s.bodies[i];
+            const bench_shape *c = lone_circle(s, b);
             cpBody *body;
-            if (b.type == BENCH_DYNAMIC) {
+            ok_ = ok_ && !unsupported(s, b);
+            if (b.type == BENCH_DYNAMIC && c) {
+                double m = c->density * kPi * c->radius * c->radius;
+                body = cpBodyNew(m, cpMomentForCircle(m, 0, c->radius, cpvzero));
+            } else if (b.type == BENCH_DYNAMIC) {
                 double m = b.density * 4 * b.hx * b.hy;
                 body = cpBodyNew(m, cpMomentForBox(m, 2 * b.hx, 2 * b.hy));
             } else {
@@ -203,10 +270,11 @@ public:
                 cpBodySetAngularVelocity(body, b.w);
             }
             cpSpaceAddBody(space_, body);
-            cpShape *shape = cpBoxShapeNew(body, 2 * b.hx, 2 * b.hy, 0);
+            cpShape *shape = c ? cpCircleShapeNew(body, c->radius, cpvzero) : cpBoxShapeNew(body, 2 * b.hx, 2 * b.hy, 0);
             /* Chipmunk multiplies the two shapes' friction: sqrt on each gives
                sqrt(mu_a mu_b), the other engines' rule */
-            cpShapeSetFriction(shape, std::sqrt(b.friction));
+            cpShapeSetFriction(shape, std::sqrt(c ? c->friction : b.friction));
+            if (c) cpShapeSetFilter(shape, cpShapeFilterNew(CP_NO_GROUP, c->category, c->mask));
             cpShapeSetElasticity(shape, 0);
             cpSpaceAddShape(space_, shape);
             bodies_.push_back(body);
@@ -215,15 +283,27 @@ public:
         /* only a body in a space can sleep; each sleeps as its own island */
         for (int i = 0; i < s.count; ++i)
             if (s.bodies[i].asleep && s.bodies[i].type == BENCH_DYNAMIC) cpBodySleep(bodies_[(size_t)i]);
+        joints_.reserve((size_t)s.joint_count);
+        for (int i = 0; i < s.joint_count; ++i) {
+            const bench_joint &j = s.joints[i];
+            /* a pin at the two anchors: no limit, no motor, infinite max force; the
+               two bodies' shapes stop colliding (cpConstraintSetCollideBodies) */
+            cpConstraint *pin =
+                cpPivotJointNew2(bodies_[(size_t)j.a], bodies_[(size_t)j.b], cpv(j.ax, j.ay), cpv(j.bx, j.by));
+            cpConstraintSetCollideBodies(pin, cpFalse);
+            cpSpaceAddConstraint(space_, pin);
+            joints_.push_back(pin);
+        }
     }
     ~ChipmunkWorld()
     {
         /* the space reads its bodies while it is freed, so it goes first */
         cpSpaceFree(space_);
+        for (size_t i = 0; i < joints_.size(); ++i) cpConstraintFree(joints_[i]);
         for (size_t i = 0; i < shapes_.size(); ++i) cpShapeFree(shapes_[i]);
         for (size_t i = 0; i < bodies_.size(); ++i) cpBodyFree(bodies_[i]);
     }
-    bool ok() const { return space_ != NULL; }
+    bool ok() const { return space_ != NULL && ok_; }
     bool step(double dt)
     {
         cpSpaceStep(space_, dt);
@@ -255,6 +335,8 @@ private:
     cpSpace *space_;
     std::vector<cpBody *> bodies_;
     std::vector<cpShape *> shapes_;
+    std::vector<cpConstraint *> joints_;
+    bool ok_;
 };
 
 template <class W> static World *build(const bench_scene &s) { return new W(s); }
@@ -387,7 +469,6 @@ static int count_moved(const bench_scene &s, const World &w, double beyond, int 
     return n;
 }
 
-static const double kPi = 3.14159265358979323846;
 
 /* dynamic boxes turned more than `degrees` from their start (all start
    square to the axes): a box that fell over, not one that sank */
@@ -484,20 +565,53 @@ struct RunResult {
     double figure;      /* the scene's accuracy figure */
     std::string check;  /* what says the scene behaved (see scene_check) */
     std::string failed; /* non-empty when the run could not finish */
+    int blown_up;       /* a scene with joints: the step after which a body passed kBlownUpSpeed, else -1 */
 };
+
+/* The fastest dynamic body's speed, m/s. */
+static double fastest(const bench_scene &s, const World &w)
+{
+    double top = 0;
+    for (int i = 0; i < s.count; ++i) {
+        if (s.bodies[i].type != BENCH_DYNAMIC) continue;
+        double vx, vy;
+        w.velocity(i, &vx, &vy);
+        double v = std::hypot(vx, vy);
+        if (!(v <= top)) top = v; /* a NaN sticks */
+    }
+    return top;
+}
 
 struct RunStats {
     int asleep_wanted, asleep_at_start; /* bodies the scene creates asleep; of them, asleep after building */
     int deep_steps;                     /* steps whose deepest overlap passed kDeepOverlap */
 };
 
+/* The worst joint separation at the end (bench_scene_joint_gap), m. */
+static double joint_gap(const bench_scene &s, const World &w)
+{
+    std::vector<double> x((size_t)s.count), y((size_t)s.count), angle((size_t)s.count);
+    for (int i = 0; i < s.count; ++i) w.pose(i, &x[(size_t)i], &y[(size_t)i], &angle[(size_t)i]);
+    return s.count ? bench_scene_joint_gap(&s, &x[0], &y[0], &angle[0]) : 0;
+}
+
 /* A plain-words check that the engine ran the scene as meant: pyramids
    stand, the striker ploughs through, the tumbler's boxes tumble and stay
-   inside. */
+   inside, the joint grid hangs together. */
 static std::string scene_check(const bench_scene &s, const World &w, const RunStats &st)
 {
     char line[256];
-    if (s.figure == BENCH_FIG_DRIFT) {
+    if (s.figure == BENCH_FIG_SAG) {
+        double x, y, angle, lowest = 1e300;
+        w.pose(s.probe, &x, &y, &angle);
+        for (int i = 0; i < s.count; ++i) {
+            double xi, yi, ai;
+            w.pose(i, &xi, &yi, &ai);
+            lowest = std::min(lowest, yi);
+        }
+        snprintf(line, sizeof line, "corner dx %+.3f dy %+.3f m; lowest body at y %.3f m; worst joint separation %.4f m",
+                 x - s.bodies[s.probe].x, y - s.bodies[s.probe].y, lowest, joint_gap(s, w));
+    } else if (s.figure == BENCH_FIG_DRIFT) {
         double x, y, angle;
         w.pose(s.probe, &x, &y, &angle);
         snprintf(line, sizeof line, "top dx %+.3f dy %+.3f m; boxes moved > 0.5 m: %d, tilted > 10 deg: %d",
@@ -542,6 +656,7 @@ static RunResult run_once(const Engine &e, const bench_scene &s)
     RunResult r;
     r.ms = 0;
     r.figure = 0;
+    r.blown_up = -1;
     StderrCatcher caught;
     World *w = e.build(s);
     if (!w->ok()) {
@@ -576,6 +691,10 @@ static RunResult run_once(const Engine &e, const bench_scene &s)
             break;
         }
         if (step >= kUntimedSteps) total += t1 - t0;
+        if (s.joint_count > 0 && !(fastest(s, *w) <= kBlownUpSpeed)) {
+            r.blown_up = step;
+            break;
+        }
         if (s.figure == BENCH_FIG_PENETRATION) {
             place_boxes(s, *w, boxes);
             double d = deepest_overlap(boxes, order);
@@ -583,12 +702,26 @@ static RunResult run_once(const Engine &e, const bench_scene &s)
             st.deep_steps += d > kDeepOverlap;
         }
     }
+    if (r.blown_up >= 0) {
+        char line[160];
+        snprintf(line, sizeof line, "blew up after step %d of %d: a body faster than %g m/s; no time, no figure",
+                 r.blown_up + 1, s.steps, kBlownUpSpeed);
+        r.check = line;
+        delete w;
+        r.check += caught.finish();
+        return r;
+    }
     r.ms = total / (s.steps - kUntimedSteps);
-    if (s.figure == BENCH_FIG_DRIFT)
+    if (s.figure == BENCH_FIG_DRIFT) {
         r.figure = moved(s, *w, s.probe);
+    } else if (s.figure == BENCH_FIG_SAG) {
+        double x, y, angle;
+        w->pose(s.probe, &x, &y, &angle);
+        r.figure = s.bodies[s.probe].y - y;
+    }
     else if (s.figure == BENCH_FIG_MOMENTUM)
         r.figure = momentum_error(s, *w);
-    else
+    else if (s.figure != BENCH_FIG_SAG)
         r.figure = deepest;
     r.check = scene_check(s, *w, st);
     delete w;
@@ -606,7 +739,8 @@ static double median(std::vector<double> v)
 static double minimum(const std::vector<double> &v) { return *std::min_element(v.begin(), v.end()); }
 
 /* ------------------------------------------------------------------ main */
-static const char *const kScenes[] = {"large_pyramid", "many_pyramids", "smash", "tumbler", "pyramid20", "stack10"};
+static const char *const kScenes[] = {"large_pyramid", "many_pyramids", "smash", "tumbler", "pyramid20", "stack10",
+                                     "joint_grid"};
 static const int kSceneCount = (int)(sizeof kScenes / sizeof kScenes[0]);
 
 static const char *cxx_compiler()
@@ -637,22 +771,27 @@ static void print_header(int runs)
     if (PEERS_AVX2)
         printf("  ga2d-avx2: the same ga2d built again with -mavx2 (8 float lanes; the same results bit for bit),\n"
                "  the CPU having AVX2; the peers' libraries are the distribution's generic builds\n");
-    printf("settings (all: box polygons, density and friction from the scene, restitution 0, sleep per scene):\n");
+    printf("settings (all: box polygons, or circles with their filter bits, density and friction from the scene,\n"
+           "  restitution 0, sleep per scene; the scene's joints revolute, at the defaults):\n");
     printf("  ga2d      %s; sleep: bodies created with is_awake = 0\n", ga2d_peer_settings());
     printf("  Box2D     %d velocity + %d position iterations; SetAsBox (polygon skin %.3f m, linear slop %.3f m);\n"
            "            friction mixes as sqrt; continuous collision on (default); sleep: bd.awake = false\n",
            kBox2dVelocityIterations, kBox2dPositionIterations, (double)b2_polygonRadius, (double)b2_linearSlop);
+    printf("            joints: b2RevoluteJoint (solved with the same iterations)\n");
     printf("  Chipmunk  %d iterations; cpBoxShapeNew radius 0; collision slop %.3f m; mass = density x area,\n"
            "            cpMomentForBox; shape friction sqrt(mu) (pairs multiply); sleep time %.1f s, bodies\n"
            "            put to sleep with cpBodySleep after they are added; cpFloat = %s; the library is\n"
            "            built with its debug checks (see its banner above); its warnings are counted per run\n",
            kChipmunkIterations, kChipmunkSlop, kChipmunkSleepTime, sizeof(cpFloat) == sizeof(double) ? "double" : "float");
+    printf("            joints: cpPivotJointNew2 at the two anchors (default error bias, max force infinite)\n");
     printf("figures, measured alike in every engine from its poses and velocities:\n"
            "  drift: the top box's distance from its start at the end (m); Box2D's boxes rest on their skins,\n"
            "    so its stacks stand about 0.013 m per layer higher than they were built\n"
            "  momentum: |sum m v - P0| / |P0| at the end, m = density x area from the scene\n"
            "  penetration: the deepest overlap, over every step, of two of the scene's boxes at their\n"
            "    nominal size (Box2D's 0.01 m skin is not part of the box), one of them dynamic (m)\n"
+           "  sag: how far the joint grid's bottom corner ends below its start (m); the check gives the\n"
+           "    worst joint separation at the end: the largest distance between a joint's two anchors\n"
            "ratio = ga2d median / peer median: below 1, ga2d is faster\n");
 }
 
@@ -702,13 +841,17 @@ int main(int argc, char **argv)
                bench_scene_figure_name(&s));
         fflush(stdout);
         std::vector<double> ms[kEngineCount], fig[kEngineCount];
-        std::string check[kEngineCount], failed[kEngineCount];
+        std::string check[kEngineCount], failed[kEngineCount], blown[kEngineCount];
         for (int r = 0; r < runs; ++r)
             for (int e = 0; e < kEngineCount; ++e) {
-                if (!failed[e].empty()) continue;
+                if (!failed[e].empty() || !blown[e].empty()) continue;
                 RunResult res = run_once(kEngines[e], s);
                 if (!res.failed.empty()) {
                     failed[e] = res.failed;
+                    continue;
+                }
+                if (res.blown_up >= 0) { /* the engine's result, not the runner's failure: once is enough */
+                    blown[e] = res.check;
                     continue;
                 }
                 ms[e].push_back(res.ms);
@@ -724,6 +867,13 @@ int main(int argc, char **argv)
             if (!failed[e].empty()) {
                 printf("  %-14s %-9s FAILED: %s\n", s.name, kEngines[e].name, failed[e].c_str());
                 ++failures;
+                continue;
+            }
+            if (!blown[e].empty()) {
+                printf("  %-14s %-9s %s\n", s.name, kEngines[e].name, blown[e].c_str());
+                if (csv)
+                    fprintf(csv, "%s,%s,nan,nan,\"%s\",nan,nan,nan\n", s.name, kEngines[e].name,
+                            bench_scene_figure_name(&s));
                 continue;
             }
             double med = median(ms[e]), lo = minimum(ms[e]), f = median(fig[e]);

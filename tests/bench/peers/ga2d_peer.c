@@ -61,6 +61,41 @@ int GA2D_PEER_FN(add_box)(ga2d_peer *p, int type, double x, double y, double hx,
     return p->count++;
 }
 
+int GA2D_PEER_FN(add_circle)(ga2d_peer *p, int type, double x, double y, double radius, double density, double friction,
+                         unsigned category, unsigned mask)
+{
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_circle c;
+    ga2d_body_id id;
+    if (p->count >= p->capacity) return -1;
+    d.type = type == 2 ? GA2D_BODY_DYNAMIC : type == 1 ? GA2D_BODY_KINEMATIC : GA2D_BODY_STATIC;
+    d.position = ga2d_vec_make((ga2d_real)x, (ga2d_real)y);
+    id = ga2d_body_create(p->world, &d);
+    if (ga2d_body_id_is_null(id)) return -1;
+    sd.density = (ga2d_real)density;
+    sd.friction = (ga2d_real)friction;
+    sd.restitution = 0;
+    sd.filter.category_bits = category;
+    sd.filter.mask_bits = mask;
+    c.center = ga2d_vec_make(0, 0);
+    c.radius = (ga2d_real)radius;
+    if (ga2d_shape_id_is_null(ga2d_shape_create_circle(p->world, id, &sd, &c))) return -1;
+    p->ids[p->count] = id;
+    return p->count++;
+}
+
+int GA2D_PEER_FN(add_revolute)(ga2d_peer *p, int a, int b, double ax, double ay, double bx, double by)
+{
+    ga2d_revolute_joint_def d = ga2d_default_revolute_joint_def();
+    if (a < 0 || b < 0 || a >= p->count || b >= p->count) return -1;
+    d.body_a = p->ids[a];
+    d.body_b = p->ids[b];
+    d.local_anchor_a = ga2d_vec_make((ga2d_real)ax, (ga2d_real)ay);
+    d.local_anchor_b = ga2d_vec_make((ga2d_real)bx, (ga2d_real)by);
+    return ga2d_joint_id_is_null(ga2d_revolute_joint_create(p->world, &d)) ? -1 : 0;
+}
+
 int GA2D_PEER_FN(step)(ga2d_peer *p, double dt)
 {
     return (int)ga2d_world_step(p->world, (ga2d_real)dt);
@@ -68,7 +103,7 @@ int GA2D_PEER_FN(step)(ga2d_peer *p, double dt)
 
 void GA2D_PEER_FN(pose)(const ga2d_peer *p, int i, double *x, double *y, double *angle)
 {
-    /* boxes are centred on their origin, so origin = centre */
+    /* boxes and circles are centred on their origin, so origin = centre */
     ga2d_vec c = ga2d_body_position(p->world, p->ids[i]);
     *x = (double)c.x;
     *y = (double)c.y;

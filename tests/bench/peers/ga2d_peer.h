@@ -23,6 +23,12 @@ typedef struct ga2d_peer ga2d_peer;
                    failure;
      add_box       a box body of half-extents hx, hy centred at (x, y),
                    restitution 0; its index, or -1 when ga2d refuses it;
+     add_circle    a body at (x, y) with one circle of this radius at its
+                   origin, filter category and mask as given, restitution
+                   0; its index, or -1;
+     add_revolute  a revolute joint between bodies a and b (indices) at
+                   anchor (ax, ay) of a's frame and (bx, by) of b's,
+                   the defaults otherwise; 0, or -1 when ga2d refuses it;
      step          0, or ga2d's error code;
      compiler      the compiler that built ga2d_peer.c;
      real_is_double  1 under GA2D_DOUBLE, else 0 (float);
@@ -31,6 +37,9 @@ typedef struct ga2d_peer ga2d_peer;
     ga2d_peer *P##create(double gx, double gy, int sleep, int capacity);                                         \
     int P##add_box(ga2d_peer *p, int type, double x, double y, double hx, double hy, double vx, double vy,         \
                    double w, double density, double friction, int asleep);                                       \
+    int P##add_circle(ga2d_peer *p, int type, double x, double y, double radius, double density, double friction, \
+                      unsigned category, unsigned mask);                                                         \
+    int P##add_revolute(ga2d_peer *p, int a, int b, double ax, double ay, double bx, double by);                 \
     int P##step(ga2d_peer *p, double dt);                                                                        \
     void P##pose(const ga2d_peer *p, int i, double *x, double *y, double *angle);                                \
     void P##velocity(const ga2d_peer *p, int i, double *vx, double *vy);                                         \
