@@ -4265,8 +4265,8 @@ static int ga2d__pair_wanted(const ga2d_world *w, int i, int j)
     const ga2d__body *a = &w->bodies[si->body], *b = &w->bodies[sj->body];
     if (si->body == sj->body || si->is_sensor || sj->is_sensor) return 0;
     if (a->type != GA2D_BODY_DYNAMIC && b->type != GA2D_BODY_DYNAMIC) return 0;
-    if (w->joint_count > 0 && ga2d__joined_apart(w, si->body, sj->body)) return 0;
-    return ga2d_should_collide(si->filter, sj->filter);
+    if (!ga2d_should_collide(si->filter, sj->filter)) return 0; /* two ANDs before the joint walk */
+    return !(w->joint_count > 0 && ga2d__joined_apart(w, si->body, sj->body));
 }
 
 /* ---------------------------------------------------------- proxies */
