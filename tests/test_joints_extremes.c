@@ -327,8 +327,288 @@ static void chain_flung(void)
     ga2d_world_destroy(w);
 }
 
+/* ============================================================ 2. scale */
+/* The arithmetic-geometric mean: a pendulum of small-amplitude period T0
+   swinging to th has the period T0 / AGM(1, cos(th/2)). */
+static double agm(double a, double b)
+{
+    int i;
+    for (i = 0; i < 40 && fabs(a - b) > 1e-16 * a; ++i) {
+        double an = (a + b) / 2;
+        b = sqrt(a * b);
+        a = an;
+    }
+    return a;
+}
+
+/* A bar of length L x L/10 (density 1) hinged at its end (local (-L/2,
+   0)) to a static pivot at (ox, oy), hanging at th0 from the downward
+   vertical, released at rest, gravity g down.  Times `periods` periods by
+   the upward crossings of the bar's x past the pivot's (interpolated),
+   and reports the largest anchor gap and the lowest energy. */
+typedef struct swing { double period, max_sep, e0, e_min, e_max, e_end; long steps; } swing;
+static swing swing_bar(ga2d_world *w, double ox, double oy, double L, double th0, double g, int periods)
+{
+    double d = L / 2, prev, first = 0, last = 0;
+    ga2d_body_id p = pivot_body(w, ox, oy);
+    ga2d_body_id bar = box_body(w, ox + d * sin(th0), oy - d * cos(th0), th0 - PI / 2, d, L / 20, 1);
+    ga2d_joint_id j = hinge(w, p, bar, v2(0, 0), v2(-d, 0));
+    double m = mass_of(w, bar), in = (double)ga2d_body_mass_data(w, bar).inertia;
+    swing s;
+    int crossings = 0;
+    memset(&s, 0, sizeof s);
+    s.e0 = s.e_min = s.e_max = m * g * ((double)ga2d_body_center(w, bar).y - oy);
+    prev = (double)ga2d_body_center(w, bar).x - ox;
+    for (s.steps = 1; crossings <= periods && s.steps < 100000; ++s.steps) {
+        ga2d_vec v, c;
+        double x, e, om, sep;
+        step(w);
+        v = ga2d_body_velocity(w, bar);
+        c = ga2d_body_center(w, bar);
+        om = (double)ga2d_body_angular_velocity(w, bar);
+        e = 0.5 * m * ((double)v.x * (double)v.x + (double)v.y * (double)v.y) + 0.5 * in * om * om + m * g * ((double)c.y - oy);
+        if (e < s.e_min) s.e_min = e;
+        if (e > s.e_max) s.e_max = e;
+        sep = anchor_gap(w, j, v2(0, 0), v2(-d, 0));
+        if (sep > s.max_sep) s.max_sep = sep;
+        x = (double)c.x - ox;
+        if (prev < 0 && x >= 0) {
+            double tc = (double)s.steps * DT - DT * x / (x - prev);
+            if (crossings == 0) first = tc;
+            last = tc;
+            ++crossings;
+        }
+        prev = x;
+    }
+    s.e_end = s.e_max; /* overwritten by callers that need the last */
+    s.period = crossings > periods ? (last - first) / periods : 0;
+    return s;
+}
+
+/* The bar's small-amplitude period T0 = 2 pi sqrt(I_p / (m g d)), I_p =
+   m (L^2 + (L/10)^2) / 12 + m d^2, d = L / 2: as sqrt(L / g). */
+static double bar_T0(double L, double g)
+{
+    double d = L / 2, ip_over_m = (L * L + L * L / 100) / 12 + d * d;
+    return 2 * PI * sqrt(ip_over_m / (g * d));
+}
+
+/* The bound on the bar's timed period against the exact one less the
+   phase error, as test_joints.c derives it for the 1 m bar (each term
+   dimensionless, so it holds at every scale): the gap s moves the centre
+   out (s (m d / I_p + 1 / (2 d))), the interpolation of the crossings
+   (2 w0^2 dt^3 / 8 over N periods), the amplitude lost to the feedback's
+   damping ((e0 - e_min) / (8 m g d)), rounding 16 u. */
+static double bar_period_bound(const swing *s, double L, double g, double m, int periods)
+{
+    double d = L / 2, ip = m * ((L * L + L * L / 100) / 12 + d * d), w0 = 2 * PI / bar_T0(L, g);
+    return s->max_sep * (m * d / ip + 1 / (2 * d)) + 2 * w0 * w0 * DT * DT * DT / 8 / periods / bar_T0(L, g) +
+           (s->e0 - s->e_min) / (8 * m * g * d) + 16 * U;
+}
+
+/* The gap bound of the swinging bar (test_joints.c, 90 degrees): the load
+   along the bar m (g + w^2 d) over its effective mass m, w^2 <= 2 m g d
+   (1 - cos th0) / I_p: a static sag (g + w^2 d) / omega_s^2 and the
+   turning drift w^2 h d / (2 b ms); rounding 8 u of the coordinates'
+   size R. */
+static double bar_gap_bound(double L, double g, double th0, double R)
+{
+    double d = L / 2, ip_over_m = (L * L + L * L / 100) / 12 + d * d, w2 = 2 * g * d * (1 - cos(th0)) / ip_over_m;
+    soft js = make_soft(JOINT_HERTZ, JOINT_ZETA, H);
+    double om = 2 * PI * JOINT_HERTZ;
+    return (g + w2 * d) / (om * om) + w2 * H * d / (2 * js.bias * js.ms) + 8 * U * R;
+}
+
+/* The pendulum and the spring at lengths from 1 cm to 100 m, the world's
+   length unit (length_units_per_meter) and gravity scaled with them as in
+   test_extremes.c: every length in the step scales, masses as L^2 (a
+   shape's area), inertias as L^4, times not at all, and a joint's
+   feedback is in hertz; so the scaled scene is the 1 m scene in other
+   units.
+   - The bar pendulum (L x L/10, released from 5 degrees, 5 periods): its
+     period T0 / AGM(1, cos(th0/2)) with T0 ~ sqrt(L / g), the same at
+     every scale as g = 10 L; measured against it less the phase error
+     (w0 h)^2 / 24 within bar_period_bound; its anchor gap within
+     bar_gap_bound, a bound proportional to L: the separation scales
+     with L.
+   - A distance spring of 2 Hz (damping 0) holding a box (L/5 square,
+     its centre at the anchor) at rest length L below a static anchor,
+     released from L/10 further down, 3 periods: the motion stays on the
+     vertical (gravity and the spring act along it), a 1-dof oscillator
+     about the stretch x_eq = g / (2 pi f)^2 (the soft spring's static
+     deflection, exact for k = m (2 pi f)^2), of the scheme's period
+     (test_joints_kinds.c's scheme_period, scale-free), within its
+     interpolation bound and 16 u; the stretch read as a fraction of L.
+   - At L = 1/128 and 128 (powers of two) every product and sum is the
+     1 m one times a power of two, exactly: the periods and the gaps over
+     L are the 1 m run's, bit for bit. */
+static double read_length(const ga2d_world *w, ga2d_joint_id j) { return (double)ga2d_distance_joint_current_length(w, j); }
+
+static void scale_runs(void)
+{
+    static const double scales[5] = {1, 1.0 / 128, 128, 0.01, 100};
+    const double th0 = 5 * PI / 180, f = 2;
+    double T1 = 0, gap1 = 0, S1 = 0;
+    int i, k;
+    for (i = 0; i < 5; ++i) {
+        double L = scales[i], g = G * L, T, phase, w0, m, bound, gap_bound, Ts, tol, x_eq, prev, first = 0, last = 0;
+        int crossings = 0, periods = 5;
+        ga2d_world *w = make_world(0, -g, L, SUB);
+        swing s = swing_bar(w, 0, 0, L, th0, g, periods);
+        ga2d_world_destroy(w);
+        w = make_world(0, -g, L, SUB);
+        m = 0.1 * L * L; /* the bar: L x L/10, density 1 */
+        T = bar_T0(L, g) / agm(1, cos(th0 / 2));
+        w0 = 2 * PI / bar_T0(L, g);
+        phase = (w0 * H) * (w0 * H) / 24;
+        bound = bar_period_bound(&s, L, g, m, periods);
+        gap_bound = bar_gap_bound(L, g, th0, L);
+        CHECK_NEAR(s.period / (T * (1 - phase)), 1, bound);
+        CHECK(s.max_sep <= gap_bound);
+        /* the spring */
+        {
+            ga2d_body_id p = pivot_body(w, 0, 0), b = box_body(w, 0, -1.1 * L, 0, L / 10, L / 10, 1);
+            ga2d_distance_joint_def d = ga2d_default_distance_joint_def();
+            ga2d_joint_id j;
+            double e = 2 * PI * f * H, gam = log(1 + e * e) / H, W;
+            Ts = 2 * PI * H / acos(1 - e * e / (2 * (1 + e * e)));
+            W = 2 * PI / Ts;
+            tol = 2 * DT * DT * (2 * gam + W * W * DT) / 8 / 3 + 16 * U * Ts;
+            d.body_a = p;
+            d.body_b = b;
+            d.length = (ga2d_real)L;
+            d.enable_spring = 1;
+            d.hertz = (ga2d_real)f;
+            d.damping_ratio = 0;
+            CHECK_RESULT(ga2d_distance_joint_create_checked(w, &d, &j), GA2D_OK);
+            x_eq = g / ((2 * PI * f) * (2 * PI * f));
+            prev = (read_length(w, j) - L - x_eq) / L;
+            for (k = 1; k < 2000 && crossings <= 3; ++k) {
+                double x;
+                step(w);
+                x = (read_length(w, j) - L - x_eq) / L;
+                if (prev < 0 && x >= 0) {
+                    double tc = k * DT - DT * x / (x - prev);
+                    if (crossings == 0) first = tc;
+                    last = tc;
+                    ++crossings;
+                }
+                prev = x;
+            }
+            CHECK(crossings > 3);
+            CHECK_NEAR((last - first) / 3, Ts, tol);
+        }
+        if (i == 0) {
+            T1 = s.period;
+            gap1 = s.max_sep;
+            S1 = (last - first) / 3;
+        } else if (i < 3) {
+            CHECK(s.period == T1 && s.max_sep / L == gap1 && (last - first) / 3 == S1);
+        }
+        if (verbose())
+            printf("joint extremes: scale %g m (units %g per m, g %g): pendulum period %.7f s vs exact %.7f less the phase "
+                   "error: |rel| %.3g <= %.3g; gap %.3g L <= %.3g L; spring 2 Hz period %.7f s vs the scheme's %.7f: |diff| "
+                   "%.3g <= %.3g%s\n",
+                   L, L, g, s.period, T, fabs(s.period / (T * (1 - phase)) - 1), bound, s.max_sep / L, gap_bound / L,
+                   (last - first) / 3, Ts, fabs((last - first) / 3 - Ts), tol,
+                   i == 1 || i == 2 ? "; the 1 m run's bits" : "");
+        ga2d_world_destroy(w);
+    }
+}
+
+/* ================================================= 3. far from the origin */
+/* ulp(x) for |x| >= the smallest normal number */
+static double ulp_of(double x)
+{
+    int e;
+    frexp(fabs(x), &e); /* |x| = m 2^e, m in [0.5, 1) */
+    return REAL_EPS * ldexp(1.0, e - 1);
+}
+
+/* The 1 m bar pendulum hinged at (X, X) against the same at the origin,
+   released from 5 and from 90 degrees, 500 steps (5 small periods): the
+   bar's centre relative to its pivot, component by component, each step.
+   The joint works on differences of nearby positions (the centres'
+   offset where the step began, exact for numbers within a factor 2 of
+   each other, and the substeps' displacements dp, small numbers) and on
+   anchors relative to the bodies, so far out it sees what it sees at
+   the origin, except that a stored position is a multiple of ulp(X):
+   the step ends at x0 + dp, rounded once (ulp(X)/2 a component), and the
+   next step starts there.  Each such rounding is a perturbation the
+   pendulum carries on (it is neutrally stable: a shift along the swing
+   stays a shift of the phase, one across it the feedback takes out), so
+   after n steps a component is off by at most n ulp(X)/2, and never by
+   more than twice the path the bar travelled (a lost move is at most the
+   move), as test_extremes.c bounds its far pyramid; plus 2 ulp(X) for
+   the reading (the pivot and the centre each within ulp(X)/2 of where
+   they are).  X = 1e4 in float: ulp = 2^-10 m = 0.98 mm, n ulp/2 = 0.24
+   m over the run (the 5 degree swing is 4.4 cm wide: float out there
+   holds the pendulum to about a ulp a step, and no better); X = 1e6 in
+   double: ulp = 2^-33 m = 1.2e-10 m, n ulp/2 = 2.9e-8 m.  The joint's
+   gap: bar_gap_bound (its rounding at the coordinates' size X) plus a
+   ulp(X) for the stored positions the joint is fed. */
+static void far_from_origin(void)
+{
+#ifdef GA2D_DOUBLE
+    const double X = 1e6;
+#else
+    const double X = 1e4;
+#endif
+    const double ths[2] = {5 * PI / 180, PI / 2}, u = ulp_of(X + 1); /* the coordinates stay in [X - 1, X + 1]: one binade */
+    const int n = 500;
+    int i, k, c;
+    for (i = 0; i < 2; ++i) {
+        ga2d_world *w[2];
+        ga2d_body_id bar[2];
+        ga2d_joint_id j[2];
+        double path[2] = {0, 0}, worst = 0, worst_bound = 1, max_gap = 0, gap_bound = bar_gap_bound(1, G, ths[i], X + 1) + u;
+        int within = 1;
+        for (c = 0; c < 2; ++c) {
+            double o = c ? X : 0, th0 = ths[i];
+            ga2d_body_id p;
+            w[c] = make_world(0, -G, 1, SUB);
+            p = pivot_body(w[c], o, o);
+            bar[c] = box_body(w[c], o + 0.5 * sin(th0), o - 0.5 * cos(th0), th0 - PI / 2, 0.5, 0.05, 1);
+            j[c] = hinge(w[c], p, bar[c], v2(0, 0), v2(-0.5, 0));
+        }
+        for (k = 1; k <= n; ++k) {
+            ga2d_vec before = ga2d_body_center(w[0], bar[0]), a, b;
+            double d[2], mv[2], gap;
+            step(w[0]);
+            step(w[1]);
+            a = ga2d_body_center(w[0], bar[0]);
+            b = ga2d_body_center(w[1], bar[1]);
+            mv[0] = fabs((double)a.x - (double)before.x);
+            mv[1] = fabs((double)a.y - (double)before.y);
+            d[0] = fabs(((double)b.x - X) - (double)a.x);
+            d[1] = fabs(((double)b.y - X) - (double)a.y);
+            for (c = 0; c < 2; ++c) {
+                double bound;
+                path[c] += mv[c];
+                bound = fmin(2 * path[c], k * u / 2) + 2 * u;
+                within &= d[c] <= bound;
+                if (d[c] / bound > worst / worst_bound) {
+                    worst = d[c];
+                    worst_bound = bound;
+                }
+            }
+            gap = anchor_gap(w[1], j[1], v2(0, 0), v2(-0.5, 0));
+            if (gap > max_gap) max_gap = gap;
+        }
+        CHECK(within);
+        CHECK(max_gap <= gap_bound);
+        if (verbose())
+            printf("joint extremes: bar pendulum from %.0f deg at (%g, %g) vs at the origin, %d steps: closest to its bound, "
+                   "the centre differs by %.3g m (bound %.3g m; ulp %.3g m); gap %.3g m <= %.3g\n",
+                   ths[i] * 180 / PI, X, X, n, worst, worst_bound, u, max_gap, gap_bound);
+        for (c = 0; c < 2; ++c) ga2d_world_destroy(w[c]);
+    }
+}
+
 void suite_joints_extremes(void)
 {
     test_run("joint extremes: a motor past the speed caps", motor_past_the_caps);
     test_run("joint extremes: a chain flung past the speed cap", chain_flung);
+    test_run("joint extremes: a pendulum and a spring from 1 cm to 100 m", scale_runs);
+    test_run("joint extremes: a pendulum far from the origin swings as one at it", far_from_origin);
 }
