@@ -605,10 +605,121 @@ static void far_from_origin(void)
     }
 }
 
+/* ====================================================== 4. mass ratios */
+/* Two hanging scenes at mass ratios R = 1, 10, 100 and 1000, gravity on,
+   released straight at rest with every gap 0, each joint made with the
+   upper body as A and again with the lower body as A:
+   - "weight": three links (0.1 x 0.5 m, 0.05 kg) from a pivot and a
+     weight of R links (a 0.5 m square) under them;
+   - "light under heavy": a heavy body of R links (the square) from the
+     pivot and one link under it.
+   At rest each joint carries the weight under it, F_i, over its effective
+   mass (1 / m_eff = 1 / m_above + 1 / m_below, the anchors on the
+   vertical through the centres: no lever; 0 for the pivot) and rests
+   apart by F_i / (m_eff omega_s^2) (the top).  For the weight that is
+   R m g / (m_eff omega_s^2) ~ R g / omega_s^2: the soft joint's gap grows
+   with the ratio (1.8 mm at 10:1 in each link-to-link joint, 14 cm at
+   1000:1), which is where soft joints stop holding well: a joint's
+   stiffness m_eff omega_s^2 is set by the light body's mass.
+   - Loaded at once from rest, a linear spring system goes at most to
+     twice its static deflection (test_joints.c's chain): every gap stays
+     below twice the largest rest gap, plus rounding 16 u of the chain's
+     2.5 m.
+   - It comes to rest there: the feedback is a spring k_i = m_eff,i
+     omega_s^2 with a damper c_i = 2 zeta m_eff,i omega_s, the same ratio
+     c / k = 2 zeta / omega_s in every joint, so the joints in series are
+     one spring k_s = 1 / sum (1 / k_i) with c_s = 2 zeta k_s / omega_s.
+     With the whole hanging mass M lumped at the bottom (the slowest
+     mode such a chain can have: more mass, softer spring), the deviation
+     from rest decays at c_s / (2 M) = zeta k_s / (M omega_s) at least
+     (the soft step's implicit solve only adds damping).  After t = 60 s,
+     from a deviation of at most the total rest stretch A0 = sum of the
+     rest gaps, every gap and the lowest body's height are within
+     A0 exp(-lambda t) of the rest values (plus the rounding above):
+     the bottom body hangs at the static deflection.
+   Every number finite. */
+static void hanging_ratio(double R, int weight_scene, int lower_as_a, double *max_gap_rel, double *settle_dev,
+                          double *rest_gap_max)
+{
+    enum { MAXN = 4 };
+    const double link_m = 0.05, om = 2 * PI * JOINT_HERTZ, t_end = 60;
+    ga2d_world *w = make_world(0, -G, 1, SUB);
+    ga2d_body_id p = pivot_body(w, 0, 0), b[MAXN];
+    ga2d_joint_id j[MAXN];
+    ga2d_vec up_anchor[MAXN], low_anchor[MAXN];
+    double half[MAXN], rest[MAXN], y = 0, max_rest = 0, max_gap = 0, a0 = 0, inv_ks = 0, M = 0, lambda, tol, y_rest, dev = 0;
+    double round_tol = 16 * U * 2.5;
+    int n = weight_scene ? 4 : 2, i, k, steps = (int)(t_end / DT), finite = 1;
+    for (i = 0; i < n; ++i) {
+        int heavy = weight_scene ? i == n - 1 : i == 0;
+        double hw = heavy ? 0.25 : 0.05, hh = 0.25, mass = heavy ? R * link_m : link_m;
+        ga2d_revolute_joint_def d;
+        half[i] = hh;
+        b[i] = box_body(w, 0, y - hh, 0, hw, hh, mass / (4 * hw * hh));
+        up_anchor[i] = v2(0, i ? -half[i - 1] : 0);
+        low_anchor[i] = v2(0, hh);
+        if (lower_as_a && i > 0) d = hinge_def(b[i], b[i - 1], low_anchor[i], up_anchor[i]);
+        else d = hinge_def(i ? b[i - 1] : p, b[i], up_anchor[i], low_anchor[i]);
+        CHECK_RESULT(ga2d_revolute_joint_create_checked(w, &d, &j[i]), GA2D_OK);
+        y -= 2 * hh;
+    }
+    for (i = 0; i < n; ++i) {
+        double below = 0, inv = (i ? 1 / mass_of(w, b[i - 1]) : 0) + 1 / mass_of(w, b[i]);
+        for (k = i; k < n; ++k) below += mass_of(w, b[k]);
+        rest[i] = below * G * inv / (om * om);
+        if (rest[i] > max_rest) max_rest = rest[i];
+        a0 += rest[i];
+        inv_ks += inv / (om * om); /* 1 / k_i = 1 / (m_eff omega_s^2) */
+        M += mass_of(w, b[i]);
+    }
+    y_rest = y + half[n - 1] - a0; /* the lowest body's centre at rest */
+    lambda = JOINT_ZETA * (1 / inv_ks) / (M * om);
+    tol = a0 * exp(-lambda * t_end) + round_tol;
+    for (k = 0; k < steps; ++k) {
+        step(w);
+        for (i = 0; i < n; ++i) {
+            double gap = dist(world_point(w, i ? b[i - 1] : p, up_anchor[i]), world_point(w, b[i], low_anchor[i]));
+            if (gap > max_gap) max_gap = gap;
+            finite &= body_finite(w, b[i]);
+        }
+    }
+    CHECK(finite);
+    CHECK(max_gap <= 2 * max_rest + round_tol);
+    for (i = 0; i < n; ++i) {
+        double gap = dist(world_point(w, i ? b[i - 1] : p, up_anchor[i]), world_point(w, b[i], low_anchor[i]));
+        CHECK_NEAR(gap, rest[i], tol);
+        if (fabs(gap - rest[i]) > dev) dev = fabs(gap - rest[i]);
+    }
+    CHECK_NEAR(ga2d_body_center(w, b[n - 1]).y, y_rest, tol);
+    if (fabs((double)ga2d_body_center(w, b[n - 1]).y - y_rest) > dev) dev = fabs((double)ga2d_body_center(w, b[n - 1]).y - y_rest);
+    *max_gap_rel = max_gap / (2 * max_rest + round_tol);
+    *settle_dev = dev / tol;
+    *rest_gap_max = max_rest;
+    if (verbose())
+        printf("joint extremes: %s %g:1, %s as A: max gap %.4g m <= %.4g (twice the largest rest gap); after %.0f s the gaps "
+               "and the bottom's height off their rest values by %.3g m <= %.3g (rest stretch %.3g m, decay %.3g /s)\n",
+               weight_scene ? "weight under three links" : "light under heavy", R, lower_as_a ? "the lower body" : "the upper body",
+               max_gap, 2 * max_rest + round_tol, t_end, dev, tol, a0, lambda);
+    ga2d_world_destroy(w);
+}
+
+static void mass_ratios(void)
+{
+    static const double ratios[4] = {1, 10, 100, 1000};
+    int i, scene, order;
+    for (scene = 1; scene >= 0; --scene)
+        for (i = 0; i < 4; ++i)
+            for (order = 0; order < 2; ++order) {
+                double g_rel, dev, rest;
+                hanging_ratio(ratios[i], scene, order, &g_rel, &dev, &rest);
+            }
+}
+
 void suite_joints_extremes(void)
 {
     test_run("joint extremes: a motor past the speed caps", motor_past_the_caps);
     test_run("joint extremes: a chain flung past the speed cap", chain_flung);
     test_run("joint extremes: a pendulum and a spring from 1 cm to 100 m", scale_runs);
     test_run("joint extremes: a pendulum far from the origin swings as one at it", far_from_origin);
+    test_run("joint extremes: mass ratios 1 to 1000 hanging, both orders", mass_ratios);
 }
