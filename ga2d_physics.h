@@ -10283,25 +10283,31 @@ static void ga2d__rk4_positions(ga2d__step_context *c, int begin, int end)
 }
 
 /* The caps again where they bound the motion, before the drift: the
-   solver's passes (a joint's motor, a contact) may have driven a body past
-   them since the kick, and a body moved at that speed tears its joints
-   (a motor of 1e9 N m toward 1e4 rad/s turned a hinged bar 41 rad a
-   substep: its pin up to 43 m apart, a chain of five at 1e19 m).  The
-   velocity (v, w) is scaled as one, so the point that stood still
-   (a pivot) still stands; not counted (the kick counts what the solver
-   leaves past the caps at the next substep). */
-static void ga2d__cap_motion(ga2d__body_sim *b, ga2d_real max_speed, ga2d_real max_turn_rate)
+   solver's passes (a joint's motor or feedback, a contact) may have driven
+   a body past them since the kick, and a body moved at that speed tears
+   its joints (a motor of 1e9 N m toward 1e4 rad/s turned a hinged bar 41
+   rad a substep: its pin up to 43 m apart, a chain of five at 1e19 m).
+   The velocity (v, w) is scaled as one, so the point that stood still (a
+   pivot) still stands.  Counted in speed_caps when the solver went past
+   a cap by more than the kick's own rounding of it (a rigid pass may
+   take the speed back before the next kick sees it: a distance joint of
+   absurd length pushing out at the cap, uncounted, for ever). */
+static void ga2d__cap_motion(ga2d_world *w, ga2d__body_sim *b, ga2d_real max_speed, ga2d_real max_turn_rate)
 {
+    const ga2d_real slack = 1 + 16 * GA2D__EPS; /* above the kick's capped length, rounded */
     ga2d_vec v = b->v;
     ga2d_real om = b->w, s = 1;
-    if (ga2d__cap_length(&v, max_speed)) {
+    if (ga2d__cap_length(&v, max_speed * slack)) {
         ga2d_real m = GA2D__FABS(b->v.x) > GA2D__FABS(b->v.y) ? GA2D__FABS(b->v.x) : GA2D__FABS(b->v.y);
+        v = b->v;
+        (void)ga2d__cap_length(&v, max_speed);
         s = (GA2D__FABS(v.x) > GA2D__FABS(v.y) ? GA2D__FABS(v.x) : GA2D__FABS(v.y)) / m;
     }
     if (ga2d__cap_turn(&om, max_turn_rate) && om / b->w < s) s = om / b->w;
     if (s < 1) {
         b->v = ga2d_vec_scale(b->v, s);
         b->w *= s;
+        ++w->counters.speed_caps;
     }
 }
 
@@ -10312,7 +10318,7 @@ static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        if (b->type == GA2D_BODY_DYNAMIC) ga2d__cap_motion(&b->sim, GA2D__MAX_SPEED * w->def.length_units_per_meter, GA2D__MAX_TURN / c->h);
+        if (b->type == GA2D_BODY_DYNAMIC) ga2d__cap_motion(w, &b->sim, GA2D__MAX_SPEED * w->def.length_units_per_meter, GA2D__MAX_TURN / c->h);
         ga2d__drift(w, &b->sim, c->h);
     }
 }

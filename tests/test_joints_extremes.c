@@ -715,6 +715,53 @@ static void mass_ratios(void)
             }
 }
 
+/* ============================================ 6. parameters at the edge */
+/* A distance joint of absurd length: 1e30 m is finite and > 0, so create
+   takes it (the header asks only that); its feedback asks the body to move
+   out at about b 1e30 m/s.  The caps hold it: every substep the biased
+   pass drives the box (0.2 m square, hanging 1 m below a static anchor,
+   gravity on) past v_max, the cap where positions move scales it back
+   and counts it, and the rigid relax pass takes the speed back to 0 along
+   the joint before the kick sees it.  So: speed_caps at least 4 every
+   step (before that cap counted, it was 0 every step: the speed was
+   never seen by a kick), every number finite, and the box moves straight
+   down, out along the joint and never back (the feedback only pushes
+   out), at most 4 v_max h a step (the cap; rounding 16 u of its
+   distance), its x staying 0 to that rounding. */
+static void distance_absurd_length(void)
+{
+    const double vmax = (double)GA2D_MAX_LINEAR_SPEED;
+    ga2d_world *w = make_world(0, -G, 1, SUB);
+    ga2d_body_id p = pivot_body(w, 0, 0), b = box_body(w, 0, -1, 0, 0.1, 0.1, 1);
+    ga2d_distance_joint_def d = ga2d_default_distance_joint_def();
+    ga2d_joint_id j;
+    int k, min_caps = 1 << 30, finite = 1, n = 60;
+    double y_prev = -1, worst_move = 0;
+    d.body_a = p;
+    d.body_b = b;
+    d.length = (ga2d_real)1e30;
+    CHECK_RESULT(ga2d_distance_joint_create_checked(w, &d, &j), GA2D_OK);
+    for (k = 0; k < n; ++k) {
+        double y;
+        step(w);
+        y = (double)ga2d_body_position(w, b).y;
+        finite &= body_finite(w, b) && isfinite((double)ga2d_distance_joint_current_length(w, j));
+        if (ga2d_world_get_counters(w).speed_caps < min_caps) min_caps = ga2d_world_get_counters(w).speed_caps;
+        if (fabs(y - y_prev) > worst_move) worst_move = fabs(y - y_prev);
+        CHECK(y < y_prev); /* out, down the vertical */
+        y_prev = y;
+    }
+    CHECK(finite);
+    CHECK(min_caps >= SUB);
+    CHECK(worst_move <= SUB * H * vmax * (1 + 16 * U) + 16 * U * fabs(y_prev));
+    CHECK(fabs((double)ga2d_body_position(w, b).x) <= 16 * U * fabs(y_prev));
+    if (verbose())
+        printf("joint extremes: distance joint of length 1e30 m: accepted; speed_caps >= %d a step (bound >= %d); the box "
+               "moves out %.4g m a step <= %.4g, at %.4g m after %d steps, finite\n",
+               min_caps, SUB, worst_move, SUB * H * vmax, -y_prev, n);
+    ga2d_world_destroy(w);
+}
+
 void suite_joints_extremes(void)
 {
     test_run("joint extremes: a motor past the speed caps", motor_past_the_caps);
@@ -722,4 +769,5 @@ void suite_joints_extremes(void)
     test_run("joint extremes: a pendulum and a spring from 1 cm to 100 m", scale_runs);
     test_run("joint extremes: a pendulum far from the origin swings as one at it", far_from_origin);
     test_run("joint extremes: mass ratios 1 to 1000 hanging, both orders", mass_ratios);
+    test_run("joint extremes: a distance joint of absurd length pushes out at the cap, counted", distance_absurd_length);
 }
