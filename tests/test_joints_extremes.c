@@ -715,6 +715,91 @@ static void mass_ratios(void)
             }
 }
 
+/* ========================================================= 5. long run */
+/* The 1 m bar pendulum, no damping anywhere but the joint's feedback,
+   10^5 steps (28 minutes, 4e5 substeps), from 5 and from 90 degrees.
+   Energy: symplectic Euler keeps a modified energy constant, so E moves
+   about its start by at most (w0 h / 2) E_osc (test_joints.c's 1000
+   periods: E_osc = m g d (1 - cos th0) the swing's energy, w0 the small
+   swing's rate, an upper bound on p V' / m over the swing's), and the
+   joint's feedback only takes energy away on the whole: E never rises
+   above E0 + (w0 h / 2) E_osc + 8 u (m g d + E_osc) (rounding of the
+   energy's own terms), and the last tenth's highest energy is no higher
+   than the first tenth's by more than that rounding: no drift upward.
+   The gap: below bar_gap_bound at the starting amplitude (the amplitude
+   only falls), and the last tenth's largest gap no larger than the
+   first tenth's by more than its rounding (8 u): it does not grow.
+   The rotor stays of unit length within 8 eps (test_extremes.c's long
+   spin). */
+#if defined(__SANITIZE_ADDRESS__)
+#define LONG_STEPS 20000L
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define LONG_STEPS 20000L
+#endif
+#endif
+#ifndef LONG_STEPS
+#define LONG_STEPS 100000L
+#endif
+
+static void long_run(void)
+{
+    const double ths[2] = {5 * PI / 180, PI / 2}, L = 1, d = 0.5;
+    int i;
+    for (i = 0; i < 2; ++i) {
+        ga2d_world *w = make_world(0, -G, 1, SUB);
+        double th0 = ths[i], m, in, e0, e_max, e_first = -1e300, e_last = -1e300, gap_first = 0, gap_last = 0, max_gap = 0;
+        double w0 = 2 * PI / bar_T0(L, G), e_osc, rounding, e_bound, gap_bound = bar_gap_bound(L, G, th0, L), worst_norm = 0, e_end = 0;
+        long k, tenth = LONG_STEPS / 10;
+        ga2d_body_id p = pivot_body(w, 0, 0);
+        ga2d_body_id bar = box_body(w, d * sin(th0), -d * cos(th0), th0 - PI / 2, d, L / 20, 1);
+        ga2d_joint_id j = hinge(w, p, bar, v2(0, 0), v2(-d, 0));
+        m = mass_of(w, bar);
+        in = (double)ga2d_body_mass_data(w, bar).inertia;
+        e0 = e_max = m * G * (double)ga2d_body_center(w, bar).y;
+        e_osc = m * G * d * (1 - cos(th0));
+        rounding = 8 * U * (m * G * d + e_osc);
+        e_bound = w0 * H / 2 * e_osc + rounding;
+        for (k = 1; k <= LONG_STEPS; ++k) {
+            ga2d_vec v, c;
+            ga2d_rotor q;
+            double om, e, gap, nq;
+            step(w);
+            v = ga2d_body_velocity(w, bar);
+            c = ga2d_body_center(w, bar);
+            q = ga2d_body_rotor(w, bar);
+            om = (double)ga2d_body_angular_velocity(w, bar);
+            e = 0.5 * m * ((double)v.x * (double)v.x + (double)v.y * (double)v.y) + 0.5 * in * om * om + m * G * (double)c.y;
+            gap = anchor_gap(w, j, v2(0, 0), v2(-d, 0));
+            nq = fabs(sqrt((double)q.c * (double)q.c + (double)q.s * (double)q.s) - 1);
+            if (nq > worst_norm) worst_norm = nq;
+            if (e > e_max) e_max = e;
+            if (gap > max_gap) max_gap = gap;
+            if (k <= tenth) {
+                if (e > e_first) e_first = e;
+                if (gap > gap_first) gap_first = gap;
+            } else if (k > LONG_STEPS - tenth) {
+                if (e > e_last) e_last = e;
+                if (gap > gap_last) gap_last = gap;
+            }
+            e_end = e;
+        }
+        CHECK(body_finite(w, bar));
+        CHECK(e_max - e0 <= e_bound);
+        CHECK(e_last <= e_first + rounding);
+        CHECK(max_gap <= gap_bound);
+        CHECK(gap_last <= gap_first + 8 * U);
+        CHECK(worst_norm <= 8 * REAL_EPS);
+        if (verbose())
+            printf("joint extremes: pendulum from %.0f deg, %ld steps: energy rose %.3g J <= %.3g; last tenth's highest - "
+                   "first's %.3g J <= %.3g; lost %.3g of E_osc %.3g J; gap %.3g m <= %.3g, last tenth's %.3g vs first's "
+                   "%.3g; ||q| - 1| %.3g <= %.3g\n",
+                   th0 * 180 / PI, LONG_STEPS, e_max - e0, e_bound, e_last - e_first, rounding, e0 - e_end, e_osc, max_gap,
+                   gap_bound, gap_last, gap_first, worst_norm, 8 * REAL_EPS);
+        ga2d_world_destroy(w);
+    }
+}
+
 /* ============================================ 6. parameters at the edge */
 /* A distance joint of absurd length: 1e30 m is finite and > 0, so create
    takes it (the header asks only that); its feedback asks the body to move
@@ -762,6 +847,220 @@ static void distance_absurd_length(void)
     ga2d_world_destroy(w);
 }
 
+/* Parameters at the edge of what create accepts, each as the header
+   documents it, and never a NaN:
+   - a distance joint of length 0: refused, INVALID_ARGUMENT ("a length
+     not > 0"), the world untouched (its snapshot bytes); the smallest
+     positive length (the least normal number) accepted, its anchors
+     coincident at rest: the box hangs from the anchor by the rest gap of
+     its weight, m g / (m omega_s^2) = g / omega_s^2 (the direction of a
+     zero span is taken as x, so the joint still acts), finite, within
+     twice that (sudden load) plus rounding;
+   - a revolute limit with lower == upper (0.3 rad): accepted, a locked
+     hinge: the bar (1 m, its end pinned, gravity across it) stays at 0.3
+     rad within twice the static deflection of the weight's torque m g d
+     cos(0.3) over the limit's axial mass (the bar's I about its centre):
+     tau / (I omega_s^2) (test_joints.c's limit at rest), plus 8 u;
+   - anchors far outside their bodies: a 0.2 m box hung from a pivot by
+     a hinge whose anchor on it is 100 m above its centre, released at 5
+     degrees: a pendulum of I_p = I + m 100^2 about the pivot, swinging
+     with period T0 = 2 pi sqrt(I_p / (m g d)) (d = 100 m: 20 s), timed
+     over 2 periods against the exact one less the phase error within
+     bar_period_bound's terms (the gap's, the interpolation's, the lost
+     amplitude's, 16 u), its gap below the static sag plus the turning
+     drift (bar_gap_bound's terms at d = 100), finite;
+   - a revolute motor with max torque 0: accepted, it does nothing: a
+     disc pinned at its centre, spinning at 3 rad/s, motor toward -5
+     rad/s: its spin stays 3 exactly (the clamp leaves the impulse 0),
+     the reported motor torque 0;
+   - spring hertz exactly at the cap (a quarter of the substep rate, 60
+     Hz at 4 substeps): accepted and taken as asked; any higher (1e6,
+     1e30 Hz) accepted and made at the cap: the runs are bit for bit the
+     run at the cap, finite (the implicit step is stable at any e = 2 pi
+     f h; at the cap e = pi/2 and its period, test_joints.c's 2 pi h /
+     acos(1 - e^2 / (2 (1 + e^2))), is 7.2 substeps, printed). */
+static ga2d_body_id disc_pinned(ga2d_world *w, ga2d_body_id p, double spin, ga2d_revolute_joint_def *d)
+{
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_circle c;
+    ga2d_body_id b;
+    bd.type = GA2D_BODY_DYNAMIC;
+    bd.angular_velocity = (ga2d_real)spin;
+    b = ga2d_body_create(w, &bd);
+    c.center = v2(0, 0);
+    c.radius = (ga2d_real)0.5;
+    CHECK(!ga2d_shape_id_is_null(ga2d_shape_create_circle(w, b, &sd, &c)));
+    *d = hinge_def(p, b, v2(0, 0), v2(0, 0));
+    return b;
+}
+
+static void parameters_at_the_edge(void)
+{
+    const double om = 2 * PI * JOINT_HERTZ;
+    /* a distance joint of length 0, and of the least positive length */
+    {
+        ga2d_world *w = make_world(0, -G, 1, SUB);
+        ga2d_body_id p = pivot_body(w, 0, 0), b = box_body(w, 0, 0, 0, 0.1, 0.1, 1);
+        ga2d_distance_joint_def d = ga2d_default_distance_joint_def();
+        ga2d_joint_id j;
+        unsigned char *ref;
+        size_t n, n2;
+        double worst = 0, bound = 2 * G / (om * om) + 16 * U;
+        int k, finite = 1;
+        d.body_a = p;
+        d.body_b = b;
+        d.length = 0;
+        ref = snapshot(w, &n);
+        CHECK_RESULT(ga2d_distance_joint_create_checked(w, &d, &j), GA2D_ERR_INVALID_ARGUMENT);
+        CHECK(ga2d_joint_id_is_null(j));
+        {
+            unsigned char *now = snapshot(w, &n2);
+            CHECK(now && ref && n == n2 && memcmp(now, ref, n) == 0);
+            free(now);
+        }
+        free(ref);
+        d.length = (ga2d_real)REAL_MIN;
+        CHECK_RESULT(ga2d_distance_joint_create_checked(w, &d, &j), GA2D_OK);
+        for (k = 0; k < 120; ++k) {
+            double l;
+            step(w);
+            l = (double)ga2d_distance_joint_current_length(w, j);
+            finite &= body_finite(w, b) && isfinite(l);
+            if (l > worst) worst = l;
+        }
+        CHECK(finite);
+        CHECK(worst <= bound);
+        if (verbose())
+            printf("joint extremes: distance length 0 refused; length %.3g accepted: the box hangs %.3g m off the anchor "
+                   "<= %.3g (twice g / omega_s^2), finite\n",
+                   REAL_MIN, worst, bound);
+        ga2d_world_destroy(w);
+    }
+    /* a revolute limit with lower == upper */
+    {
+        ga2d_world *w = make_world(0, -G, 1, SUB);
+        const double lim = 0.3;
+        ga2d_body_id p = pivot_body(w, 0, 0), b = box_body(w, 0.5 * cos(lim), 0.5 * sin(lim), lim, 0.5, 0.05, 1);
+        ga2d_revolute_joint_def d = hinge_def(p, b, v2(0, 0), v2(-0.5, 0));
+        ga2d_joint_id j;
+        double I, tau, bound, worst = 0;
+        int k;
+        d.enable_limit = 1;
+        d.lower_angle = d.upper_angle = (ga2d_real)lim;
+        CHECK_RESULT(ga2d_revolute_joint_create_checked(w, &d, &j), GA2D_OK);
+        I = (double)ga2d_body_mass_data(w, b).inertia;
+        tau = mass_of(w, b) * G * 0.5 * cos(lim);
+        bound = 2 * tau / (I * om * om) + 8 * U;
+        for (k = 0; k < 120; ++k) {
+            step(w);
+            if (fabs((double)ga2d_revolute_joint_angle(w, j) - lim) > worst) worst = fabs((double)ga2d_revolute_joint_angle(w, j) - lim);
+        }
+        CHECK(body_finite(w, b));
+        CHECK(worst <= bound);
+        if (verbose())
+            printf("joint extremes: revolute limit lower == upper = %.1f rad accepted: held within %.3g rad <= %.3g\n", lim,
+                   worst, bound);
+        ga2d_world_destroy(w);
+    }
+    /* anchors 100 m from the body */
+    {
+        const double D = 100, th0 = 5 * PI / 180;
+        ga2d_world *w = make_world(0, -G, 1, SUB);
+        ga2d_body_id p = pivot_body(w, 0, 0), b = box_body(w, D * sin(th0), -D * cos(th0), th0, 0.1, 0.1, 1);
+        ga2d_joint_id j = hinge(w, p, b, v2(0, 0), v2(0, D));
+        double m = mass_of(w, b), I = (double)ga2d_body_mass_data(w, b).inertia, ip = I + m * D * D;
+        double T0 = 2 * PI * sqrt(ip / (m * G * D)), w0 = 2 * PI / T0, T = T0 / agm(1, cos(th0 / 2)), phase = (w0 * H) * (w0 * H) / 24;
+        double prev, first = 0, last = 0, max_gap = 0, e0, e_min, bound, gap_bound, w2 = 2 * m * G * D * (1 - cos(th0)) / ip;
+        soft js = make_soft(JOINT_HERTZ, JOINT_ZETA, H);
+        int k, crossings = 0, finite = 1;
+        e0 = e_min = m * G * (double)ga2d_body_center(w, b).y;
+        prev = (double)ga2d_body_center(w, b).x;
+        for (k = 1; crossings <= 2 && k < 5000; ++k) {
+            ga2d_vec v, c;
+            double x, e, om_b = 0;
+            step(w);
+            v = ga2d_body_velocity(w, b);
+            c = ga2d_body_center(w, b);
+            om_b = (double)ga2d_body_angular_velocity(w, b);
+            e = 0.5 * m * ((double)v.x * (double)v.x + (double)v.y * (double)v.y) + 0.5 * I * om_b * om_b + m * G * (double)c.y;
+            if (e < e_min) e_min = e;
+            if (anchor_gap(w, j, v2(0, 0), v2(0, D)) > max_gap) max_gap = anchor_gap(w, j, v2(0, 0), v2(0, D));
+            finite &= body_finite(w, b);
+            x = (double)c.x;
+            if (prev < 0 && x >= 0) {
+                double tc = k * DT - DT * x / (x - prev);
+                if (crossings == 0) first = tc;
+                last = tc;
+                ++crossings;
+            }
+            prev = x;
+        }
+        gap_bound = (G + w2 * D) / (om * om) + w2 * H * D / (2 * js.bias * js.ms) + 8 * U * D;
+        bound = max_gap * (m * D / ip + 1 / (2 * D)) + 2 * w0 * w0 * DT * DT * DT / 8 / 2 / T + (e0 - e_min) / (8 * m * G * D) + 16 * U;
+        CHECK(finite);
+        CHECK(crossings > 2);
+        CHECK(max_gap <= gap_bound);
+        CHECK_NEAR((last - first) / 2 / (T * (1 - phase)), 1, bound);
+        if (verbose())
+            printf("joint extremes: anchor 100 m from its body: period %.6f s vs exact %.6f less the phase error: |rel| %.3g "
+                   "<= %.3g; gap %.3g m <= %.3g\n",
+                   (last - first) / 2, T, fabs((last - first) / 2 / (T * (1 - phase)) - 1), bound, max_gap, gap_bound);
+        ga2d_world_destroy(w);
+    }
+    /* a motor with max torque 0 */
+    {
+        ga2d_world *w = make_world(0, -G, 1, SUB);
+        ga2d_body_id p = pivot_body(w, 0, 0), b;
+        ga2d_revolute_joint_def d;
+        ga2d_joint_id j;
+        int k, same = 1;
+        b = disc_pinned(w, p, 3, &d);
+        d.enable_motor = 1;
+        d.motor_speed = -5;
+        d.max_motor_torque = 0;
+        CHECK_RESULT(ga2d_revolute_joint_create_checked(w, &d, &j), GA2D_OK);
+        for (k = 0; k < 60; ++k) {
+            step(w);
+            same &= ga2d_body_angular_velocity(w, b) == 3 && ga2d_revolute_joint_motor_torque(w, j) == 0;
+        }
+        CHECK(same);
+        if (verbose()) printf("joint extremes: motor of max torque 0 accepted: the spin stayed 3 rad/s exactly: %d\n", same);
+        ga2d_world_destroy(w);
+    }
+    /* spring hertz at the cap, and above it */
+    {
+        static const double hz[3] = {0.25 / H, 1e6, 1e30};
+        double angle[3][60], e = 2 * PI * (0.25 / H) * H, Td = 2 * PI * H / acos(1 - e * e / (2 * (1 + e * e)));
+        int i, k, same = 1, finite = 1;
+        for (i = 0; i < 3; ++i) {
+            ga2d_world *w = make_world(0, -G, 1, SUB);
+            ga2d_body_id p = pivot_body(w, 0, 0), b;
+            ga2d_revolute_joint_def d;
+            ga2d_joint_id j;
+            b = disc_pinned(w, p, 0, &d);
+            CHECK_RESULT(ga2d_body_set_transform(w, b, v2(0, 0), ga2d_rotor_from_angle((ga2d_real)0.3)), GA2D_OK);
+            d.enable_spring = 1;
+            d.hertz = (ga2d_real)hz[i];
+            d.damping_ratio = 0;
+            CHECK_RESULT(ga2d_revolute_joint_create_checked(w, &d, &j), GA2D_OK);
+            for (k = 0; k < 60; ++k) {
+                step(w);
+                angle[i][k] = (double)ga2d_revolute_joint_angle(w, j);
+                finite &= isfinite(angle[i][k]) && body_finite(w, b);
+                if (i > 0) same &= angle[i][k] == angle[0][k];
+            }
+            ga2d_world_destroy(w);
+        }
+        CHECK(finite);
+        CHECK(same);
+        if (verbose())
+            printf("joint extremes: spring at the cap (%.0f Hz) accepted; 1e6 and 1e30 Hz accepted and made at the cap: the "
+                   "same bits: %d; finite: %d; the scheme's period there %.4g s (1/f = %.4g s)\n",
+                   0.25 / H, same, finite, Td, H * 4);
+    }
+}
+
 void suite_joints_extremes(void)
 {
     test_run("joint extremes: a motor past the speed caps", motor_past_the_caps);
@@ -769,5 +1068,7 @@ void suite_joints_extremes(void)
     test_run("joint extremes: a pendulum and a spring from 1 cm to 100 m", scale_runs);
     test_run("joint extremes: a pendulum far from the origin swings as one at it", far_from_origin);
     test_run("joint extremes: mass ratios 1 to 1000 hanging, both orders", mass_ratios);
+    test_run("joint extremes: an undamped pendulum for 10^5 steps", long_run);
     test_run("joint extremes: a distance joint of absurd length pushes out at the cap, counted", distance_absurd_length);
+    test_run("joint extremes: parameters at the edge of acceptance", parameters_at_the_edge);
 }
