@@ -1182,7 +1182,8 @@ GA2D_API ga2d_result ga2d_revolute_joint_set_spring(ga2d_world *w, ga2d_joint_id
 GA2D_API ga2d_real ga2d_revolute_joint_motor_torque(const ga2d_world *w, ga2d_joint_id id); /* N m, last step */
 /* A rod, rope or spring between the anchors: their distance held at
    `length` (m, > 0), or, with the limit on, kept within [min_length,
-   max_length] (a rope: min 0); a spring of `hertz` and damping_ratio
+   max_length] (a rope: min 0; min equal to max holds it there, rigid,
+   the spring aside); a spring of `hertz` and damping_ratio
    pulls it toward `length` (hertz 0: rigid); a motor drives the length's
    rate toward motor_speed (m/s) with at most max_motor_force (N).
    Defaults: length 1, limits 0 and 1e6 (off), everything else off. */
@@ -9603,11 +9604,13 @@ static void ga2d__solve_distance(ga2d__step_context *c, ga2d__joint *j, int bias
     ga2d_real len = ga2d_vec_length(d), wa = ga2d_wedge(ra, axis), wb = ga2d_wedge(rb, axis);
     ga2d_real k = j->ima + j->imb + j->iia * wa * wa + j->iib * wb * wb, m = k > 0 ? 1 / k : 0;
     int ranged = j->enable_limit && j->lower < j->upper;
-    if (j->enable_spring && j->hertz > 0) {
+    int pinned = j->enable_limit && !ranged; /* a range of no width: rigid at it, whatever the length or spring */
+    ga2d_real target = pinned ? j->lower : j->length;
+    if (j->enable_spring && j->hertz > 0 && !pinned) {
         if (!ranged || (len > j->lower && len < j->upper)) /* a rope's spring acts within its range */
             ga2d__axis_impulse(j, &A, &B, ra, rb, axis, m, j->spring.bias_rate * (len - j->length), &j->spring, &j->spring_impulse);
     } else if (!ranged) {
-        ga2d__axis_impulse(j, &A, &B, ra, rb, axis, m, bias ? c->joint_soft.bias_rate * (len - j->length) : 0,
+        ga2d__axis_impulse(j, &A, &B, ra, rb, axis, m, bias ? c->joint_soft.bias_rate * (len - target) : 0,
                            bias ? &c->joint_soft : NULL, &j->impulse);
     }
     if (ranged) {

@@ -1061,6 +1061,46 @@ static void parameters_at_the_edge(void)
     }
 }
 
+/* A distance joint's range of no width: limit on, min_length = max_length
+   = 0.5 m, length 1 m (its default), with and without a 2 Hz spring: the
+   header keeps the distance "within [min_length, max_length]", so at 0.5
+   m: the box (0.2 m square, its centre the anchor, gravity on), released
+   at rest 0.5 m below a static anchor, hangs there by the rigid joint's
+   rest gap g / omega_s^2 (m_eff = m: A static, no lever), within twice
+   that (sudden load) plus rounding 16 u.  Before, a range of no width was
+   no range: the joint held 1 m (rigid) or sprang about 1 m (spring),
+   outside it. */
+static void distance_range_of_no_width(void)
+{
+    const double om = 2 * PI * JOINT_HERTZ, bound = 2 * G / (om * om) + 16 * U;
+    int spring;
+    for (spring = 0; spring < 2; ++spring) {
+        ga2d_world *w = make_world(0, -G, 1, SUB);
+        ga2d_body_id p = pivot_body(w, 0, 0), b = box_body(w, 0, -0.5, 0, 0.1, 0.1, 1);
+        ga2d_distance_joint_def d = ga2d_default_distance_joint_def();
+        ga2d_joint_id j;
+        double worst = 0;
+        int k;
+        d.body_a = p;
+        d.body_b = b;
+        d.enable_limit = 1;
+        d.min_length = d.max_length = (ga2d_real)0.5;
+        d.enable_spring = spring;
+        d.hertz = 2;
+        CHECK_RESULT(ga2d_distance_joint_create_checked(w, &d, &j), GA2D_OK);
+        for (k = 0; k < 120; ++k) {
+            step(w);
+            if (fabs((double)ga2d_distance_joint_current_length(w, j) - 0.5) > worst)
+                worst = fabs((double)ga2d_distance_joint_current_length(w, j) - 0.5);
+        }
+        CHECK(worst <= bound);
+        if (verbose())
+            printf("joint extremes: distance range 0.5..0.5 m (length 1 m%s): held %.3g m off 0.5 <= %.3g\n",
+                   spring ? ", spring 2 Hz" : "", worst, bound);
+        ga2d_world_destroy(w);
+    }
+}
+
 void suite_joints_extremes(void)
 {
     test_run("joint extremes: a motor past the speed caps", motor_past_the_caps);
@@ -1071,4 +1111,5 @@ void suite_joints_extremes(void)
     test_run("joint extremes: an undamped pendulum for 10^5 steps", long_run);
     test_run("joint extremes: a distance joint of absurd length pushes out at the cap, counted", distance_absurd_length);
     test_run("joint extremes: parameters at the edge of acceptance", parameters_at_the_edge);
+    test_run("joint extremes: a distance range of no width holds there", distance_range_of_no_width);
 }
