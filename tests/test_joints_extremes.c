@@ -345,8 +345,9 @@ static double agm(double a, double b)
    0)) to a static pivot at (ox, oy), hanging at th0 from the downward
    vertical, released at rest, gravity g down.  Times `periods` periods by
    the upward crossings of the bar's x past the pivot's (interpolated),
-   and reports the largest anchor gap and the lowest energy. */
-typedef struct swing { double period, max_sep, e0, e_min, e_max, e_end; long steps; } swing;
+   and reports the largest anchor gap and the lowest energy (the bar's
+   kinetic and potential, its height from the pivot's). */
+typedef struct swing { double period, max_sep, e0, e_min; long steps; } swing;
 static swing swing_bar(ga2d_world *w, double ox, double oy, double L, double th0, double g, int periods)
 {
     double d = L / 2, prev, first = 0, last = 0;
@@ -357,7 +358,7 @@ static swing swing_bar(ga2d_world *w, double ox, double oy, double L, double th0
     swing s;
     int crossings = 0;
     memset(&s, 0, sizeof s);
-    s.e0 = s.e_min = s.e_max = m * g * ((double)ga2d_body_center(w, bar).y - oy);
+    s.e0 = s.e_min = m * g * ((double)ga2d_body_center(w, bar).y - oy);
     prev = (double)ga2d_body_center(w, bar).x - ox;
     for (s.steps = 1; crossings <= periods && s.steps < 100000; ++s.steps) {
         ga2d_vec v, c;
@@ -368,7 +369,6 @@ static swing swing_bar(ga2d_world *w, double ox, double oy, double L, double th0
         om = (double)ga2d_body_angular_velocity(w, bar);
         e = 0.5 * m * ((double)v.x * (double)v.x + (double)v.y * (double)v.y) + 0.5 * in * om * om + m * g * ((double)c.y - oy);
         if (e < s.e_min) s.e_min = e;
-        if (e > s.e_max) s.e_max = e;
         sep = anchor_gap(w, j, v2(0, 0), v2(-d, 0));
         if (sep > s.max_sep) s.max_sep = sep;
         x = (double)c.x - ox;
@@ -380,7 +380,6 @@ static swing swing_bar(ga2d_world *w, double ox, double oy, double L, double th0
         }
         prev = x;
     }
-    s.e_end = s.e_max; /* overwritten by callers that need the last */
     s.period = crossings > periods ? (last - first) / periods : 0;
     return s;
 }
