@@ -1182,7 +1182,8 @@ GA2D_API ga2d_result ga2d_revolute_joint_set_spring(ga2d_world *w, ga2d_joint_id
 GA2D_API ga2d_real ga2d_revolute_joint_motor_torque(const ga2d_world *w, ga2d_joint_id id); /* N m, last step */
 /* A rod, rope or spring between the anchors: their distance held at
    `length` (m, > 0), or, with the limit on, kept within [min_length,
-   max_length] (a rope: min 0); a spring of `hertz` and damping_ratio
+   max_length] (a rope: min 0; min equal to max holds it there, rigid,
+   the spring aside); a spring of `hertz` and damping_ratio
    pulls it toward `length` (hertz 0: rigid); a motor drives the length's
    rate toward motor_speed (m/s) with at most max_motor_force (N).
    Defaults: length 1, limits 0 and 1e6 (off), everything else off. */
@@ -9603,11 +9604,13 @@ static void ga2d__solve_distance(ga2d__step_context *c, ga2d__joint *j, int bias
     ga2d_real len = ga2d_vec_length(d), wa = ga2d_wedge(ra, axis), wb = ga2d_wedge(rb, axis);
     ga2d_real k = j->ima + j->imb + j->iia * wa * wa + j->iib * wb * wb, m = k > 0 ? 1 / k : 0;
     int ranged = j->enable_limit && j->lower < j->upper;
-    if (j->enable_spring && j->hertz > 0) {
+    int pinned = j->enable_limit && !ranged; /* a range of no width: rigid at it, whatever the length or spring */
+    ga2d_real target = pinned ? j->lower : j->length;
+    if (j->enable_spring && j->hertz > 0 && !pinned) {
         if (!ranged || (len > j->lower && len < j->upper)) /* a rope's spring acts within its range */
             ga2d__axis_impulse(j, &A, &B, ra, rb, axis, m, j->spring.bias_rate * (len - j->length), &j->spring, &j->spring_impulse);
     } else if (!ranged) {
-        ga2d__axis_impulse(j, &A, &B, ra, rb, axis, m, bias ? c->joint_soft.bias_rate * (len - j->length) : 0,
+        ga2d__axis_impulse(j, &A, &B, ra, rb, axis, m, bias ? c->joint_soft.bias_rate * (len - target) : 0,
                            bias ? &c->joint_soft : NULL, &j->impulse);
     }
     if (ranged) {
@@ -10282,12 +10285,45 @@ static void ga2d__rk4_positions(ga2d__step_context *c, int begin, int end)
     }
 }
 
-/* Stage, over the moving bodies: x += h v, q <- q exp(w h e12). */
+/* The caps again where they bound the motion, before the drift: the
+   solver's passes (a joint's motor or feedback, a contact) may have driven
+   a body past them since the kick, and a body moved at that speed tears
+   its joints (a motor of 1e9 N m toward 1e4 rad/s turned a hinged bar 41
+   rad a substep: its pin up to 43 m apart, a chain of five at 1e19 m).
+   The velocity (v, w) is scaled as one, so the point that stood still (a
+   pivot) still stands.  Counted in speed_caps when the solver went past
+   a cap by more than the kick's own rounding of it (a rigid pass may
+   take the speed back before the next kick sees it: a distance joint of
+   absurd length pushing out at the cap, uncounted, for ever). */
+static void ga2d__cap_motion(ga2d_world *w, ga2d__body_sim *b, ga2d_real max_speed, ga2d_real max_turn_rate)
+{
+    const ga2d_real slack = 1 + 16 * GA2D__EPS; /* above the kick's capped length, rounded */
+    ga2d_vec v = b->v;
+    ga2d_real om = b->w, s = 1;
+    if (ga2d__cap_length(&v, max_speed * slack)) {
+        ga2d_real m = GA2D__FABS(b->v.x) > GA2D__FABS(b->v.y) ? GA2D__FABS(b->v.x) : GA2D__FABS(b->v.y);
+        v = b->v;
+        (void)ga2d__cap_length(&v, max_speed);
+        s = (GA2D__FABS(v.x) > GA2D__FABS(v.y) ? GA2D__FABS(v.x) : GA2D__FABS(v.y)) / m;
+    }
+    if (ga2d__cap_turn(&om, max_turn_rate) && om / b->w < s) s = om / b->w;
+    if (s < 1) {
+        b->v = ga2d_vec_scale(b->v, s);
+        b->w *= s;
+        ++w->counters.speed_caps;
+    }
+}
+
+/* Stage, over the moving bodies: the caps, x += h v, q <- q exp(w h e12). */
 static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     int k;
-    for (k = begin; k < end; ++k) ga2d__drift(w, &w->bodies[w->moving[k]].sim, c->h);
+    for (k = begin; k < end; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (b->type == GA2D_BODY_DYNAMIC) ga2d__cap_motion(w, &b->sim, GA2D__MAX_SPEED * w->def.length_units_per_meter, GA2D__MAX_TURN / c->h);
+        ga2d__drift(w, &b->sim, c->h);
+    }
 }
 
 /* The position phase of the world's integrator, ending the substep. */
