@@ -840,6 +840,10 @@ typedef struct ga2d_world_counters {
     int joint_count;        /* live joints */
     int joints_solved;      /* joints the last step solved (0 in a world
                                without joints, or with all of them asleep) */
+    int query_nodes;        /* broadphase tree nodes the last world query
+                               visited (ga2d_world_cast_ray, overlap_*) */
+    int query_shapes;       /* shapes it tested exactly (their boxes met
+                               the query's) */
 } ga2d_world_counters;
 
 GA2D_API ga2d_world_def ga2d_default_world_def(void);
@@ -1485,6 +1489,83 @@ GA2D_API int ga2d_shape_get_sensor_overlaps(const ga2d_world *w, ga2d_shape_id s
    lists, ga2d_world_get_contacts and the events, keep the A-before-B
    order.) */
 GA2D_API int ga2d_body_get_contacts(const ga2d_world *w, ga2d_body_id id, ga2d_contact_data *out, int capacity);
+
+/* ---------------------------------------------------------------- queries */
+/* A ray p + t (translation), t in [0, 1], and where it first enters a
+   shape: point, the shape's outward unit normal there (a segment's: the
+   side facing the ray's start) and the fraction t.  hit = 0: nothing in
+   reach, and the rest is zero.  A ray that starts inside a shape (or on
+   its boundary, within rounding) does not hit it, so a ray cast from a
+   body's centre sees out of its own shapes; a ray along a segment's line
+   does not hit it; a ray that grazes a corner or a circle's edge hits
+   it.  A chain segment is one-sided, as in collision: a ray from behind
+   it (its right) passes through.  The world-free casts leave shape and
+   body null. */
+typedef struct ga2d_ray_result {
+    ga2d_shape_id shape;
+    ga2d_body_id body;
+    ga2d_vec point, normal;
+    ga2d_real fraction;
+    int hit;
+} ga2d_ray_result;
+
+/* A ray against one shape in its own frame; bad input (NULL, a value not
+   finite, a negative radius, a polygon ga2d_polygon_make could not have
+   made, a translation of zero length) does not hit. */
+GA2D_API ga2d_ray_result ga2d_ray_cast_circle(const ga2d_circle *c, ga2d_vec origin, ga2d_vec translation);
+GA2D_API ga2d_ray_result ga2d_ray_cast_capsule(const ga2d_capsule *c, ga2d_vec origin, ga2d_vec translation);
+/* radius > 0: the rounded polygon */
+GA2D_API ga2d_ray_result ga2d_ray_cast_polygon(const ga2d_polygon *p, ga2d_vec origin, ga2d_vec translation);
+/* one_sided: hit only from the left of point1 -> point2 (as a chain's) */
+GA2D_API ga2d_ray_result ga2d_ray_cast_segment(const ga2d_segment *s, ga2d_vec origin, ga2d_vec translation,
+                                              int one_sided);
+/* Any shape placed by x, the ray in world coordinates.  NOT_FINITE for a
+   value not finite, INVALID_ARGUMENT for NULL, a zero translation or a
+   shape ga2d_collide_shapes would refuse; *out untouched then. */
+GA2D_API ga2d_result ga2d_ray_cast_shape(const ga2d_geometry *g, ga2d_transform x, ga2d_vec origin, ga2d_vec translation,
+                                         ga2d_ray_result *out);
+
+/* World queries visit the broadphase trees, so they touch only the shapes
+   whose boxes the query's box meets (counters.query_nodes and
+   query_shapes say how many, for the last query), allocate nothing, and
+   change nothing but those two counters.  A shape is seen when
+   ga2d_should_collide(filter, its filter) holds (ga2d_default_filter()
+   sees every shape); sensors are never seen.  Each is refused with LOCKED
+   from inside a step, a callback of the world's (force, pre-solve, draw,
+   allocator) or another query's callback: the world is locked while a
+   query runs, so its callback can read the world but not change it.
+   Errors: INVALID_ARGUMENT for a NULL world or callback or a zero
+   translation, NOT_FINITE for a value not finite. */
+
+/* The closest hit along origin + t translation, t in [0, 1] (the null
+   shape and hit 0 for none, or on any error). */
+GA2D_API ga2d_ray_result ga2d_world_cast_ray_closest(const ga2d_world *w, ga2d_vec origin, ga2d_vec translation,
+                                                     ga2d_filter filter);
+GA2D_API ga2d_result ga2d_world_cast_ray_closest_checked(const ga2d_world *w, ga2d_vec origin, ga2d_vec translation,
+                                                         ga2d_filter filter, ga2d_ray_result *out);
+/* Every hit, each shape's first crossing, in the trees' order (not by
+   distance).  The callback returns how to go on: a negative value ignores
+   this shape (the ray goes on as before), 0 stops, a fraction f in
+   (0, 1] clips the ray to origin + f translation (return the hit's
+   fraction to look for a closer one only; 1 to see every hit). */
+typedef ga2d_real ga2d_cast_fn(ga2d_shape_id shape, ga2d_vec point, ga2d_vec normal, ga2d_real fraction, void *context);
+GA2D_API ga2d_result ga2d_world_cast_ray(const ga2d_world *w, ga2d_vec origin, ga2d_vec translation, ga2d_filter filter,
+                                         ga2d_cast_fn *fn, void *context);
+/* The callback gets each shape found; returning 0 stops the query. */
+typedef int ga2d_overlap_fn(ga2d_shape_id shape, void *context);
+/* Shapes whose bounding box (tight, not the broadphase's fat one)
+   overlaps box, touching included. */
+GA2D_API ga2d_result ga2d_world_overlap_aabb(const ga2d_world *w, ga2d_aabb box, ga2d_filter filter, ga2d_overlap_fn *fn,
+                                             void *context);
+/* Shapes that contain point, their boundary included (segments and chain
+   segments have no inside: never). */
+GA2D_API ga2d_result ga2d_world_overlap_point(const ga2d_world *w, ga2d_vec point, ga2d_filter filter,
+                                              ga2d_overlap_fn *fn, void *context);
+
+/* The live bodies, in id index order: up to capacity ids into ids (NULL
+   for none); returns how many there are. */
+GA2D_API int ga2d_world_body_count(const ga2d_world *w);
+GA2D_API int ga2d_world_get_bodies(const ga2d_world *w, ga2d_body_id *ids, int capacity);
 
 /* ------------------------------------------------------------- debug draw */
 /* Colours (0xRRGGBB) that say a body's state. */
@@ -2651,6 +2732,83 @@ static void ga2d__tree_query(const ga2d__tree *t, ga2d_aabb q, ga2d__query_fn *f
     }
 }
 
+/* Whether the segment p + t d, t in [0, tmax], meets box b (closed): the
+   slab test, each axis narrowing [lo, hi] to where the segment is within
+   that axis's bounds.  A leaf's box is fattened past its shape, so the
+   rounding of the quotients never culls a shape the segment touches. */
+static int ga2d__segment_meets_box(ga2d_aabb b, ga2d_vec p, ga2d_vec d, ga2d_real tmax)
+{
+    ga2d_real lo = 0, hi = tmax, pa[2], da[2], bl[2], bu[2];
+    int k;
+    pa[0] = p.x, pa[1] = p.y, da[0] = d.x, da[1] = d.y;
+    bl[0] = b.lower.x, bl[1] = b.lower.y, bu[0] = b.upper.x, bu[1] = b.upper.y;
+    for (k = 0; k < 2; ++k) {
+        if (da[k] == 0) {
+            if (pa[k] < bl[k] || pa[k] > bu[k]) return 0;
+        } else {
+            ga2d_real t1 = (bl[k] - pa[k]) / da[k], t2 = (bu[k] - pa[k]) / da[k];
+            if (t1 > t2) {
+                ga2d_real s = t1;
+                t1 = t2;
+                t2 = s;
+            }
+            if (t1 > lo) lo = t1;
+            if (t2 < hi) hi = t2;
+            if (lo > hi) return 0;
+        }
+    }
+    return 1;
+}
+
+/* The leaves whose boxes the segment p + t d, t in [0, *tmax], meets, in
+   the tree's order; fn may clip *tmax (later boxes are tested against the
+   shorter segment) or return 0 to stop.  Returns 0 when stopped. */
+typedef int ga2d__ray_leaf_fn(void *ctx, int leaf_body, ga2d_real *tmax);
+static int ga2d__tree_ray(const ga2d__tree *t, ga2d_vec p, ga2d_vec d, ga2d_real *tmax, ga2d__ray_leaf_fn *fn, void *ctx,
+                          int *nodes)
+{
+    int stack[256], top = 0;
+    if (t->root < 0) return 1;
+    stack[top++] = t->root;
+    while (top > 0) {
+        const ga2d__node *nd = &t->nodes[stack[--top]];
+        ++*nodes;
+        if (!ga2d__segment_meets_box(nd->box, p, d, *tmax)) continue;
+        if (nd->child1 < 0) {
+            if (!fn(ctx, nd->body, tmax)) return 0;
+        } else {
+            GA2D_ASSERT(top + 2 <= 256);
+            stack[top++] = nd->child2;
+            stack[top++] = nd->child1;
+        }
+    }
+    return 1;
+}
+
+/* The leaves whose boxes overlap q, as ga2d__tree_query, for the world's
+   queries: fn returns 0 to stop (then this returns 0), and the nodes
+   visited are counted. */
+typedef int ga2d__leaf_fn(void *ctx, int leaf_body);
+static int ga2d__tree_overlap(const ga2d__tree *t, ga2d_aabb q, ga2d__leaf_fn *fn, void *ctx, int *nodes)
+{
+    int stack[256], top = 0;
+    if (t->root < 0) return 1;
+    stack[top++] = t->root;
+    while (top > 0) {
+        const ga2d__node *nd = &t->nodes[stack[--top]];
+        ++*nodes;
+        if (!ga2d_aabb_overlaps(nd->box, q)) continue;
+        if (nd->child1 < 0) {
+            if (!fn(ctx, nd->body)) return 0;
+        } else {
+            GA2D_ASSERT(top + 2 <= 256);
+            stack[top++] = nd->child2;
+            stack[top++] = nd->child1;
+        }
+    }
+    return 1;
+}
+
 static void ga2d__tree_release(const ga2d_allocator *a, ga2d__tree *t)
 {
     GA2D__FREE_ARRAY(a, t->nodes, t->capacity);
@@ -3508,6 +3666,243 @@ GA2D_API int ga2d_collide_polygons(const ga2d_polygon *a, ga2d_transform xa, con
     return ga2d_collide_polygons_scaled(a, xa, b, xb, 1, out);
 }
 
+/* -------------------------------------------------------------- ray casts */
+/* A ray p + t u, u unit, t in [0, best->t] (metres along it), against the
+   pieces a shape's boundary is made of; each piece that meets it from
+   outside sooner than best->t takes best.  A shape is convex, and the ray
+   starts outside it: the first piece met is where it enters. */
+typedef struct ga2d__ray_hit { ga2d_real t; ga2d_vec normal; int hit; } ga2d__ray_hit;
+
+/* The circle (c, r): with s = p - c, the closest approach to c is at
+   tc = -(s . u), offset q = s + tc u (formed so, not from |s|^2 - tc^2,
+   which cancels when the ray passes far off); the ray enters at
+   tc - sqrt(r^2 - q^2). */
+static void ga2d__ray_circle(ga2d_vec c, ga2d_real r, ga2d_vec p, ga2d_vec u, ga2d__ray_hit *best)
+{
+    ga2d_vec s = ga2d_vec_sub(p, c), q, n;
+    ga2d_real tc = -ga2d_dot(s, u), h2, t;
+    q = ga2d_vec_add(s, ga2d_vec_scale(u, tc));
+    h2 = r * r - ga2d_dot(q, q);
+    if (h2 < 0) return;
+    t = tc - GA2D__SQRT(h2);
+    if (t < 0 || t > best->t) return;
+    n = ga2d_vec_add(s, ga2d_vec_scale(u, t));
+    if (ga2d_vec_normalize(n, &n) == 0) n = ga2d_vec_neg(u); /* r = 0: a point met head on */
+    best->t = t;
+    best->normal = n;
+    best->hit = 1;
+}
+
+/* The flat piece a -> a + e with outward normal n, met from its front. */
+static void ga2d__ray_face(ga2d_vec a, ga2d_vec e, ga2d_vec n, ga2d_vec p, ga2d_vec u, ga2d__ray_hit *best)
+{
+    ga2d_real den = ga2d_dot(n, u), t, along;
+    if (!(den < 0)) return; /* leaving it, or along it */
+    t = ga2d_dot(n, ga2d_vec_sub(a, p)) / den;
+    if (t < 0 || t > best->t) return;
+    along = ga2d_dot(ga2d_vec_sub(ga2d_vec_add(p, ga2d_vec_scale(u, t)), a), e);
+    if (along < 0 || along > ga2d_dot(e, e)) return;
+    best->t = t;
+    best->normal = n;
+    best->hit = 1;
+}
+
+/* A sharp polygon by clipping the ray to each edge's inner half-plane
+   (n . (x - v) <= 0): an edge the ray crosses inward raises the entry,
+   one it crosses outward lowers the exit.  No edge ever raises the entry
+   when the ray starts inside; a ray through a corner keeps entry = exit,
+   a hit. */
+static void ga2d__ray_sharp(const ga2d__hull *h, ga2d_vec p, ga2d_vec u, ga2d__ray_hit *best)
+{
+    ga2d_real lower = 0, upper = best->t;
+    int i, index = -1;
+    for (i = 0; i < h->count; ++i) {
+        ga2d_real num = ga2d_dot(h->n[i], ga2d_vec_sub(h->v[i], p)), den = ga2d_dot(h->n[i], u);
+        if (den == 0) {
+            if (num < 0) return; /* outside this edge, and running along it */
+        } else if (den < 0 && num < lower * den) {
+            lower = num / den;
+            index = i;
+        } else if (den > 0 && num < upper * den) {
+            upper = num / den;
+        }
+        if (upper < lower) return;
+    }
+    if (index < 0) return;
+    best->t = lower;
+    best->normal = h->n[index];
+    best->hit = 1;
+}
+
+/* A hull grown by its radius (a rounded polygon, a capsule): its pieces
+   are each edge pushed out by the radius and a circle at each vertex.  A
+   ray that starts within the radius of the core is inside. */
+static void ga2d__ray_round(const ga2d__hull *h, ga2d_vec p, ga2d_vec u, ga2d__ray_hit *best)
+{
+    ga2d_vec q, dir;
+    int i, feature;
+    if (ga2d__hull_nearest(h, p, &q, &dir, &feature) <= h->radius) return;
+    for (i = 0; i < h->count; ++i) {
+        ga2d_vec a = h->v[i], b = h->v[i + 1 < h->count ? i + 1 : 0], off = ga2d_vec_scale(h->n[i], h->radius);
+        ga2d__ray_face(ga2d_vec_add(a, off), ga2d_vec_sub(b, a), h->n[i], p, u, best);
+        ga2d__ray_circle(a, h->radius, p, u, best);
+    }
+}
+
+/* A segment a -> a + e: p + t u = a + s e solved by wedging with e and
+   with u, t = ((a - p) ^ e) / (u ^ e), s = ((a - p) ^ u) / (u ^ e).
+   Parallel (u ^ e = 0): no hit.  One-sided: only from its left, where
+   e e12 points. */
+static void ga2d__ray_segment(ga2d_vec a, ga2d_vec b, int one_sided, ga2d_vec p, ga2d_vec u, ga2d__ray_hit *best)
+{
+    ga2d_vec e = ga2d_vec_sub(b, a), ap = ga2d_vec_sub(a, p), n;
+    ga2d_real den = ga2d_wedge(u, e), t, s;
+    if (den == 0 || ga2d_vec_normalize(ga2d_vec_perp(e), &n) == 0) return;
+    if (ga2d_dot(n, u) > 0) {
+        if (one_sided) return; /* from behind */
+        n = ga2d_vec_neg(n);
+    }
+    t = ga2d_wedge(ap, e) / den;
+    s = ga2d_wedge(ap, u) / den;
+    if (t < 0 || t > best->t || s < 0 || s > 1) return;
+    best->t = t;
+    best->normal = n;
+    best->hit = 1;
+}
+
+/* The ray p + t d, t in [0, 1], against g in its own frame. */
+static ga2d_ray_result ga2d__ray_geometry(const ga2d_geometry *g, ga2d_vec p, ga2d_vec d)
+{
+    ga2d_ray_result out;
+    ga2d__ray_hit best;
+    ga2d__hull h;
+    ga2d_vec u;
+    ga2d_real len = ga2d_vec_normalize(d, &u);
+    memset(&out, 0, sizeof out);
+    if (!(len > 0) || !ga2d__finite(len)) return out;
+    best.t = len;
+    best.hit = 0;
+    best.normal = ga2d_vec_make(0, 0);
+    switch (g->type) {
+    case GA2D_SHAPE_CIRCLE:
+        if (ga2d_vec_length_sq(ga2d_vec_sub(p, g->as.circle.center)) > g->as.circle.radius * g->as.circle.radius)
+            ga2d__ray_circle(g->as.circle.center, g->as.circle.radius, p, u, &best);
+        break;
+    case GA2D_SHAPE_CAPSULE:
+        if (ga2d__segment_hull(g->as.capsule.center1, g->as.capsule.center2, g->as.capsule.radius, &h)) {
+            ga2d__ray_round(&h, p, u, &best);
+        } else if (ga2d_vec_length_sq(ga2d_vec_sub(p, g->as.capsule.center1)) > g->as.capsule.radius * g->as.capsule.radius) {
+            ga2d__ray_circle(g->as.capsule.center1, g->as.capsule.radius, p, u, &best); /* ends that coincide */
+        }
+        break;
+    case GA2D_SHAPE_POLYGON:
+        ga2d__polygon_hull(&g->as.polygon, ga2d_transform_identity(), 1, &h);
+        if (h.radius > 0)
+            ga2d__ray_round(&h, p, u, &best);
+        else
+            ga2d__ray_sharp(&h, p, u, &best);
+        break;
+    default: {
+        const ga2d_segment *s = ga2d__segment_of(g);
+        ga2d__ray_segment(s->point1, s->point2, g->type == GA2D_SHAPE_CHAIN_SEGMENT, p, u, &best);
+        break;
+    }
+    }
+    if (!best.hit) return out;
+    out.hit = 1;
+    out.fraction = best.t / len;
+    if (out.fraction > 1) out.fraction = 1; /* t <= len; the quotient may round past */
+    out.point = ga2d_vec_add(p, ga2d_vec_scale(u, best.t));
+    out.normal = best.normal;
+    return out;
+}
+
+/* The input checks of ga2d_collide_shapes, for a ray. */
+static ga2d_result ga2d__ray_input(const ga2d_geometry *g, ga2d_vec origin, ga2d_vec translation)
+{
+    int bad = ga2d__geometry_input(g);
+    if (bad) return (ga2d_result)-bad;
+    if (!ga2d__finite_vec(origin) || !ga2d__finite_vec(translation)) return GA2D_ERR_NOT_FINITE;
+    if (translation.x == 0 && translation.y == 0) return GA2D_ERR_INVALID_ARGUMENT;
+    return GA2D_OK;
+}
+
+static ga2d_ray_result ga2d__ray_cast_local(const ga2d_geometry *g, ga2d_vec origin, ga2d_vec translation)
+{
+    ga2d_ray_result none;
+    if (ga2d__ray_input(g, origin, translation) != GA2D_OK) {
+        memset(&none, 0, sizeof none);
+        return none;
+    }
+    return ga2d__ray_geometry(g, origin, translation);
+}
+
+GA2D_API ga2d_ray_result ga2d_ray_cast_circle(const ga2d_circle *c, ga2d_vec origin, ga2d_vec translation)
+{
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = c ? GA2D_SHAPE_CIRCLE : GA2D_SHAPE_TYPE_COUNT;
+    if (c) g.as.circle = *c;
+    return ga2d__ray_cast_local(&g, origin, translation);
+}
+
+GA2D_API ga2d_ray_result ga2d_ray_cast_capsule(const ga2d_capsule *c, ga2d_vec origin, ga2d_vec translation)
+{
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = c ? GA2D_SHAPE_CAPSULE : GA2D_SHAPE_TYPE_COUNT;
+    if (c) g.as.capsule = *c;
+    return ga2d__ray_cast_local(&g, origin, translation);
+}
+
+GA2D_API ga2d_ray_result ga2d_ray_cast_polygon(const ga2d_polygon *p, ga2d_vec origin, ga2d_vec translation)
+{
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = p ? GA2D_SHAPE_POLYGON : GA2D_SHAPE_TYPE_COUNT;
+    if (p) g.as.polygon = *p;
+    return ga2d__ray_cast_local(&g, origin, translation);
+}
+
+GA2D_API ga2d_ray_result ga2d_ray_cast_segment(const ga2d_segment *s, ga2d_vec origin, ga2d_vec translation, int one_sided)
+{
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    g.type = !s ? GA2D_SHAPE_TYPE_COUNT : one_sided ? GA2D_SHAPE_CHAIN_SEGMENT : GA2D_SHAPE_SEGMENT;
+    if (s && one_sided) {
+        g.as.chain_segment.segment = *s;
+        g.as.chain_segment.ghost1 = s->point1; /* ghosts play no part in a ray cast */
+        g.as.chain_segment.ghost2 = s->point2;
+    } else if (s) {
+        g.as.segment = *s;
+    }
+    return ga2d__ray_cast_local(&g, origin, translation);
+}
+
+/* The ray taken into g's frame by x^-1 (origin less x.p, then turned
+   back: no large coordinate enters the shape's arithmetic), and its hit
+   brought back by x. */
+static ga2d_ray_result ga2d__ray_placed(const ga2d_geometry *g, ga2d_transform x, ga2d_vec origin, ga2d_vec translation)
+{
+    ga2d_ray_result r = ga2d__ray_geometry(g, ga2d_transform_apply_inv(x, origin), ga2d_rotate_inv(x.q, translation));
+    if (r.hit) {
+        r.point = ga2d_transform_apply(x, r.point);
+        r.normal = ga2d_rotate(x.q, r.normal);
+    }
+    return r;
+}
+
+GA2D_API ga2d_result ga2d_ray_cast_shape(const ga2d_geometry *g, ga2d_transform x, ga2d_vec origin, ga2d_vec translation,
+                                         ga2d_ray_result *out)
+{
+    ga2d_result r = ga2d__ray_input(g, origin, translation);
+    if (r == GA2D_OK && !out) r = GA2D_ERR_INVALID_ARGUMENT;
+    if (r == GA2D_OK && ga2d__collide_input(x, x, 1)) r = (ga2d_result)-ga2d__collide_input(x, x, 1);
+    if (r != GA2D_OK) return r;
+    *out = ga2d__ray_placed(g, x, origin, translation);
+    return GA2D_OK;
+}
+
 /* ======================================================== world and bodies */
 /* A touching manifold as ga2d__collide last made it, in A's frame, for
    ga2d__reuse_manifold: B's placement in that frame then (xa^-1 xb), the
@@ -3829,6 +4224,7 @@ struct ga2d_world {
 #define GA2D__LOCK_DRAW 4   /* inside a debug-draw callback */
 #define GA2D__LOCK_ALLOC 8  /* inside the user's allocator, or a world being loaded */
 #define GA2D__LOCK_DEAD 16  /* being destroyed */
+#define GA2D__LOCK_QUERY 32 /* inside a world query's callback */
 
 /* The world's allocations go through these, so that user code in an
    allocator hook finds the world locked. */
@@ -10719,6 +11115,256 @@ static void ga2d__update_sleep(ga2d__step_context *c)
         if (w->bodies[s].type == GA2D_BODY_DYNAMIC && w->bodies[ga2d__find(w, s)].island_rest >= GA2D__TIME_TO_SLEEP)
             ga2d__put_to_sleep(w, s);
     }
+}
+
+/* ================================================================ queries */
+/* A query locks the world while it runs (its callbacks are user code that
+   must not move the trees under it) and counts what it visits; the world
+   is const to the caller, not in memory, as for ga2d_world_draw. */
+static ga2d_result ga2d__query_begin(const ga2d_world *cw, int has_callback, ga2d_world **out)
+{
+    ga2d_world *w = (ga2d_world *)cw;
+    if (!w || !has_callback) return GA2D_ERR_INVALID_ARGUMENT;
+    if (w->lock) return GA2D_ERR_LOCKED;
+    w->lock = GA2D__LOCK_QUERY;
+    w->counters.query_nodes = 0;
+    w->counters.query_shapes = 0;
+    ga2d__enter(w);
+    *out = w;
+    return GA2D_OK;
+}
+
+static void ga2d__query_end(ga2d_world *w)
+{
+    w->lock = 0;
+    ga2d__leave(w);
+}
+
+/* Whether a query with filter f sees shape k. */
+static int ga2d__query_sees(const ga2d_world *w, int k, ga2d_filter f)
+{
+    const ga2d__shape *s = &w->shapes[k];
+    return !s->is_sensor && ga2d_should_collide(f, s->filter);
+}
+
+static ga2d_transform ga2d__shape_xf(const ga2d_world *w, int k) { return ga2d__body_xf(&w->bodies[w->shapes[k].body]); }
+
+/* ------------------------------------------------------------------ rays */
+typedef struct ga2d__ray_query {
+    ga2d_world *w;
+    ga2d_vec origin, translation;
+    ga2d_filter filter;
+    ga2d_cast_fn *fn;
+    void *context;
+    ga2d_ray_result closest; /* for the closest-hit form (fn NULL) */
+} ga2d__ray_query;
+
+/* One leaf: its shape's exact cast, handed to the callback or kept if
+   closest; the ray is clipped to what the callback says (or to the
+   closest hit so far). */
+static int ga2d__ray_leaf(void *ctx, int k, ga2d_real *tmax)
+{
+    ga2d__ray_query *q = (ga2d__ray_query *)ctx;
+    ga2d_world *w = q->w;
+    ga2d_ray_result r;
+    ga2d_real go_on;
+    if (!ga2d__query_sees(w, k, q->filter)) return 1;
+    ++w->counters.query_shapes;
+    /* the whole ray, so a hit has the bits of ga2d_ray_cast_shape's; the
+       clip only culls */
+    r = ga2d__ray_placed(&w->shapes[k].geom, ga2d__shape_xf(w, k), q->origin, q->translation);
+    if (!r.hit || r.fraction > *tmax) return 1;
+    r.shape = ga2d__shape_id_of(w, k);
+    r.body = ga2d__id_of(w, w->shapes[k].body);
+    if (!q->fn) {
+        q->closest = r;
+        *tmax = r.fraction;
+        return 1;
+    }
+    go_on = q->fn(r.shape, r.point, r.normal, r.fraction, q->context);
+    if (go_on < 0 || !(go_on == go_on)) return 1; /* ignore this shape (NaN too) */
+    if (go_on == 0) return 0;
+    if (go_on < *tmax) *tmax = go_on;
+    return 1;
+}
+
+static ga2d_result ga2d__ray_input_world(ga2d_vec origin, ga2d_vec translation)
+{
+    if (!ga2d__finite_vec(origin) || !ga2d__finite_vec(translation) || !ga2d__finite_vec(ga2d_vec_add(origin, translation)))
+        return GA2D_ERR_NOT_FINITE;
+    return translation.x == 0 && translation.y == 0 ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK;
+}
+
+/* Both trees, the static one first, the ray clipped as it goes. */
+static void ga2d__ray_trees(ga2d__ray_query *q)
+{
+    ga2d_real tmax = 1;
+    int k;
+    for (k = 0; k < 2; ++k)
+        if (!ga2d__tree_ray(&q->w->trees[k], q->origin, q->translation, &tmax, ga2d__ray_leaf, q, &q->w->counters.query_nodes))
+            return;
+}
+
+GA2D_API ga2d_result ga2d_world_cast_ray(const ga2d_world *cw, ga2d_vec origin, ga2d_vec translation, ga2d_filter filter,
+                                         ga2d_cast_fn *fn, void *context)
+{
+    ga2d__ray_query q;
+    ga2d_world *w;
+    ga2d_result r = ga2d__ray_input_world(origin, translation);
+    if (r == GA2D_OK) r = ga2d__query_begin(cw, fn != NULL, &w);
+    if (r != GA2D_OK) return r;
+    memset(&q, 0, sizeof q);
+    q.w = w;
+    q.origin = origin;
+    q.translation = translation;
+    q.filter = filter;
+    q.fn = fn;
+    q.context = context;
+    ga2d__ray_trees(&q);
+    ga2d__query_end(w);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_cast_ray_closest_checked(const ga2d_world *cw, ga2d_vec origin, ga2d_vec translation,
+                                                         ga2d_filter filter, ga2d_ray_result *out)
+{
+    ga2d__ray_query q;
+    ga2d_world *w;
+    ga2d_result r = ga2d__ray_input_world(origin, translation);
+    if (r == GA2D_OK) r = ga2d__query_begin(cw, out != NULL, &w);
+    if (r != GA2D_OK) return r;
+    memset(&q, 0, sizeof q);
+    q.w = w;
+    q.origin = origin;
+    q.translation = translation;
+    q.filter = filter;
+    ga2d__ray_trees(&q);
+    ga2d__query_end(w);
+    *out = q.closest;
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_ray_result ga2d_world_cast_ray_closest(const ga2d_world *w, ga2d_vec origin, ga2d_vec translation,
+                                                     ga2d_filter filter)
+{
+    ga2d_ray_result r;
+    memset(&r, 0, sizeof r);
+    ga2d_world_cast_ray_closest_checked(w, origin, translation, filter, &r);
+    return r;
+}
+
+/* -------------------------------------------------------------- overlaps */
+typedef struct ga2d__overlap_query {
+    ga2d_world *w;
+    ga2d_aabb box;
+    ga2d_vec point;
+    int by_point;
+    ga2d_filter filter;
+    ga2d_overlap_fn *fn;
+    void *context;
+} ga2d__overlap_query;
+
+/* The shape's own box, a chain segment's without the neighbour its
+   broadphase box takes in. */
+static ga2d_aabb ga2d__shape_tight_aabb(const ga2d__shape *s, ga2d_transform x)
+{
+    ga2d__shape seg;
+    if (s->geom.type != GA2D_SHAPE_CHAIN_SEGMENT) return ga2d__shape_aabb(s, x);
+    seg = *s;
+    seg.geom.type = GA2D_SHAPE_SEGMENT;
+    seg.geom.as.segment = s->geom.as.chain_segment.segment;
+    return ga2d__shape_aabb(&seg, x);
+}
+
+/* Whether shape k contains world point c, its boundary included: c's
+   distance from the shape's core (a circle's centre, a capsule's
+   segment, a polygon: negative inside it) within the radius. */
+static int ga2d__shape_contains(const ga2d_world *w, int k, ga2d_vec c)
+{
+    const ga2d_geometry *g = &w->shapes[k].geom;
+    ga2d_vec p = ga2d_transform_apply_inv(ga2d__shape_xf(w, k), c), q, u;
+    ga2d__hull h;
+    int feature;
+    switch (g->type) {
+    case GA2D_SHAPE_CIRCLE:
+        return ga2d_vec_length_sq(ga2d_vec_sub(p, g->as.circle.center)) <= g->as.circle.radius * g->as.circle.radius;
+    case GA2D_SHAPE_CAPSULE:
+        if (!ga2d__segment_hull(g->as.capsule.center1, g->as.capsule.center2, g->as.capsule.radius, &h))
+            return ga2d_vec_length_sq(ga2d_vec_sub(p, g->as.capsule.center1)) <= g->as.capsule.radius * g->as.capsule.radius;
+        return ga2d__hull_nearest(&h, p, &q, &u, &feature) <= h.radius;
+    case GA2D_SHAPE_POLYGON:
+        ga2d__polygon_hull(&g->as.polygon, ga2d_transform_identity(), 1, &h);
+        return ga2d__hull_nearest(&h, p, &q, &u, &feature) <= h.radius;
+    default: return 0; /* segments have no inside */
+    }
+}
+
+static int ga2d__overlap_leaf(void *ctx, int k)
+{
+    ga2d__overlap_query *q = (ga2d__overlap_query *)ctx;
+    ga2d_world *w = q->w;
+    int in;
+    if (!ga2d__query_sees(w, k, q->filter)) return 1;
+    ++w->counters.query_shapes;
+    in = q->by_point ? ga2d__shape_contains(w, k, q->point)
+                     : ga2d_aabb_overlaps(ga2d__shape_tight_aabb(&w->shapes[k], ga2d__shape_xf(w, k)), q->box);
+    return in ? q->fn(ga2d__shape_id_of(w, k), q->context) != 0 : 1;
+}
+
+static ga2d_result ga2d__overlap(const ga2d_world *cw, ga2d__overlap_query *q)
+{
+    ga2d_world *w;
+    ga2d_result r = ga2d__query_begin(cw, q->fn != NULL, &w);
+    int k;
+    if (r != GA2D_OK) return r;
+    q->w = w;
+    for (k = 0; k < 2; ++k)
+        if (!ga2d__tree_overlap(&w->trees[k], q->box, ga2d__overlap_leaf, q, &w->counters.query_nodes)) break;
+    ga2d__query_end(w);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_overlap_aabb(const ga2d_world *w, ga2d_aabb box, ga2d_filter filter, ga2d_overlap_fn *fn,
+                                             void *context)
+{
+    ga2d__overlap_query q;
+    if (!ga2d__finite_vec(box.lower) || !ga2d__finite_vec(box.upper)) return GA2D_ERR_NOT_FINITE;
+    if (!(box.lower.x <= box.upper.x && box.lower.y <= box.upper.y)) return GA2D_ERR_INVALID_ARGUMENT;
+    memset(&q, 0, sizeof q);
+    q.box = box;
+    q.filter = filter;
+    q.fn = fn;
+    q.context = context;
+    return ga2d__overlap(w, &q);
+}
+
+GA2D_API ga2d_result ga2d_world_overlap_point(const ga2d_world *w, ga2d_vec point, ga2d_filter filter,
+                                              ga2d_overlap_fn *fn, void *context)
+{
+    ga2d__overlap_query q;
+    if (!ga2d__finite_vec(point)) return GA2D_ERR_NOT_FINITE;
+    memset(&q, 0, sizeof q);
+    q.box.lower = q.box.upper = q.point = point;
+    q.by_point = 1;
+    q.filter = filter;
+    q.fn = fn;
+    q.context = context;
+    return ga2d__overlap(w, &q);
+}
+
+/* --------------------------------------------------------------- listing */
+GA2D_API int ga2d_world_body_count(const ga2d_world *w) { return w ? w->body_count : 0; }
+
+GA2D_API int ga2d_world_get_bodies(const ga2d_world *w, ga2d_body_id *ids, int capacity)
+{
+    int slot, n = 0;
+    if (!w) return 0;
+    for (slot = 0; slot < w->body_used; ++slot) {
+        if (w->bodies[slot].type < 0) continue; /* a free slot */
+        if (ids && n < capacity) ids[n] = ga2d__id_of(w, slot);
+        ++n;
+    }
+    return n;
 }
 
 /* ============================================================= snapshots */

@@ -69,6 +69,7 @@ void suite_settle(void);
 void suite_accepted(void);
 void suite_joints(void);
 void suite_joints_kinds(void);
+void suite_queries(void);
 
 #ifdef __cplusplus
 }

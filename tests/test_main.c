@@ -96,6 +96,7 @@ int main(int argc, char **argv)
     suite_settle();
     suite_joints();
     suite_joints_kinds();
+    suite_queries();
     suite_accepted();
     suite_determinism();
     suite_snapshot();
