@@ -1525,6 +1525,86 @@ GA2D_API ga2d_ray_result ga2d_ray_cast_segment(const ga2d_segment *s, ga2d_vec o
 GA2D_API ga2d_result ga2d_ray_cast_shape(const ga2d_geometry *g, ga2d_transform x, ga2d_vec origin, ga2d_vec translation,
                                          ga2d_ray_result *out);
 
+/* A convex point cloud grown by a radius, for distance, casts and time of
+   impact: 1 point and a radius is a circle, 2 a capsule (or a segment
+   with radius 0), 3 or more a polygon (its vertices; rounded by the
+   radius).  ga2d_make_proxy copies up to GA2D_MAX_POLYGON_VERTICES
+   points (more are cut off; count < 1 gives count 0, which nothing
+   accepts); ga2d_shape_proxy_of makes the proxy of a shape. */
+typedef struct ga2d_shape_proxy {
+    ga2d_vec points[GA2D_MAX_POLYGON_VERTICES];
+    int count;
+    ga2d_real radius;
+} ga2d_shape_proxy;
+GA2D_API ga2d_shape_proxy ga2d_make_proxy(const ga2d_vec *points, int count, ga2d_real radius);
+GA2D_API ga2d_shape_proxy ga2d_shape_proxy_of(const ga2d_geometry *g);
+
+/* What GJK kept of its last simplex: pass the same cache to the next call
+   for the same pair (zeroed at first) and it starts from there, which
+   takes one or two iterations for bodies that moved a little. */
+typedef struct ga2d_simplex_cache {
+    int count;
+    uint8_t index_a[3], index_b[3];
+} ga2d_simplex_cache;
+
+/* Closest points of two proxies, their radii included: point_a on A's
+   surface, point_b on B's, normal the unit direction from A to B,
+   distance >= 0 (0 when they touch or overlap: then both points are the
+   middle of the closest points of the cores, and normal is 0 when the
+   cores themselves overlap).  iterations: GJK's (at most
+   GA2D_GJK_MAX_ITERATIONS).  Errors: INVALID_ARGUMENT for NULL, a count
+   out of range, a negative radius or a rotor not unit; NOT_FINITE. */
+#define GA2D_GJK_MAX_ITERATIONS 32
+typedef struct ga2d_distance_result {
+    ga2d_vec point_a, point_b, normal;
+    ga2d_real distance;
+    int iterations;
+} ga2d_distance_result;
+GA2D_API ga2d_result ga2d_shape_distance(const ga2d_shape_proxy *a, ga2d_transform xa, const ga2d_shape_proxy *b,
+                                         ga2d_transform xb, ga2d_simplex_cache *cache, ga2d_distance_result *out);
+
+/* B swept along translation (world) without turning, against A: the
+   first fraction in [0, 1] at which they come within GA2D_LINEAR_SLOP of
+   touching (B's surface within one slop of A's), the point on A's surface
+   and A's outward normal there (toward B).  Already that close at 0: a
+   hit at 0 (the normal of the closest points; 0 if the cores overlap).
+   No hit if they never come that close.  Errors as ga2d_shape_distance,
+   plus NOT_FINITE for the translation. */
+GA2D_API ga2d_result ga2d_shape_cast(const ga2d_shape_proxy *a, ga2d_transform xa, const ga2d_shape_proxy *b,
+                                     ga2d_transform xb, ga2d_vec translation, ga2d_ray_result *out);
+
+/* A body's motion over a step, for time of impact: its centre of mass
+   (local_center in its own frame) goes from c1 to c2 and its angle from
+   a1 to a2 (radians), both linearly in t in [0, 1]. */
+typedef struct ga2d_sweep {
+    ga2d_vec local_center;
+    ga2d_vec c1, c2;
+    ga2d_real a1, a2;
+} ga2d_sweep;
+GA2D_API ga2d_transform ga2d_sweep_transform(const ga2d_sweep *s, ga2d_real t);
+
+typedef enum ga2d_toi_state {
+    GA2D_TOI_SEPARATED,  /* never within the target over [0, t_max]: t = t_max */
+    GA2D_TOI_HIT,        /* first within the target at t */
+    GA2D_TOI_OVERLAPPED, /* already within the target at t = 0 */
+    GA2D_TOI_GAVE_UP     /* the iteration cap: t is a time before any impact (safe to move to) */
+} ga2d_toi_state;
+typedef struct ga2d_toi_result { ga2d_toi_state state; ga2d_real t; int iterations; } ga2d_toi_result;
+/* When two proxies, moving by their sweeps, first come within target of
+   each other (their radii included; GA2D_LINEAR_SLOP is what the world
+   uses) over t in [0, t_max]: conservative advancement, each step of t
+   the distance over the fastest any point of A can approach any point of
+   B (the centres' relative speed along the normal plus each |a2 - a1|
+   times its farthest point's reach), so it never steps past an impact.
+   It stops within GA2D_LINEAR_SLOP / 4 of the target, or after
+   GA2D_TOI_MAX_ITERATIONS (GAVE_UP, t safe).  Errors as
+   ga2d_shape_distance, and INVALID_ARGUMENT for a target < 0 or t_max
+   outside (0, 1]. */
+#define GA2D_TOI_MAX_ITERATIONS 64
+GA2D_API ga2d_result ga2d_time_of_impact(const ga2d_shape_proxy *a, const ga2d_sweep *sa, const ga2d_shape_proxy *b,
+                                         const ga2d_sweep *sb, ga2d_real target, ga2d_real t_max, ga2d_toi_result *out);
+
+
 /* World queries visit the broadphase trees, so they touch only the shapes
    whose boxes the query's box meets (counters.query_nodes and
    query_shapes say how many, for the last query), allocate nothing, and
@@ -1561,6 +1641,19 @@ GA2D_API ga2d_result ga2d_world_overlap_aabb(const ga2d_world *w, ga2d_aabb box,
    segments have no inside: never). */
 GA2D_API ga2d_result ga2d_world_overlap_point(const ga2d_world *w, ga2d_vec point, ga2d_filter filter,
                                               ga2d_overlap_fn *fn, void *context);
+/* Shapes that touch or overlap proxy placed by x (its radius included;
+   ga2d_shape_proxy_of makes one of a shape).  Chain segments count as
+   two-sided here. */
+GA2D_API ga2d_result ga2d_world_overlap_shape(const ga2d_world *w, const ga2d_shape_proxy *proxy, ga2d_transform x,
+                                              ga2d_filter filter, ga2d_overlap_fn *fn, void *context);
+/* proxy placed by x swept along translation: each shape it would come
+   within a slop of (ga2d_shape_cast: the point on that shape, its normal
+   toward the proxy, the fraction), with the callback protocol of
+   ga2d_world_cast_ray.  A shape already that close at the start is hit
+   at 0.  The building block of a character controller: move to the
+   closest fraction, then slide along the normal. */
+GA2D_API ga2d_result ga2d_world_cast_shape(const ga2d_world *w, const ga2d_shape_proxy *proxy, ga2d_transform x,
+                                           ga2d_vec translation, ga2d_filter filter, ga2d_cast_fn *fn, void *context);
 
 /* The live bodies, in id index order: up to capacity ids into ids (NULL
    for none); returns how many there are. */
@@ -3900,6 +3993,450 @@ GA2D_API ga2d_result ga2d_ray_cast_shape(const ga2d_geometry *g, ga2d_transform 
     if (r == GA2D_OK && ga2d__collide_input(x, x, 1)) r = (ga2d_result)-ga2d__collide_input(x, x, 1);
     if (r != GA2D_OK) return r;
     *out = ga2d__ray_placed(g, x, origin, translation);
+    return GA2D_OK;
+}
+
+/* ------------------------------------------------------------------- GJK */
+/* Closest points of two convex proxies by GJK (Gilbert, Johnson and
+   Keerthi): the simplex of B - A's support points that is nearest the
+   origin, grown toward it one support point at a time.  Worked in A's
+   frame, so B's placement relative to A is all that is rounded. */
+typedef struct ga2d__sv {
+    ga2d_vec wa, wb, w; /* A's support point, B's, and w = wb - wa, a point of B - A */
+    ga2d_real a;        /* its weight in the closest point */
+    int ia, ib;
+} ga2d__sv;
+typedef struct ga2d__simplex { ga2d__sv v[3]; int count; } ga2d__simplex;
+
+/* The index of the point of p[0..n-1] farthest along d (the first of equals). */
+static int ga2d__support(const ga2d_vec *p, int n, ga2d_vec d)
+{
+    int best = 0, i;
+    ga2d_real m = ga2d_dot(p[0], d);
+    for (i = 1; i < n; ++i) {
+        ga2d_real s = ga2d_dot(p[i], d);
+        if (s > m) {
+            m = s;
+            best = i;
+        }
+    }
+    return best;
+}
+
+static ga2d__sv ga2d__sv_make(const ga2d_vec *pa, int ia, const ga2d_vec *pb, int ib, ga2d_vec shift_b)
+{
+    ga2d__sv s;
+    s.ia = ia;
+    s.ib = ib;
+    s.wa = pa[ia];
+    s.wb = ga2d_vec_add(pb[ib], shift_b);
+    s.w = ga2d_vec_sub(s.wb, s.wa);
+    s.a = 1;
+    return s;
+}
+
+/* The closest point of a segment w1 w2 to the origin by its Voronoi
+   regions: past w1 (d2 <= 0), past w2 (d1 <= 0), or between, weighted by
+   the distances from the origin's foot to the far end. */
+static void ga2d__solve2(ga2d__simplex *s)
+{
+    ga2d_vec w1 = s->v[0].w, w2 = s->v[1].w, e = ga2d_vec_sub(w2, w1);
+    ga2d_real d1 = ga2d_dot(w2, e), d2 = -ga2d_dot(w1, e);
+    if (d2 <= 0) {
+        s->v[0].a = 1;
+        s->count = 1;
+    } else if (d1 <= 0) {
+        s->v[0] = s->v[1];
+        s->v[0].a = 1;
+        s->count = 1;
+    } else {
+        s->v[0].a = d1 / (d1 + d2);
+        s->v[1].a = d2 / (d1 + d2);
+    }
+}
+
+/* The same for a triangle: its vertices' and edges' regions, by the dot
+   products above and the signed areas (wedges) of the origin with each
+   edge against the triangle's own; inside all three edges the origin is
+   in the triangle (count stays 3: the cores overlap). */
+static void ga2d__solve3(ga2d__simplex *s)
+{
+    ga2d_vec w1 = s->v[0].w, w2 = s->v[1].w, w3 = s->v[2].w;
+    ga2d_vec e12 = ga2d_vec_sub(w2, w1), e13 = ga2d_vec_sub(w3, w1), e23 = ga2d_vec_sub(w3, w2);
+    ga2d_real d12_1 = ga2d_dot(w2, e12), d12_2 = -ga2d_dot(w1, e12);
+    ga2d_real d13_1 = ga2d_dot(w3, e13), d13_2 = -ga2d_dot(w1, e13);
+    ga2d_real d23_1 = ga2d_dot(w3, e23), d23_2 = -ga2d_dot(w2, e23);
+    ga2d_real n = ga2d_wedge(e12, e13);
+    ga2d_real d123_1 = n * ga2d_wedge(w2, w3), d123_2 = n * ga2d_wedge(w3, w1), d123_3 = n * ga2d_wedge(w1, w2);
+    if (d12_2 <= 0 && d13_2 <= 0) { /* w1 */
+        s->v[0].a = 1;
+        s->count = 1;
+    } else if (d12_1 > 0 && d12_2 > 0 && d123_3 <= 0) { /* edge 12 */
+        s->v[0].a = d12_1 / (d12_1 + d12_2);
+        s->v[1].a = d12_2 / (d12_1 + d12_2);
+        s->count = 2;
+    } else if (d13_1 > 0 && d13_2 > 0 && d123_2 <= 0) { /* edge 13 */
+        s->v[0].a = d13_1 / (d13_1 + d13_2);
+        s->v[2].a = d13_2 / (d13_1 + d13_2);
+        s->v[1] = s->v[2];
+        s->count = 2;
+    } else if (d12_1 <= 0 && d23_2 <= 0) { /* w2 */
+        s->v[0] = s->v[1];
+        s->v[0].a = 1;
+        s->count = 1;
+    } else if (d13_1 <= 0 && d23_1 <= 0) { /* w3 */
+        s->v[0] = s->v[2];
+        s->v[0].a = 1;
+        s->count = 1;
+    } else if (d23_1 > 0 && d23_2 > 0 && d123_1 <= 0) { /* edge 23 */
+        s->v[0] = s->v[2];
+        s->v[0].a = d23_2 / (d23_1 + d23_2);
+        s->v[1].a = d23_1 / (d23_1 + d23_2);
+        s->count = 2;
+    } else { /* inside */
+        ga2d_real inv = 1 / (d123_1 + d123_2 + d123_3);
+        s->v[0].a = d123_1 * inv;
+        s->v[1].a = d123_2 * inv;
+        s->v[2].a = d123_3 * inv;
+    }
+}
+
+static ga2d_vec ga2d__simplex_point(const ga2d__simplex *s, int which) /* 0: w, 1: wa, 2: wb */
+{
+    ga2d_vec p = ga2d_vec_make(0, 0);
+    int i;
+    for (i = 0; i < s->count; ++i) {
+        ga2d_vec v = which == 0 ? s->v[i].w : which == 1 ? s->v[i].wa : s->v[i].wb;
+        p = ga2d_vec_add(p, ga2d_vec_scale(v, s->v[i].a));
+    }
+    return p;
+}
+
+/* Toward the origin from the simplex: from a point, back at it; from a
+   segment, square off it on the origin's side (exact even when the
+   origin's foot is rounded off the segment). */
+static ga2d_vec ga2d__search_direction(const ga2d__simplex *s)
+{
+    if (s->count == 1) return ga2d_vec_neg(s->v[0].w);
+    {
+        ga2d_vec e = ga2d_vec_sub(s->v[1].w, s->v[0].w);
+        return ga2d_wedge(e, ga2d_vec_neg(s->v[0].w)) > 0 ? ga2d_vec_perp(e) : ga2d_vec_neg(ga2d_vec_perp(e));
+    }
+}
+
+/* GJK on point sets pa (count na) and pb (count nb, shifted by shift_b),
+   one frame, from the cached simplex or from the first points.  Returns
+   the final simplex (count 3: the cores overlap) and its iterations. */
+static int ga2d__gjk(const ga2d_vec *pa, int na, const ga2d_vec *pb, int nb, ga2d_vec shift_b, ga2d_simplex_cache *cache,
+                     ga2d__simplex *s)
+{
+    int iter = 0, i;
+    s->count = 0;
+    if (cache && cache->count >= 1 && cache->count <= 3) {
+        for (i = 0; i < cache->count; ++i) {
+            if (cache->index_a[i] >= na || cache->index_b[i] >= nb) break;
+            s->v[i] = ga2d__sv_make(pa, cache->index_a[i], pb, cache->index_b[i], shift_b);
+        }
+        s->count = i == cache->count ? i : 0;
+    }
+    if (s->count == 0) {
+        s->v[0] = ga2d__sv_make(pa, 0, pb, 0, shift_b);
+        s->count = 1;
+    }
+    while (iter < GA2D_GJK_MAX_ITERATIONS) {
+        int old_a[3], old_b[3], old = s->count, dup = 0;
+        ga2d_vec d;
+        ga2d__sv nv;
+        for (i = 0; i < old; ++i) {
+            old_a[i] = s->v[i].ia;
+            old_b[i] = s->v[i].ib;
+        }
+        if (s->count == 2) ga2d__solve2(s);
+        if (s->count == 3) ga2d__solve3(s);
+        if (s->count == 3) break; /* the origin is inside */
+        d = ga2d__search_direction(s);
+        if (ga2d_dot(d, d) < GA2D__MIN_NORMAL) break; /* the origin is on the simplex */
+        nv = ga2d__sv_make(pa, ga2d__support(pa, na, ga2d_vec_neg(d)), pb, ga2d__support(pb, nb, d), shift_b);
+        ++iter;
+        for (i = 0; i < old; ++i) dup |= nv.ia == old_a[i] && nv.ib == old_b[i];
+        if (dup) break; /* no new support point: the simplex is nearest */
+        /* no progress toward the origin along d: nearest within rounding */
+        if (ga2d_dot(nv.w, d) <= ga2d_dot(ga2d__simplex_point(s, 0), d)) break;
+        s->v[s->count++] = nv;
+    }
+    if (s->count == 1) s->v[0].a = 1;
+    if (cache) {
+        cache->count = s->count;
+        for (i = 0; i < s->count; ++i) {
+            cache->index_a[i] = (uint8_t)s->v[i].ia;
+            cache->index_b[i] = (uint8_t)s->v[i].ib;
+        }
+    }
+    return iter;
+}
+
+GA2D_API ga2d_shape_proxy ga2d_make_proxy(const ga2d_vec *points, int count, ga2d_real radius)
+{
+    ga2d_shape_proxy p;
+    int i;
+    memset(&p, 0, sizeof p);
+    if (!points || count < 1) return p;
+    if (count > GA2D_MAX_POLYGON_VERTICES) count = GA2D_MAX_POLYGON_VERTICES;
+    for (i = 0; i < count; ++i) p.points[i] = points[i];
+    p.count = count;
+    p.radius = radius;
+    return p;
+}
+
+GA2D_API ga2d_shape_proxy ga2d_shape_proxy_of(const ga2d_geometry *g)
+{
+    ga2d_vec pts[2];
+    ga2d_shape_proxy none;
+    memset(&none, 0, sizeof none);
+    if (!g) return none;
+    switch (g->type) {
+    case GA2D_SHAPE_CIRCLE: return ga2d_make_proxy(&g->as.circle.center, 1, g->as.circle.radius);
+    case GA2D_SHAPE_CAPSULE:
+        pts[0] = g->as.capsule.center1;
+        pts[1] = g->as.capsule.center2;
+        return ga2d_make_proxy(pts, 2, g->as.capsule.radius);
+    case GA2D_SHAPE_POLYGON: return ga2d_make_proxy(g->as.polygon.vertices, g->as.polygon.count, g->as.polygon.radius);
+    case GA2D_SHAPE_SEGMENT:
+    case GA2D_SHAPE_CHAIN_SEGMENT: {
+        const ga2d_segment *s = ga2d__segment_of(g);
+        pts[0] = s->point1;
+        pts[1] = s->point2;
+        return ga2d_make_proxy(pts, 2, 0);
+    }
+    default: return none;
+    }
+}
+
+static ga2d_result ga2d__proxy_input(const ga2d_shape_proxy *p)
+{
+    int i;
+    if (!p || p->count < 1 || p->count > GA2D_MAX_POLYGON_VERTICES) return GA2D_ERR_INVALID_ARGUMENT;
+    for (i = 0; i < p->count; ++i)
+        if (!ga2d__finite_vec(p->points[i])) return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__finite(p->radius)) return GA2D_ERR_NOT_FINITE;
+    return p->radius < 0 ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK;
+}
+
+static ga2d_result ga2d__pair_input(const ga2d_shape_proxy *a, ga2d_transform xa, const ga2d_shape_proxy *b, ga2d_transform xb)
+{
+    ga2d_result r = ga2d__proxy_input(a);
+    int bad;
+    if (r == GA2D_OK) r = ga2d__proxy_input(b);
+    if (r != GA2D_OK) return r;
+    bad = ga2d__collide_input(xa, xb, 1);
+    return bad ? (ga2d_result)-bad : GA2D_OK;
+}
+
+/* B's points in A's frame. */
+static void ga2d__proxy_in(const ga2d_shape_proxy *b, ga2d_transform rel, ga2d_vec *out)
+{
+    int i;
+    for (i = 0; i < b->count; ++i) out[i] = ga2d_transform_apply(rel, b->points[i]);
+}
+
+/* Closest points in A's frame (see ga2d_shape_distance). */
+static ga2d_distance_result ga2d__distance(const ga2d_shape_proxy *a, const ga2d_shape_proxy *b, ga2d_transform rel,
+                                           ga2d_simplex_cache *cache)
+{
+    ga2d_distance_result out;
+    ga2d_vec pb[GA2D_MAX_POLYGON_VERTICES], pa, qb, n;
+    ga2d__simplex s;
+    ga2d_real d, radii = a->radius + b->radius;
+    ga2d__proxy_in(b, rel, pb);
+    out.iterations = ga2d__gjk(a->points, a->count, pb, b->count, ga2d_vec_make(0, 0), cache, &s);
+    pa = ga2d__simplex_point(&s, 1);
+    qb = ga2d__simplex_point(&s, 2);
+    d = s.count == 3 ? 0 : ga2d_vec_normalize(ga2d_vec_sub(qb, pa), &n);
+    if (d == 0) n = ga2d_vec_make(0, 0);
+    if (d > radii) {
+        out.point_a = ga2d_vec_add(pa, ga2d_vec_scale(n, a->radius));
+        out.point_b = ga2d_vec_sub(qb, ga2d_vec_scale(n, b->radius));
+        out.distance = d - radii;
+    } else { /* touching or overlapping: the middle of the cores' closest points */
+        out.point_a = out.point_b = ga2d_vec_scale(ga2d_vec_add(pa, qb), GA2D__R(0.5));
+        out.distance = 0;
+    }
+    out.normal = n;
+    return out;
+}
+
+GA2D_API ga2d_result ga2d_shape_distance(const ga2d_shape_proxy *a, ga2d_transform xa, const ga2d_shape_proxy *b,
+                                         ga2d_transform xb, ga2d_simplex_cache *cache, ga2d_distance_result *out)
+{
+    ga2d_result r = ga2d__pair_input(a, xa, b, xb);
+    ga2d_distance_result d;
+    if (r == GA2D_OK && !out) r = GA2D_ERR_INVALID_ARGUMENT;
+    if (r != GA2D_OK) return r;
+    d = ga2d__distance(a, b, ga2d_transform_inv_mul(xa, xb), cache);
+    out->point_a = ga2d_transform_apply(xa, d.point_a);
+    out->point_b = ga2d_transform_apply(xa, d.point_b);
+    out->normal = ga2d_rotate(xa.q, d.normal);
+    out->distance = d.distance;
+    out->iterations = d.iterations;
+    return GA2D_OK;
+}
+
+/* ------------------------------------------------------------ shape cast */
+/* B moved by lambda r, in A's frame: conservative advancement along r
+   (van den Bergen's GJK ray cast).  The support points of A toward B and
+   of B toward A along the current direction u bound the gap along u;
+   lambda moves to where that gap, closing at -u.r per unit of lambda,
+   would reach 0, and the simplex restarts there.  The gap never closes
+   before that, so lambda never passes the touching one. */
+static ga2d_ray_result ga2d__shape_cast(const ga2d_shape_proxy *a, const ga2d_shape_proxy *b, ga2d_transform rel, ga2d_vec r,
+                                        ga2d_real tol)
+{
+    ga2d_ray_result out;
+    ga2d_vec pb[GA2D_MAX_POLYGON_VERTICES], v, n = ga2d_vec_make(0, 0), shift = ga2d_vec_make(0, 0);
+    ga2d__simplex s;
+    ga2d_real lambda = 0, radii = a->radius + b->radius;
+    int iter, i;
+    memset(&out, 0, sizeof out);
+    ga2d__proxy_in(b, rel, pb);
+    s.v[0] = ga2d__sv_make(a->points, ga2d__support(a->points, a->count, r), pb, ga2d__support(pb, b->count, ga2d_vec_neg(r)),
+                           shift);
+    s.count = 1;
+    v = s.v[0].w;
+    for (iter = 0; iter < GA2D_GJK_MAX_ITERATIONS; ++iter) {
+        ga2d_vec u;
+        ga2d__sv nv;
+        ga2d_real len = ga2d_vec_normalize(v, &u), gap, closing;
+        int dup = 0;
+        if (len - radii <= tol) break; /* within the tolerance of touching */
+        nv = ga2d__sv_make(a->points, ga2d__support(a->points, a->count, u), pb, ga2d__support(pb, b->count, ga2d_vec_neg(u)),
+                           shift);
+        gap = ga2d_dot(u, nv.w) - radii;
+        if (gap > 0) {
+            closing = -ga2d_dot(u, r);
+            if (!(closing > 0)) return out; /* apart along u, and not closing: never touch */
+            lambda += gap / closing;
+            if (lambda > 1) return out;
+            shift = ga2d_vec_scale(r, lambda);
+            nv = ga2d__sv_make(a->points, nv.ia, pb, nv.ib, shift);
+            n = u;
+            s.count = 0;
+        }
+        for (i = 0; i < s.count; ++i) dup |= nv.ia == s.v[i].ia && nv.ib == s.v[i].ib;
+        if (dup) break; /* nothing nearer: the gap is as small as it gets here */
+        s.v[s.count++] = nv;
+        if (s.count == 2) ga2d__solve2(&s);
+        if (s.count == 3) ga2d__solve3(&s);
+        if (s.count == 3) break; /* the cores meet (radii 0, or touching at the start) */
+        if (s.count == 1) s.v[0].a = 1;
+        v = ga2d__simplex_point(&s, 0);
+    }
+    /* where they are: the closest points of the simplex, A's surface */
+    {
+        ga2d_vec pa = ga2d__simplex_point(&s, 1), qb = ga2d__simplex_point(&s, 2), m;
+        if (s.count < 3 && ga2d_vec_normalize(ga2d_vec_sub(qb, pa), &m) > 0) n = m;
+        else if (lambda == 0) n = ga2d_vec_make(0, 0); /* the cores overlap at the start */
+        out.point = ga2d_vec_add(pa, ga2d_vec_scale(n, a->radius));
+    }
+    out.normal = n;
+    out.fraction = lambda;
+    out.hit = 1;
+    return out;
+}
+
+GA2D_API ga2d_result ga2d_shape_cast(const ga2d_shape_proxy *a, ga2d_transform xa, const ga2d_shape_proxy *b,
+                                     ga2d_transform xb, ga2d_vec translation, ga2d_ray_result *out)
+{
+    ga2d_result r = ga2d__pair_input(a, xa, b, xb);
+    ga2d_ray_result c;
+    if (r == GA2D_OK && !out) r = GA2D_ERR_INVALID_ARGUMENT;
+    if (r == GA2D_OK && !ga2d__finite_vec(translation)) r = GA2D_ERR_NOT_FINITE;
+    if (r != GA2D_OK) return r;
+    c = ga2d__shape_cast(a, b, ga2d_transform_inv_mul(xa, xb), ga2d_rotate_inv(xa.q, translation),
+                         GA2D__R(GA2D_LINEAR_SLOP) / 4);
+    if (c.hit) {
+        c.point = ga2d_transform_apply(xa, c.point);
+        c.normal = ga2d_rotate(xa.q, c.normal);
+    }
+    *out = c;
+    return GA2D_OK;
+}
+
+/* -------------------------------------------------------- time of impact */
+GA2D_API ga2d_transform ga2d_sweep_transform(const ga2d_sweep *s, ga2d_real t)
+{
+    ga2d_transform x;
+    ga2d_vec c;
+    if (!s) return ga2d_transform_identity();
+    c = ga2d_vec_add(s->c1, ga2d_vec_scale(ga2d_vec_sub(s->c2, s->c1), t));
+    x.q = ga2d_rotor_from_angle(s->a1 + t * (s->a2 - s->a1));
+    x.p = ga2d_vec_sub(c, ga2d_rotate(x.q, s->local_center));
+    return x;
+}
+
+/* The farthest any point of p's core lies from the centre c (its frame). */
+static ga2d_real ga2d__reach(const ga2d_shape_proxy *p, ga2d_vec c)
+{
+    ga2d_real m = 0;
+    int i;
+    for (i = 0; i < p->count; ++i) {
+        ga2d_real d = ga2d_vec_length(ga2d_vec_sub(p->points[i], c));
+        if (d > m) m = d;
+    }
+    return m;
+}
+
+static int ga2d__sweep_ok(const ga2d_sweep *s)
+{
+    return s && ga2d__finite_vec(s->local_center) && ga2d__finite_vec(s->c1) && ga2d__finite_vec(s->c2) && ga2d__finite(s->a1) &&
+           ga2d__finite(s->a2);
+}
+
+GA2D_API ga2d_result ga2d_time_of_impact(const ga2d_shape_proxy *a, const ga2d_sweep *sa, const ga2d_shape_proxy *b,
+                                         const ga2d_sweep *sb, ga2d_real target, ga2d_real t_max, ga2d_toi_result *out)
+{
+    ga2d_result r = ga2d__proxy_input(a);
+    ga2d_simplex_cache cache;
+    ga2d_real t = 0, tol = GA2D__R(GA2D_LINEAR_SLOP) / 4, reach_a, reach_b, turn_a, turn_b;
+    ga2d_vec dca, dcb;
+    int iter;
+    if (r == GA2D_OK) r = ga2d__proxy_input(b);
+    if (r == GA2D_OK && (!sa || !sb || !out)) r = GA2D_ERR_INVALID_ARGUMENT;
+    if (r == GA2D_OK && (!ga2d__sweep_ok(sa) || !ga2d__sweep_ok(sb) || !ga2d__finite(target) || !ga2d__finite(t_max)))
+        r = GA2D_ERR_NOT_FINITE;
+    if (r == GA2D_OK && (target < 0 || !(t_max > 0) || t_max > 1)) r = GA2D_ERR_INVALID_ARGUMENT;
+    if (r != GA2D_OK) return r;
+    memset(&cache, 0, sizeof cache);
+    reach_a = ga2d__reach(a, sa->local_center);
+    reach_b = ga2d__reach(b, sb->local_center);
+    turn_a = GA2D__FABS(sa->a2 - sa->a1);
+    turn_b = GA2D__FABS(sb->a2 - sb->a1);
+    dca = ga2d_vec_sub(sa->c2, sa->c1);
+    dcb = ga2d_vec_sub(sb->c2, sb->c1);
+    for (iter = 0; iter < GA2D_TOI_MAX_ITERATIONS; ++iter) {
+        ga2d_transform xa = ga2d_sweep_transform(sa, t), xb = ga2d_sweep_transform(sb, t);
+        ga2d_distance_result d = ga2d__distance(a, b, ga2d_transform_inv_mul(xa, xb), &cache);
+        ga2d_vec n = ga2d_rotate(xa.q, d.normal);
+        /* the fastest the gap can close per unit t: the centres' approach
+           along n, and any point's turn about its centre at most its
+           reach times the turn (an arc is no longer than that) */
+        ga2d_real closing = -ga2d_dot(n, ga2d_vec_sub(dcb, dca)) + reach_a * turn_a + reach_b * turn_b;
+        out->iterations = iter + 1;
+        if (d.distance <= target + tol) {
+            out->state = t == 0 ? GA2D_TOI_OVERLAPPED : GA2D_TOI_HIT;
+            out->t = t;
+            return GA2D_OK;
+        }
+        if (!(closing > 0)) break; /* it cannot close: apart for good */
+        t += (d.distance - target) / closing;
+        if (t >= t_max) break;
+    }
+    if (iter == GA2D_TOI_MAX_ITERATIONS) {
+        out->state = GA2D_TOI_GAVE_UP;
+        out->t = t;
+        return GA2D_OK;
+    }
+    out->state = GA2D_TOI_SEPARATED;
+    out->t = t_max;
     return GA2D_OK;
 }
 
@@ -11350,6 +11887,133 @@ GA2D_API ga2d_result ga2d_world_overlap_point(const ga2d_world *w, ga2d_vec poin
     q.fn = fn;
     q.context = context;
     return ga2d__overlap(w, &q);
+}
+
+/* ---------------------------------------------------------------- shapes */
+typedef struct ga2d__shape_query {
+    ga2d_world *w;
+    const ga2d_shape_proxy *proxy;
+    ga2d_transform x;
+    ga2d_vec translation;
+    ga2d_filter filter;
+    ga2d_overlap_fn *overlap;
+    ga2d_cast_fn *cast;
+    void *context;
+    ga2d_real tmax;
+} ga2d__shape_query;
+
+/* The box of a proxy placed by x, grown by its radius. */
+static ga2d_aabb ga2d__proxy_box(const ga2d_shape_proxy *p, ga2d_transform x)
+{
+    ga2d_aabb b;
+    int i;
+    b.lower = b.upper = ga2d_transform_apply(x, p->points[0]);
+    for (i = 1; i < p->count; ++i) {
+        ga2d_aabb one;
+        one.lower = one.upper = ga2d_transform_apply(x, p->points[i]);
+        b = ga2d_aabb_union(b, one);
+    }
+    return ga2d__fatten(b, p->radius);
+}
+
+static int ga2d__overlap_shape_leaf(void *ctx, int k)
+{
+    ga2d__shape_query *q = (ga2d__shape_query *)ctx;
+    ga2d_world *w = q->w;
+    ga2d_shape_proxy sp;
+    ga2d_distance_result d;
+    if (!ga2d__query_sees(w, k, q->filter)) return 1;
+    ++w->counters.query_shapes;
+    sp = ga2d_shape_proxy_of(&w->shapes[k].geom);
+    d = ga2d__distance(&sp, q->proxy, ga2d_transform_inv_mul(ga2d__shape_xf(w, k), q->x), NULL);
+    return d.distance > 0 ? 1 : q->overlap(ga2d__shape_id_of(w, k), q->context) != 0;
+}
+
+static int ga2d__cast_shape_leaf(void *ctx, int k)
+{
+    ga2d__shape_query *q = (ga2d__shape_query *)ctx;
+    ga2d_world *w = q->w;
+    ga2d_shape_proxy sp;
+    ga2d_transform xs;
+    ga2d_ray_result c;
+    ga2d_real go_on;
+    if (!ga2d__query_sees(w, k, q->filter)) return 1;
+    ++w->counters.query_shapes;
+    sp = ga2d_shape_proxy_of(&w->shapes[k].geom);
+    xs = ga2d__shape_xf(w, k);
+    c = ga2d__shape_cast(&sp, q->proxy, ga2d_transform_inv_mul(xs, q->x), ga2d_rotate_inv(xs.q, q->translation),
+                         w->slop / 4);
+    if (!c.hit || c.fraction > q->tmax) return 1;
+    c.point = ga2d_transform_apply(xs, c.point);
+    c.normal = ga2d_rotate(xs.q, c.normal);
+    go_on = q->cast(ga2d__shape_id_of(w, k), c.point, c.normal, c.fraction, q->context);
+    if (go_on < 0 || !(go_on == go_on)) return 1;
+    if (go_on == 0) return 0;
+    if (go_on < q->tmax) q->tmax = go_on;
+    return 1;
+}
+
+static ga2d_result ga2d__shape_query_input(const ga2d_shape_proxy *p, ga2d_transform x)
+{
+    ga2d_result r = ga2d__proxy_input(p);
+    int bad = ga2d__collide_input(x, x, 1);
+    return r != GA2D_OK ? r : bad ? (ga2d_result)-bad : GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_overlap_shape(const ga2d_world *cw, const ga2d_shape_proxy *proxy, ga2d_transform x,
+                                              ga2d_filter filter, ga2d_overlap_fn *fn, void *context)
+{
+    ga2d__shape_query q;
+    ga2d_world *w;
+    ga2d_result r = ga2d__shape_query_input(proxy, x);
+    int k;
+    if (r == GA2D_OK) r = ga2d__query_begin(cw, fn != NULL, &w);
+    if (r != GA2D_OK) return r;
+    memset(&q, 0, sizeof q);
+    q.w = w;
+    q.proxy = proxy;
+    q.x = x;
+    q.filter = filter;
+    q.overlap = fn;
+    q.context = context;
+    for (k = 0; k < 2; ++k)
+        if (!ga2d__tree_overlap(&w->trees[k], ga2d__proxy_box(proxy, x), ga2d__overlap_shape_leaf, &q, &w->counters.query_nodes))
+            break;
+    ga2d__query_end(w);
+    return GA2D_OK;
+}
+
+GA2D_API ga2d_result ga2d_world_cast_shape(const ga2d_world *cw, const ga2d_shape_proxy *proxy, ga2d_transform x,
+                                           ga2d_vec translation, ga2d_filter filter, ga2d_cast_fn *fn, void *context)
+{
+    ga2d__shape_query q;
+    ga2d_world *w;
+    ga2d_aabb from, to;
+    ga2d_result r = ga2d__shape_query_input(proxy, x);
+    int k;
+    if (r == GA2D_OK && (!ga2d__finite_vec(translation) || !ga2d__finite_vec(ga2d_vec_add(x.p, translation))))
+        r = GA2D_ERR_NOT_FINITE;
+    if (r == GA2D_OK) r = ga2d__query_begin(cw, fn != NULL, &w);
+    if (r != GA2D_OK) return r;
+    memset(&q, 0, sizeof q);
+    q.w = w;
+    q.proxy = proxy;
+    q.x = x;
+    q.translation = translation;
+    q.filter = filter;
+    q.cast = fn;
+    q.context = context;
+    q.tmax = 1;
+    /* the swept box: where it starts and where it ends, and a slop more */
+    from = ga2d__proxy_box(proxy, x);
+    to = from;
+    to.lower = ga2d_vec_add(to.lower, translation);
+    to.upper = ga2d_vec_add(to.upper, translation);
+    from = ga2d__fatten(ga2d_aabb_union(from, to), w->slop);
+    for (k = 0; k < 2; ++k)
+        if (!ga2d__tree_overlap(&w->trees[k], from, ga2d__cast_shape_leaf, &q, &w->counters.query_nodes)) break;
+    ga2d__query_end(w);
+    return GA2D_OK;
 }
 
 /* --------------------------------------------------------------- listing */

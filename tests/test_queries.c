@@ -473,6 +473,317 @@ static void ray_cast_shape_placed(void)
     if (verbose()) printf("queries: placed casts: worst point difference %.3g of the bound, %d of 400 flipped\n", worst, flipped);
 }
 
+/* ------------------------------------------------- distance, casts, TOI */
+/* A random proxy: a hull of 3 to 8 points, a capsule's two, a circle's
+   one (a radius 0 to 0.5; a point cloud of 2 with radius 0 is a segment). */
+static ga2d_shape_proxy random_proxy(test_rng *r)
+{
+    ga2d_vec pts[GA2D_MAX_POLYGON_VERTICES];
+    ga2d_polygon p;
+    int kind = rng_int(r, 0, 3), n, i;
+    ga2d_real radius = rng_int(r, 0, 2) ? (ga2d_real)rng_uniform(r, 0, 0.5) : 0;
+    if (kind == 0) {
+        pts[0] = ga2d_vec_make((ga2d_real)rng_uniform(r, -0.5, 0.5), (ga2d_real)rng_uniform(r, -0.5, 0.5));
+        return ga2d_make_proxy(pts, 1, (ga2d_real)rng_uniform(r, 0.05, 1));
+    }
+    if (kind == 1) {
+        for (i = 0; i < 2; ++i) pts[i] = ga2d_vec_make((ga2d_real)rng_uniform(r, -1, 1), (ga2d_real)rng_uniform(r, -1, 1));
+        return ga2d_make_proxy(pts, 2, radius);
+    }
+    do {
+        n = rng_int(r, 3, GA2D_MAX_POLYGON_VERTICES);
+        for (i = 0; i < n; ++i) pts[i] = ga2d_vec_make((ga2d_real)rng_uniform(r, -1, 1), (ga2d_real)rng_uniform(r, -1, 1));
+    } while (ga2d_polygon_hull(pts, n, &p) != GA2D_OK);
+    return ga2d_make_proxy(p.vertices, p.count, radius);
+}
+
+/* A proxy's core points placed by x, in double. */
+static int placed_points(const ga2d_shape_proxy *p, ga2d_transform x, dvec *out)
+{
+    int i;
+    for (i = 0; i < p->count; ++i) {
+        /* the transform in double: rounding it in ga2d_real would be the library's error, not the truth's */
+        double c = (double)x.q.c, s = (double)x.q.s, px = (double)p->points[i].x, py = (double)p->points[i].y;
+        out[i] = dv((double)x.p.x + c * px - s * py, (double)x.p.y + s * px + c * py);
+    }
+    return p->count;
+}
+
+/* Whether point q lies in the convex hull of pts (CCW; a point or a
+   segment has no inside). */
+static int inside_hull(const dvec *pts, int n, dvec q)
+{
+    int i;
+    if (n < 3) return 0;
+    for (i = 0; i < n; ++i)
+        if (dcross(dsub(pts[(i + 1) % n], pts[i]), dsub(q, pts[i])) < 0) return 0;
+    return 1;
+}
+
+/* Whether segments ab and cd cross (strictly). */
+static int segments_cross(dvec a, dvec b, dvec c, dvec d)
+{
+    double o1 = dcross(dsub(b, a), dsub(c, a)), o2 = dcross(dsub(b, a), dsub(d, a));
+    double o3 = dcross(dsub(d, c), dsub(a, c)), o4 = dcross(dsub(d, c), dsub(b, c));
+    return ((o1 > 0) != (o2 > 0)) && ((o3 > 0) != (o4 > 0));
+}
+
+/* The distance between two cores (point, segment or convex polygon): 0
+   when they overlap, else the least point-to-edge distance either way. */
+static double core_distance(const dvec *a, int na, const dvec *b, int nb)
+{
+    double best = 1e300;
+    int i, j;
+    if (inside_hull(a, na, b[0]) || inside_hull(b, nb, a[0])) return 0;
+    for (i = 0; i < na; ++i)
+        for (j = 0; j < nb; ++j) {
+            dvec a1 = a[i], a2 = a[(i + 1) % na], b1 = b[j], b2 = b[(j + 1) % nb];
+            double d;
+            if (na > 1 && nb > 1 && segments_cross(a1, a2, b1, b2)) return 0;
+            d = dlen(dsub(b1, closest_on_segment(a1, a2, b1)));
+            if (d < best) best = d;
+            d = dlen(dsub(a1, closest_on_segment(b1, b2, a1)));
+            if (d < best) best = d;
+        }
+    return best;
+}
+
+static double brute_gap(const ga2d_shape_proxy *a, ga2d_transform xa, const ga2d_shape_proxy *b, ga2d_transform xb, dvec shift)
+{
+    dvec pa[GA2D_MAX_POLYGON_VERTICES], pb[GA2D_MAX_POLYGON_VERTICES];
+    int na = placed_points(a, xa, pa), nb = placed_points(b, xb, pb), i;
+    for (i = 0; i < nb; ++i) pb[i] = dadd(pb[i], shift);
+    return core_distance(pa, na, pb, nb) - (double)a->radius - (double)b->radius;
+}
+
+static double proxy_size(const ga2d_shape_proxy *p, ga2d_transform x)
+{
+    double s = 0;
+    int i;
+    for (i = 0; i < p->count; ++i) {
+        double d = dlen(dvg(ga2d_transform_apply(x, p->points[i])));
+        if (d > s) s = d;
+    }
+    return s + (double)p->radius;
+}
+
+/* GJK against brute force on random pairs at random placements: the
+   distance within rounding of the truth (the closest points are a few
+   operations on coordinates of size S: TOL_K eps S), the witness points
+   that far apart and on their surfaces' side, and a warm-started second
+   call after a small move as exact, in fewer iterations. */
+static void distance_against_brute_force(void)
+{
+    test_rng r = {2530};
+    int i, overlaps = 0, apart = 0;
+    long cold = 0, warm = 0;
+    double worst = 0;
+    for (i = 0; i < 3000; ++i) {
+        ga2d_shape_proxy a = random_proxy(&r), b = random_proxy(&r);
+        ga2d_transform xa = ga2d_transform_make(ga2d_vec_make((ga2d_real)rng_uniform(&r, -3, 3), (ga2d_real)rng_uniform(&r, -3, 3)),
+                                                ga2d_rotor_from_angle((ga2d_real)rng_uniform(&r, -3, 3)));
+        ga2d_transform xb = ga2d_transform_make(ga2d_vec_make((ga2d_real)rng_uniform(&r, -3, 3), (ga2d_real)rng_uniform(&r, -3, 3)),
+                                                ga2d_rotor_from_angle((ga2d_real)rng_uniform(&r, -3, 3)));
+        ga2d_simplex_cache cache;
+        ga2d_distance_result d, d2;
+        double truth = brute_gap(&a, xa, &b, xb, dv(0, 0)), S = proxy_size(&a, xa) + proxy_size(&b, xb), tol = TOL_K * REAL_EPS * S;
+        memset(&cache, 0, sizeof cache);
+        CHECK_RESULT(ga2d_shape_distance(&a, xa, &b, xb, &cache, &d), GA2D_OK);
+        cold += d.iterations;
+        if (truth <= 0) {
+            ++overlaps;
+            CHECK((double)d.distance <= tol);
+        } else {
+            ++apart;
+            CHECK_NEAR(d.distance, truth, tol);
+            if (fabs((double)d.distance - truth) / tol > worst) worst = fabs((double)d.distance - truth) / tol;
+            if (truth > tol) {
+                CHECK_NEAR(dlen(dsub(dvg(d.point_b), dvg(d.point_a))), d.distance, tol);
+                CHECK_NEAR(dlen(dvg(d.normal)), 1, 4 * REAL_EPS);
+                /* the normal runs from A's point to B's */
+                CHECK(ddot(dvg(d.normal), dsub(dvg(d.point_b), dvg(d.point_a))) >= (double)d.distance - tol);
+            }
+        }
+        /* warm: move B a little and ask again with the cache */
+        xb.p = ga2d_vec_add(xb.p, ga2d_vec_make(0.01f, -0.01f));
+        truth = brute_gap(&a, xa, &b, xb, dv(0, 0));
+        CHECK_RESULT(ga2d_shape_distance(&a, xa, &b, xb, &cache, &d2), GA2D_OK);
+        warm += d2.iterations;
+        if (truth > 0) CHECK_NEAR(d2.distance, truth, tol);
+        else CHECK((double)d2.distance <= tol);
+    }
+    CHECK(overlaps > 300 && apart > 300);
+    CHECK(warm < cold); /* the cache saves work */
+    {
+        ga2d_shape_proxy a = random_proxy(&r), bad = a;
+        ga2d_distance_result d;
+        ga2d_transform x = ga2d_transform_identity(), notunit = x;
+        notunit.q.c = 2;
+        bad.radius = -1;
+        CHECK_RESULT(ga2d_shape_distance(&a, x, &bad, x, NULL, &d), GA2D_ERR_INVALID_ARGUMENT);
+        bad = a;
+        bad.count = 0;
+        CHECK_RESULT(ga2d_shape_distance(&a, x, &bad, x, NULL, &d), GA2D_ERR_INVALID_ARGUMENT);
+        bad = a;
+        bad.points[0].x = (ga2d_real)NAN;
+        CHECK_RESULT(ga2d_shape_distance(&a, x, &bad, x, NULL, &d), GA2D_ERR_NOT_FINITE);
+        CHECK_RESULT(ga2d_shape_distance(&a, notunit, &a, x, NULL, &d), GA2D_ERR_INVALID_ARGUMENT);
+        CHECK_RESULT(ga2d_shape_distance(&a, x, &a, x, NULL, NULL), GA2D_ERR_INVALID_ARGUMENT);
+    }
+    if (verbose())
+        printf("queries: GJK on 3000 random pairs (%d overlapping, %d apart): worst distance error %.3g of %g eps S; "
+               "iterations %.2f cold, %.2f warm on average\n",
+               overlaps, apart, worst, TOL_K, (double)cold / 3000, (double)warm / 3000);
+}
+
+/* The gap along a linear sweep, shift(l) = l r, is convex in l (the
+   distance from a moving point to a convex set), so the truth is found as
+   for rays: the least gap by golden section, then the first root by
+   bisection.  A cast hit must lie at or before the true touch, with its
+   gap within the cast's tolerance (a quarter slop) plus rounding; a miss
+   must never come within that of touching. */
+static double sweep_gap(const ga2d_shape_proxy *a, ga2d_transform xa, const ga2d_shape_proxy *b, ga2d_transform xb, dvec r,
+                        double l)
+{
+    return brute_gap(a, xa, b, xb, dscale(r, l));
+}
+
+static void shape_cast_against_brute_force(void)
+{
+    test_rng r = {2531};
+    int i, hits = 0, misses = 0, at_start = 0, unsure = 0;
+    double worst_gap = 0, slop = GA2D_LINEAR_SLOP, cast_tol = slop / 4;
+    for (i = 0; i < 2000; ++i) {
+        ga2d_shape_proxy a = random_proxy(&r), b = random_proxy(&r);
+        ga2d_transform xa = ga2d_transform_make(ga2d_vec_make(0, 0), ga2d_rotor_from_angle((ga2d_real)rng_uniform(&r, -3, 3)));
+        ga2d_transform xb = ga2d_transform_make(ga2d_vec_make((ga2d_real)rng_uniform(&r, -6, 6), (ga2d_real)rng_uniform(&r, -6, 6)),
+                                                ga2d_rotor_from_angle((ga2d_real)rng_uniform(&r, -3, 3)));
+        ga2d_vec aim = ga2d_vec_make((ga2d_real)rng_uniform(&r, -1.5, 1.5), (ga2d_real)rng_uniform(&r, -1.5, 1.5));
+        ga2d_vec tr = ga2d_vec_scale(ga2d_vec_sub(aim, xb.p), (ga2d_real)rng_uniform(&r, 0.5, 2));
+        ga2d_ray_result c;
+        double S = proxy_size(&a, xa) + proxy_size(&b, xb) + dlen(dvg(tr)), tol = TOL_K * REAL_EPS * S, lo = 0, hi = 1, least,
+               lmin, g0;
+        int k;
+        CHECK_RESULT(ga2d_shape_cast(&a, xa, &b, xb, tr, &c), GA2D_OK);
+        g0 = sweep_gap(&a, xa, &b, xb, dvg(tr), 0);
+        if (g0 <= cast_tol + tol) {
+            if (g0 < cast_tol - tol) {
+                ++at_start;
+                CHECK(c.hit && c.fraction == 0);
+            } else {
+                ++unsure;
+            }
+            continue;
+        }
+        {
+            const double phi = 0.6180339887498949;
+            double x1 = hi - phi, x2 = phi, f1 = sweep_gap(&a, xa, &b, xb, dvg(tr), x1), f2 = sweep_gap(&a, xa, &b, xb, dvg(tr), x2);
+            for (k = 0; k < 120; ++k) {
+                if (f1 < f2) {
+                    hi = x2, x2 = x1, f2 = f1, x1 = hi - phi * (hi - lo), f1 = sweep_gap(&a, xa, &b, xb, dvg(tr), x1);
+                } else {
+                    lo = x1, x1 = x2, f1 = f2, x2 = lo + phi * (hi - lo), f2 = sweep_gap(&a, xa, &b, xb, dvg(tr), x2);
+                }
+            }
+            lmin = (lo + hi) / 2;
+            least = sweep_gap(&a, xa, &b, xb, dvg(tr), lmin);
+            if (sweep_gap(&a, xa, &b, xb, dvg(tr), 1) < least) least = sweep_gap(&a, xa, &b, xb, dvg(tr), lmin = 1);
+        }
+        if (fabs(least - cast_tol) <= cast_tol + tol) {
+            ++unsure; /* comes within the tolerance band of touching: either answer is right */
+            continue;
+        }
+        if (least > 0) {
+            ++misses;
+            CHECK(!c.hit);
+            continue;
+        }
+        ++hits;
+        CHECK(c.hit);
+        if (!c.hit) continue;
+        {
+            double gap = sweep_gap(&a, xa, &b, xb, dvg(tr), (double)c.fraction);
+            /* at or before touching, within the tolerance of it */
+            CHECK(gap >= -tol && gap <= cast_tol + tol);
+            if (gap / cast_tol > worst_gap) worst_gap = gap / cast_tol;
+            /* the point on A's surface, the normal out of A toward B */
+            CHECK_NEAR(dlen(dvg(c.normal)), 1, 4 * REAL_EPS);
+        }
+    }
+    CHECK(hits > 200 && misses > 100);
+    if (verbose())
+        printf("queries: shape casts, 2000 random sweeps: %d hits (gap at the hit at most %.3g of the quarter-slop "
+               "tolerance), %d misses, %d touching at the start, %d too close to call\n",
+               hits, worst_gap, misses, at_start, unsure);
+}
+
+/* Time of impact with turning: against a fine sweep (1000 steps of t,
+   the brute gap at each), the first step within the target.  TOI's t is
+   never after the true impact (conservative advancement never steps past
+   one) and its gap is within the target's tolerance; SEPARATED only when
+   no step comes within the target.  A sample grid misses a touch that
+   lasts less than a step, so t_true is known to a step (0.001); the
+   shapes here move at most ~10 m in t, 0.01 m a step. */
+static void toi_against_sweep(void)
+{
+    test_rng r = {2532};
+    int i, hits = 0, apart = 0, gave_up = 0, overlapped = 0;
+    long iters = 0;
+    double target = GA2D_LINEAR_SLOP, tol = GA2D_LINEAR_SLOP / 4;
+    for (i = 0; i < 600; ++i) {
+        ga2d_shape_proxy a = random_proxy(&r), b = random_proxy(&r);
+        ga2d_sweep sa, sb;
+        ga2d_toi_result out;
+        double t_true = 2, least = 1e300;
+        int k;
+        memset(&sa, 0, sizeof sa);
+        memset(&sb, 0, sizeof sb);
+        sa.c1 = sa.c2 = ga2d_vec_make(0, 0);
+        sa.a1 = (ga2d_real)rng_uniform(&r, -3, 3);
+        sa.a2 = sa.a1 + (ga2d_real)rng_uniform(&r, -1, 1);
+        sb.c1 = ga2d_vec_make((ga2d_real)rng_uniform(&r, -6, 6), (ga2d_real)rng_uniform(&r, -6, 6));
+        sb.c2 = ga2d_vec_make((ga2d_real)rng_uniform(&r, -3, 3), (ga2d_real)rng_uniform(&r, -3, 3));
+        sb.a1 = (ga2d_real)rng_uniform(&r, -3, 3);
+        sb.a2 = sb.a1 + (ga2d_real)rng_uniform(&r, -3, 3);
+        CHECK_RESULT(ga2d_time_of_impact(&a, &sa, &b, &sb, (ga2d_real)target, 1, &out), GA2D_OK);
+        iters += out.iterations;
+        for (k = 0; k <= 1000; ++k) {
+            double t = k / 1000.0, g = brute_gap(&a, ga2d_sweep_transform(&sa, (ga2d_real)t), &b, ga2d_sweep_transform(&sb, (ga2d_real)t), dv(0, 0));
+            if (g < least) least = g;
+            if (g <= target && t_true > 1) t_true = t;
+        }
+        if (out.state == GA2D_TOI_OVERLAPPED) {
+            ++overlapped;
+            CHECK(brute_gap(&a, ga2d_sweep_transform(&sa, 0), &b, ga2d_sweep_transform(&sb, 0), dv(0, 0)) <= target + tol + 1e-4);
+            continue;
+        }
+        if (out.state == GA2D_TOI_GAVE_UP) {
+            ++gave_up;
+            CHECK((double)out.t <= t_true + 1e-3); /* a safe time */
+            continue;
+        }
+        if (out.state == GA2D_TOI_SEPARATED) {
+            ++apart;
+            /* no sample came within the target, bar rounding of the
+               transforms (1e-4 m: float's eps times the 6 m reach, with margin) */
+            CHECK(least > target - 1e-4);
+            continue;
+        }
+        ++hits;
+        {
+            double g = brute_gap(&a, ga2d_sweep_transform(&sa, out.t), &b, ga2d_sweep_transform(&sb, out.t), dv(0, 0));
+            CHECK((double)out.t <= t_true + 1e-3);
+            CHECK(g >= target - 1e-4 && g <= target + tol + 1e-4);
+        }
+    }
+    CHECK(hits > 100 && apart > 50);
+    CHECK(gave_up <= 6); /* 1 %: conservative advancement stalls only on long grazing turns */
+    if (verbose())
+        printf("queries: time of impact, 600 random sweeps with turning: %d hits, %d apart, %d touching at the start, "
+               "%d gave up; %.1f iterations on average\n",
+               hits, apart, overlapped, gave_up, (double)iters / 600);
+}
+
 /* ----------------------------------------------------------- the world */
 /* A world of WORLD_SHAPES random shapes: static segments, a chain and
    polygons; dynamic circles, capsules and polygons (a few with two
@@ -620,7 +931,7 @@ static void world_queries_match_a_scan(void)
     static qworld q;
     static found f;
     test_rng r = {2599};
-    int t, i, aabb_total = 0, point_total = 0, ray_total = 0, unsure = 0;
+    int t, i, aabb_total = 0, point_total = 0, ray_total = 0, shape_total = 0, cast_total = 0, unsure = 0;
     long tested = 0, scanned = 0;
     ga2d_filter all = ga2d_default_filter(), only2 = ga2d_default_filter();
     only2.mask_bits = 2u;
@@ -706,11 +1017,57 @@ static void world_queries_match_a_scan(void)
             }
         }
     }
-    CHECK(aabb_total > 100 && point_total > 20 && ray_total > 100); /* the queries found things */
+    /* shapes: a random proxy placed at random, its overlaps and its sweep */
+    for (t = 0; t < WORLD_QUERIES; ++t) {
+        ga2d_filter filter = t % 3 == 2 ? only2 : all;
+        ga2d_shape_proxy p = random_proxy(&r);
+        ga2d_transform x = ga2d_transform_make(ga2d_vec_make((ga2d_real)rng_uniform(&r, -80, 80), (ga2d_real)rng_uniform(&r, -45, 60)),
+                                               ga2d_rotor_from_angle((ga2d_real)rng_uniform(&r, -3, 3)));
+        ga2d_vec d = ga2d_vec_make((ga2d_real)rng_uniform(&r, -30, 30), (ga2d_real)rng_uniform(&r, -30, 30));
+        double tol = TOL_K * REAL_EPS * 200;
+        f.n = 0;
+        CHECK_RESULT(ga2d_world_overlap_shape(q.w, &p, x, filter, collect, &f), GA2D_OK);
+        for (i = 0; i < q.n; ++i) {
+            ga2d_shape_proxy sp = ga2d_shape_proxy_of(&q.geom[i]);
+            ga2d_transform xs = ga2d_body_transform(q.w, ga2d_shape_body(q.w, q.shapes[i]));
+            int seen = !q.sensor[i] && ga2d_should_collide(filter, q.filter[i]), in = index_of(&f, q.shapes[i]) >= 0;
+            double g;
+            if (!seen) {
+                CHECK(!in);
+                continue;
+            }
+            g = brute_gap(&sp, xs, &p, x, dv(0, 0));
+            if (fabs(g) <= tol) {
+                ++unsure;
+                continue;
+            }
+            CHECK(in == (g < 0));
+            shape_total += in;
+        }
+        f.n = 0;
+        CHECK_RESULT(ga2d_world_cast_shape(q.w, &p, x, d, filter, collect_ray, &f), GA2D_OK);
+        for (i = 0; i < q.n; ++i) {
+            ga2d_shape_proxy sp = ga2d_shape_proxy_of(&q.geom[i]);
+            ga2d_ray_result one;
+            int seen = !q.sensor[i] && ga2d_should_collide(filter, q.filter[i]), k = index_of(&f, q.shapes[i]);
+            CHECK_RESULT(ga2d_shape_cast(&sp, ga2d_body_transform(q.w, ga2d_shape_body(q.w, q.shapes[i])), &p, x, d, &one), GA2D_OK);
+            if (!seen) {
+                CHECK(k < 0);
+                continue;
+            }
+            CHECK((k >= 0) == one.hit);
+            if (k >= 0 && one.hit) {
+                CHECK(f.fraction[k] == one.fraction);
+                ++cast_total;
+            }
+        }
+    }
+    CHECK(aabb_total > 100 && point_total > 20 && ray_total > 100 && shape_total > 20 && cast_total > 50); /* the queries found things */
     if (verbose())
-        printf("queries: %d random queries of each kind over %d shapes: %d box, %d point and %d ray finds agree with the "
-               "scan, %d too close to call; a box query tested %.1f shapes on average (of %d)\n",
-               WORLD_QUERIES, q.n, aabb_total, point_total, ray_total, unsure, (double)tested / WORLD_QUERIES, q.n);
+        printf("queries: %d random queries of each kind over %d shapes: %d box, %d point, %d ray, %d shape and %d shape-cast "
+               "finds agree with the scan, %d too close to call; a box query tested %.1f shapes on average (of %d)\n",
+               WORLD_QUERIES, q.n, aabb_total, point_total, ray_total, shape_total, cast_total, unsure,
+               (double)tested / WORLD_QUERIES, q.n);
     ga2d_world_destroy(q.w);
 }
 
@@ -883,6 +1240,9 @@ void suite_queries(void)
     test_run("queries: rays against brute force", rays_against_brute_force);
     test_run("queries: ray edge cases", ray_edge_cases);
     test_run("queries: ray cast of a placed shape", ray_cast_shape_placed);
+    test_run("queries: GJK distance against brute force", distance_against_brute_force);
+    test_run("queries: shape cast against brute force", shape_cast_against_brute_force);
+    test_run("queries: time of impact against a sweep", toi_against_sweep);
     test_run("queries: world queries match a scan", world_queries_match_a_scan);
     test_run("queries: ray clip protocol", ray_clip_protocol);
     test_run("queries: refusals and locks", query_refusals);
