@@ -70,6 +70,7 @@ void suite_accepted(void);
 void suite_joints(void);
 void suite_joints_kinds(void);
 void suite_queries(void);
+void suite_continuous(void);
 
 #ifdef __cplusplus
 }
