@@ -98,6 +98,7 @@ int main(int argc, char **argv)
     suite_joints_kinds();
     suite_queries();
     suite_continuous();
+    suite_mover();
     suite_accepted();
     suite_determinism();
     suite_snapshot();
