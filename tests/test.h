@@ -71,6 +71,9 @@ void suite_joints(void);
 void suite_joints_kinds(void);
 void suite_joints_scenes(void);
 void suite_joints_extremes(void);
+void suite_queries(void);
+void suite_continuous(void);
+void suite_mover(void);
 
 #ifdef __cplusplus
 }

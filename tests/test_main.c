@@ -98,6 +98,9 @@ int main(int argc, char **argv)
     suite_joints_kinds();
     suite_joints_scenes();
     suite_joints_extremes();
+    suite_queries();
+    suite_continuous();
+    suite_mover();
     suite_accepted();
     suite_determinism();
     suite_snapshot();
