@@ -32,7 +32,7 @@ static void make_wall(ga2d_world *w, int kind)
     ga2d_shape_def sd = ga2d_default_shape_def();
     ga2d_body_id g = ga2d_body_create(w, &bd);
     if (kind == WALL_BOX) {
-        ga2d_polygon p = ga2d_polygon_box(0.05f, (ga2d_real)WALL_HALF);
+        ga2d_polygon p = ga2d_polygon_box((ga2d_real)0.05, (ga2d_real)WALL_HALF);
         CHECK(!ga2d_shape_id_is_null(ga2d_shape_create_polygon(w, g, &sd, &p)));
     } else if (kind == WALL_SEGMENT) {
         ga2d_segment s = {{0, (ga2d_real)-WALL_HALF}, {0, (ga2d_real)WALL_HALF}};
@@ -98,7 +98,7 @@ static int passes(int wall, int body, double size, double speed, int phase, int 
     b = make_body(w, body, size, speed, phase);
     prev = ga2d_body_center(w, b);
     for (i = 0; i < 120; ++i) {
-        CHECK_RESULT(ga2d_world_step(w, 1.0f / 60), GA2D_OK);
+        CHECK_RESULT(ga2d_world_step(w, (ga2d_real)1.0 / 60), GA2D_OK);
         *swept += ga2d_world_get_counters(w).continuous_bodies;
         now = ga2d_body_center(w, b);
         /* the centre went from x < 0 to x >= 0 (or the wall's middle, for the box): where it crossed, within the span */
@@ -153,18 +153,18 @@ static uint64_t pyramid_hash(int continuous, int *swept)
     int n = 0, row, i, step;
     wd.enable_continuous = continuous;
     w = ga2d_world_create(&wd);
-    bd.polygon = ga2d_polygon_box(10, 0.5f);
-    bd.position = ga2d_vec_make(0, -0.5f);
+    bd.polygon = ga2d_polygon_box(10, (ga2d_real)0.5);
+    bd.position = ga2d_vec_make(0, -(ga2d_real)0.5);
     ga2d_body_create(w, &bd);
     bd.type = GA2D_BODY_DYNAMIC;
-    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
+    bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     for (row = 0; row < 8; ++row)
         for (i = 0; i < 8 - row; ++i) {
             bd.position = ga2d_vec_make((ga2d_real)(i - (8 - row) / 2.0 + 0.5), (ga2d_real)(0.5 + row * 1.05));
             ids[n++] = ga2d_body_create(w, &bd);
         }
     for (step = 0; step < 300; ++step) {
-        ga2d_world_step(w, 1.0f / 60);
+        ga2d_world_step(w, (ga2d_real)1.0 / 60);
         *swept += ga2d_world_get_counters(w).continuous_bodies;
     }
     for (i = 0; i < n; ++i) {

@@ -63,19 +63,19 @@ static void stands_still(void)
     ga2d_vec at;
     int f, moved = 0;
     chain(w, ground, 2);
-    for (f = 0; f < 120; ++f) move_and_slide(w, &m, 0, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
+    for (f = 0; f < 120; ++f) move_and_slide(w, &m, 0, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
     CHECK(m.on_ground);
     /* its feet (the lower end's circle) a skin above y = 0 */
     CHECK((double)m.position.y - HH - RAD >= SKIN_LO - 1e-6 && (double)m.position.y - HH - RAD <= SKIN_HI);
     at = m.position;
     for (f = 0; f < 120; ++f) {
-        move_and_slide(w, &m, 0, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
+        move_and_slide(w, &m, 0, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
         moved |= m.position.x != at.x || m.position.y != at.y;
     }
     CHECK(!moved);
     /* walking: x = 2 m/s t exactly as on a floor, y unchanged */
-    for (f = 0; f < 60; ++f) move_and_slide(w, &m, 2, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
-    CHECK_NEAR(m.position.x, (double)at.x + 2 * 60 * (double)(1.0f / 60), 60 * 4 * REAL_EPS * 2); /* 60 sums of 2 h (h the float 1/60 passed), each rounded at x ~ 2 */
+    for (f = 0; f < 60; ++f) move_and_slide(w, &m, 2, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
+    CHECK_NEAR(m.position.x, (double)at.x + 2 * 60 * (double)((ga2d_real)1.0 / 60), 60 * 4 * REAL_EPS * 2); /* 60 sums of 2 h (h the float 1/60 passed), each rounded at x ~ 2 */
     CHECK((double)m.position.y - HH - RAD >= SKIN_LO - 1e-6 && (double)m.position.y - HH - RAD <= SKIN_HI);
     if (verbose())
         printf("mover: stands %.6f m above the floor (skin %.4f to %.4f), still for 2 s, walks 2 m in 1 s to %.3g\n",
@@ -104,7 +104,7 @@ static void slopes(void)
         level[2][0] = run, level[2][1] = rise;
         level[3][0] = run + 50, level[3][1] = rise;
         chain(w, (const double (*)[2])level, 4);
-        for (f = 0; f < 10 * 60; ++f) move_and_slide(w, &m, 3, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
+        for (f = 0; f < 10 * 60; ++f) move_and_slide(w, &m, 3, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
         /* never inside the terrain: its lower end's circle above the ground line under it */
         if (deg < 45) {
             CHECK((double)m.position.y > rise + HH + RAD); /* on the top */
@@ -136,7 +136,7 @@ static void walls_and_ledges(void)
     static const double ground[][2] = {{-50, 0}, {5, 0}};
     ga2d_world *w = ga2d_world_create(NULL);
     ga2d_body_def bd = ga2d_default_body_def();
-    ga2d_polygon box = ga2d_polygon_box(0.5f, 2);
+    ga2d_polygon box = ga2d_polygon_box((ga2d_real)0.5, 2);
     mover m = make_mover(0, HH + RAD + 0.01), fall;
     int f, moved = 0;
     double jitter = 0;
@@ -145,7 +145,7 @@ static void walls_and_ledges(void)
     bd.position = ga2d_vec_make(3, 2);
     bd.polygon = box;
     ga2d_body_create(w, &bd); /* a wall whose face is at x = 2.5 */
-    for (f = 0; f < 120; ++f) move_and_slide(w, &m, 3, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
+    for (f = 0; f < 120; ++f) move_and_slide(w, &m, 3, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
     CHECK((double)m.position.x + RAD <= 2.5 - SKIN_LO + 1e-5 && (double)m.position.x + RAD >= 2.5 - SKIN_HI);
     at = m.position;
     /* pressed against the wall and the floor at once, each sweep stops
@@ -154,7 +154,7 @@ static void walls_and_ledges(void)
     for (f = 0; f < 60; ++f) {
         ga2d_vec before = m.position;
         double step;
-        move_and_slide(w, &m, 3, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
+        move_and_slide(w, &m, 3, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
         step = dlength(before, m.position);
         if (step > jitter) jitter = step;
     }
@@ -169,22 +169,22 @@ static void walls_and_ledges(void)
         w = ga2d_world_create(NULL);
         chain(w, ledge, 3);
         fall = make_mover(0.2, 1); /* its middle 0.2 m past the edge: held by its rounded end (radius 0.3) */
-        for (f = 0; f < 30; ++f) move_and_slide(w, &fall, 0, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
+        for (f = 0; f < 30; ++f) move_and_slide(w, &fall, 0, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
         CHECK(fall.on_ground); /* held by the edge under its rounded end */
-        for (f = 0; f < 60 && fall.on_ground; ++f) move_and_slide(w, &fall, 1, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
+        for (f = 0; f < 60 && fall.on_ground; ++f) move_and_slide(w, &fall, 1, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
         CHECK(!fall.on_ground);
         /* then clear of the edge it falls freely: after 60 frames it is
            far below the ledge (g t^2 / 2 = 5 m in 1 s, less the frames
            spent rolling off the corner) */
-        for (n = 0; n < 60; ++n) move_and_slide(w, &fall, 0, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
+        for (n = 0; n < 60; ++n) move_and_slide(w, &fall, 0, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
         CHECK(!fall.on_ground && (double)fall.position.y < -2);
         /* in the open, from rest: frame k adds g h to the speed and then
            moves by it, so n frames drop g h^2 n (n + 1) / 2 (symplectic
            Euler), to the rounding of 30 sums of numbers below 2 m */
         fall = make_mover(20, 50);
         y0 = (double)fall.position.y;
-        for (n = 1; n <= 30; ++n) move_and_slide(w, &fall, 0, ga2d_vec_make(0, -10), 1.0f / 60, ga2d_default_filter());
-        CHECK_NEAR(y0 - (double)fall.position.y, 10.0 * (double)(1.0f / 60) * (double)(1.0f / 60) * 30 * 31 / 2, 30 * 4 * REAL_EPS * 50);
+        for (n = 1; n <= 30; ++n) move_and_slide(w, &fall, 0, ga2d_vec_make(0, -10), (ga2d_real)1.0 / 60, ga2d_default_filter());
+        CHECK_NEAR(y0 - (double)fall.position.y, 10.0 * (double)((ga2d_real)1.0 / 60) * (double)((ga2d_real)1.0 / 60) * 30 * 31 / 2, 30 * 4 * REAL_EPS * 50);
         ga2d_world_destroy(w);
     }
     if (verbose())

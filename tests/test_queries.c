@@ -372,22 +372,22 @@ static void ray_edge_cases(void)
 {
     ga2d_polygon box = ga2d_polygon_box(1, 1);
     ga2d_circle c = {{0, 0}, 1};
-    ga2d_capsule cap = {{-1, 0}, {1, 0}, 0.5f};
+    ga2d_capsule cap = {{-1, 0}, {1, 0}, (ga2d_real)0.5};
     ga2d_segment s = {{-1, 0}, {1, 0}};
     ga2d_ray_result r;
     /* from inside: no hit, for every shape */
     CHECK(!ga2d_ray_cast_polygon(&box, ga2d_vec_make(0, 0), ga2d_vec_make(5, 0)).hit);
-    CHECK(!ga2d_ray_cast_circle(&c, ga2d_vec_make(0.5f, 0), ga2d_vec_make(5, 0)).hit);
-    CHECK(!ga2d_ray_cast_capsule(&cap, ga2d_vec_make(1.2f, 0), ga2d_vec_make(5, 0)).hit);
-    box.radius = 0.25f;
-    CHECK(!ga2d_ray_cast_polygon(&box, ga2d_vec_make(1.2f, 1.1f), ga2d_vec_make(5, 0)).hit); /* in a rounded corner */
+    CHECK(!ga2d_ray_cast_circle(&c, ga2d_vec_make((ga2d_real)0.5, 0), ga2d_vec_make(5, 0)).hit);
+    CHECK(!ga2d_ray_cast_capsule(&cap, ga2d_vec_make((ga2d_real)1.2, 0), ga2d_vec_make(5, 0)).hit);
+    box.radius = (ga2d_real)0.25;
+    CHECK(!ga2d_ray_cast_polygon(&box, ga2d_vec_make((ga2d_real)1.2, (ga2d_real)1.1), ga2d_vec_make(5, 0)).hit); /* in a rounded corner */
     box.radius = 0;
     /* head on: the face, its normal, the fraction exactly (all values exact in binary) */
     r = ga2d_ray_cast_polygon(&box, ga2d_vec_make(-3, 0), ga2d_vec_make(4, 0));
     CHECK(r.hit && r.fraction == (ga2d_real)0.5 && r.point.x == -1 && r.normal.x == -1 && r.normal.y == 0);
     r = ga2d_ray_cast_circle(&c, ga2d_vec_make(0, 3), ga2d_vec_make(0, -4));
     CHECK(r.hit && r.fraction == (ga2d_real)0.5 && r.point.y == 1 && r.normal.y == 1);
-    r = ga2d_ray_cast_capsule(&cap, ga2d_vec_make(0, 2.5f), ga2d_vec_make(0, -4));
+    r = ga2d_ray_cast_capsule(&cap, ga2d_vec_make(0, (ga2d_real)2.5), ga2d_vec_make(0, -4));
     CHECK(r.hit && r.fraction == (ga2d_real)0.5 && r.point.y == (ga2d_real)0.5 && r.normal.y == 1);
     /* through a corner exactly (a diagonal through (1, 1)): a hit there */
     r = ga2d_ray_cast_polygon(&box, ga2d_vec_make(2, 2), ga2d_vec_make(-2, -2));
@@ -407,7 +407,7 @@ static void ray_edge_cases(void)
     r = ga2d_ray_cast_segment(&s, ga2d_vec_make(0, 1), ga2d_vec_make(0, -2), 1);
     CHECK(r.hit && r.fraction == (ga2d_real)0.5 && r.normal.y == 1);
     /* short of the shape, and exactly reaching it */
-    CHECK(!ga2d_ray_cast_circle(&c, ga2d_vec_make(-3, 0), ga2d_vec_make(1.5f, 0)).hit);
+    CHECK(!ga2d_ray_cast_circle(&c, ga2d_vec_make(-3, 0), ga2d_vec_make((ga2d_real)1.5, 0)).hit);
     r = ga2d_ray_cast_circle(&c, ga2d_vec_make(-3, 0), ga2d_vec_make(2, 0));
     CHECK(r.hit && r.fraction == 1);
     /* bad input: no hit */
@@ -605,7 +605,7 @@ static void distance_against_brute_force(void)
             }
         }
         /* warm: move B a little and ask again with the cache */
-        xb.p = ga2d_vec_add(xb.p, ga2d_vec_make(0.01f, -0.01f));
+        xb.p = ga2d_vec_add(xb.p, ga2d_vec_make((ga2d_real)0.01, -(ga2d_real)0.01));
         truth = brute_gap(&a, xa, &b, xb, dv(0, 0));
         CHECK_RESULT(ga2d_shape_distance(&a, xa, &b, xb, &cache, &d2), GA2D_OK);
         warm += d2.iterations;
@@ -863,7 +863,7 @@ static void build_world(qworld *q)
             add_shape(q, b, &g, &r);
         }
     }
-    for (i = 0; i < 60; ++i) CHECK_RESULT(ga2d_world_step(q->w, 1.0f / 60), GA2D_OK);
+    for (i = 0; i < 60; ++i) CHECK_RESULT(ga2d_world_step(q->w, (ga2d_real)1.0 / 60), GA2D_OK);
 }
 
 typedef struct found { int n; ga2d_shape_id ids[WORLD_SHAPES + 64]; ga2d_real fraction[WORLD_SHAPES + 64]; } found;
@@ -1096,7 +1096,7 @@ static void ray_clip_protocol(void)
     static const int order[10] = {7, 2, 9, 0, 5, 3, 8, 1, 6, 4};
     for (i = 0; i < 10; ++i) {
         bd.position = ga2d_vec_make((ga2d_real)(2 + 2 * order[i]), 0);
-        bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
+        bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
         ga2d_body_create(w, &bd);
     }
     closest = ga2d_world_cast_ray_closest(w, ga2d_vec_make(0, 0), ga2d_vec_make(25, 0), all);
@@ -1130,7 +1130,7 @@ static int lock_overlap(ga2d_shape_id s, void *ctx)
     ++c->calls;
     c->destroy = ga2d_body_destroy(c->w, c->b);
     c->nested = ga2d_world_cast_ray_closest_checked(c->w, ga2d_vec_make(0, 5), ga2d_vec_make(0, -10), ga2d_default_filter(), &out);
-    c->step = ga2d_world_step(c->w, 1.0f / 60);
+    c->step = ga2d_world_step(c->w, (ga2d_real)1.0 / 60);
     return 1;
 }
 static void lock_force(ga2d_world *w, void *ctx)
@@ -1153,7 +1153,7 @@ static void query_refusals(void)
     size_t n0, n1;
     unsigned char *before, *after;
     bd.type = GA2D_BODY_DYNAMIC;
-    bd.polygon = ga2d_polygon_box(0.5f, 0.5f);
+    bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     memset(&c, 0, sizeof c);
     c.w = w;
     c.b = ga2d_body_create(w, &bd);
@@ -1194,7 +1194,7 @@ static void query_refusals(void)
     c.w = w;
     c.b = ga2d_body_id_null();
     CHECK_RESULT(ga2d_world_set_force_callback(w, lock_force, &c), GA2D_OK);
-    CHECK_RESULT(ga2d_world_step(w, 1.0f / 60), GA2D_OK);
+    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)1.0 / 60), GA2D_OK);
     CHECK(c.calls >= 1);
     CHECK_RESULT(c.nested, GA2D_ERR_LOCKED);
     CHECK_RESULT(c.destroy, GA2D_ERR_LOCKED);
