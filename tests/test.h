@@ -70,6 +70,7 @@ void suite_accepted(void);
 void suite_joints(void);
 void suite_joints_kinds(void);
 void suite_joints_scenes(void);
+void suite_restitution_fast(void);
 
 #ifdef __cplusplus
 }

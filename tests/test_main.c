@@ -97,6 +97,7 @@ int main(int argc, char **argv)
     suite_joints();
     suite_joints_kinds();
     suite_joints_scenes();
+    suite_restitution_fast();
     suite_accepted();
     suite_determinism();
     suite_snapshot();
