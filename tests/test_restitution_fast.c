@@ -75,13 +75,13 @@ static void loop_make(loop_scene *s, int count, int shape, double speed, int ove
         sd.restitution = 1;
         sd.friction = 0;
         if (kind == SHAPE_CIRCLE) {
-            ga2d_circle c = {{0, 0}, 0.1f};
+            ga2d_circle c = {{0, 0}, (ga2d_real)0.1};
             sh = ga2d_shape_create_circle(s->w, s->body[i], &sd, &c);
         } else if (kind == SHAPE_CAPSULE) {
-            ga2d_capsule c = {{-0.1f, 0}, {0.1f, 0}, 0.05f};
+            ga2d_capsule c = {{(ga2d_real)-0.1, 0}, {(ga2d_real)0.1, 0}, (ga2d_real)0.05};
             sh = ga2d_shape_create_capsule(s->w, s->body[i], &sd, &c);
         } else {
-            ga2d_polygon p = ga2d_polygon_box(0.1f, 0.05f);
+            ga2d_polygon p = ga2d_polygon_box((ga2d_real)0.1, (ga2d_real)0.05);
             sh = ga2d_shape_create_polygon(s->w, s->body[i], &sd, &p);
         }
         CHECK(!ga2d_shape_id_is_null(sh));
@@ -140,7 +140,7 @@ static void fast_elastic_stays_finite(void)
                     loop_make(&s, counts[ci], shape, speeds[si], overlap);
                     e0 = scene_energy(&s);
                     for (i = 0; i < steps; ++i) {
-                        ga2d_result r = ga2d_world_step(s.w, 1.0f / 60);
+                        ga2d_result r = ga2d_world_step(s.w, (ga2d_real)(1.0 / 60));
                         double e = scene_energy(&s);
                         if (r != GA2D_OK) ++failed_steps;
                         CHECK_RESULT(r, GA2D_OK);
@@ -191,7 +191,7 @@ static void single_body_keeps_its_speed(void)
             cap = GA2D_MAX_ROTATION * 60 * wd.substeps;
             kept = shape == SHAPE_CIRCLE || speeds[si] / k < cap;
             for (i = 0; i < steps; ++i) {
-                CHECK_RESULT(ga2d_world_step(s.w, 1.0f / 60), GA2D_OK);
+                CHECK_RESULT(ga2d_world_step(s.w, (ga2d_real)(1.0 / 60)), GA2D_OK);
                 e = scene_energy(&s);
                 CHECK(e <= e0 * (1 + tol));
                 if (kept) CHECK(e >= e0 * (1 - tol));
@@ -228,17 +228,17 @@ static void no_bounce_without_touch(void)
         for (i = 0; i < 2; ++i) {
             ga2d_body_def bd = ga2d_default_body_def();
             ga2d_shape_def sd = ga2d_default_shape_def();
-            ga2d_circle c = {{0, 0}, 0.1f};
+            ga2d_circle c = {{0, 0}, (ga2d_real)0.1};
             bd.type = GA2D_BODY_DYNAMIC;
-            bd.position = ga2d_vec_make(i ? 1.5f : -1.5f, i ? (ga2d_real)offsets[oi] : 0);
-            bd.velocity = ga2d_vec_make(i ? -100.0f : 100.0f, 0);
+            bd.position = ga2d_vec_make((ga2d_real)(i ? 1.5 : -1.5), i ? (ga2d_real)offsets[oi] : 0);
+            bd.velocity = ga2d_vec_make((ga2d_real)(i ? -100.0 : 100.0), 0);
             b[i] = ga2d_body_create(w, &bd);
             sd.restitution = 1;
             sd.friction = 0;
             CHECK(!ga2d_shape_id_is_null(ga2d_shape_create_circle(w, b[i], &sd, &c)));
         }
         for (i = 0; i < 10; ++i) {
-            CHECK_RESULT(ga2d_world_step(w, 1.0f / 60), GA2D_OK);
+            CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
             if (ga2d_body_velocity(w, b[0]).x < 0) turned = 1;
         }
         CHECK(turned == (offsets[oi] < 0.2));
