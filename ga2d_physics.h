@@ -1782,6 +1782,7 @@ GA2D_API ga2d_result ga2d_world_draw(const ga2d_world *w, const ga2d_debug_draw 
 #define GA2D__NGS_FRACTION GA2D__R(0.2)         /* of the overlap past slop, moved per NGS pass */
 #define GA2D__NGS_MAX_MOVE GA2D__R(0.2)         /* m: the most an NGS pass moves a point */
 #define GA2D__RESTITUTION_PASSES 32             /* restitution's passes, at most, a step */
+#define GA2D__ADVANCE_ITERATIONS 16             /* restitution's conservative advancement, at most */
 #define GA2D__HERTZ_CAP GA2D__R(0.25)           /* contact_hertz's cap, of the substep rate */
 #define GA2D__DRAW_CENTER_SIZE GA2D__R(0.05)    /* m: debug draw's centre of mass marker */
 #define GA2D__JOINT_HERTZ GA2D__R(60)           /* Hz: a rigid joint's position feedback, a spring's */
@@ -8728,7 +8729,7 @@ enum { GA2D__BIAS_NONE, GA2D__BIAS_SOFT, GA2D__BIAS_BAUMGARTE };
 /* What a pass's groups share: the bias kind, switches and splatted
    constants. */
 typedef struct ga2d__pass {
-    int bias_kind, friction, fresh;
+    int bias_kind, friction;
     ga2d__w zero, one, winv_h, low, slop, nslop, baumgarte;
     ga2d__w soft_rate, soft_mass, soft_impulse;    /* between moving bodies */
     ga2d__w stiff_rate, stiff_mass, stiff_impulse; /* against one the solver does not move */
@@ -8739,7 +8740,7 @@ typedef struct ga2d__pass {
 static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, int extras)
 {
     const ga2d__w zero = ps->zero, one = ps->one;
-    const int bias_kind = ps->bias_kind, fresh = ps->fresh;
+    const int bias_kind = ps->bias_kind;
     ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
     ga2d__wbody A, B, A0, B0;
     ga2d__wanchors r[2];
@@ -8759,7 +8760,16 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k], extras);
         ga2d__wmask apart = ga2d__wgt(s, zero);
         ga2d__w bias = zero, mass_scale = one, impulse_scale = zero;
-        if (fresh) g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
+        /* the masses at the anchors the impulses act at now (they
+           follow the bodies: ga2d__point_now).  A mass m at a point whose
+           true inverse mass is K changes its approach speed by a factor 1
+           - m K a pass: the passes diverge, and push energy in, once m K >
+           2.  Masses kept from the step's start reached m K = 470 where
+           the shared point of a wide speculative gap between fast bodies
+           had moved a metre sideways (0.8 m of lever arm on a 0.1 m
+           disc), and the step went to NaN in two substeps; NGS's moves
+           did the same with deep overlaps of small bodies */
+        g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
         vn = ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny);
         if (bias_kind == GA2D__BIAS_SOFT) {
             /* the spring in impulse: its bias's push, and the part of
@@ -8803,7 +8813,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
         own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(vn, bias)), ga2d__wmul(impulse_scale, g->nimp[k])));
     }
-    if (fresh) g->k12 = ga2d__wcoupling(g, r);
+    g->k12 = ga2d__wcoupling(g, r);
     ga2d__wblock(g, inv_a, own, lambda);
     for (k = 0; k < 2; ++k) {
         g->nimp[k] = ga2d__wadd(g->nimp[k], lambda[k]);
@@ -8816,7 +8826,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         } else {
             ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty);
             if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
-            if (fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
+            g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
             dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
             total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
         }
@@ -8849,11 +8859,6 @@ static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int
     int gi;
     ps.bias_kind = bias_kind;
     ps.friction = w->def.enable_friction;
-    /* NGS moves bodies by up to 0.2 m a pass, so a point's anchors can end
-       far from where its masses were computed; the masses must follow, or
-       an impulse several times too large for its lever arm is applied and
-       the passes diverge (deep overlaps of small bodies reached NaN) */
-    ps.fresh = w->def.solver == GA2D_SOLVER_PGS_NGS;
     ps.zero = ga2d__wsplat(0);
     ps.one = ga2d__wsplat(1);
     ps.winv_h = ga2d__wsplat(inv_h);
@@ -9249,6 +9254,50 @@ static void ga2d__push_apart(ga2d__step_context *c, int begin, int end)
    turned around where it is, leaves at sqrt(e^2 v_i^2 - 2 a s), what it
    would have at height s after a true bounce.  Restitution mixes as the
    larger of the two. */
+/* Where body b's shapes are after time t, moving as they move now (v,
+   w and the free acceleration a). */
+static ga2d_transform ga2d__pose_after(const ga2d__body *b, ga2d_vec a, ga2d_real t)
+{
+    ga2d_vec center = ga2d_vec_add(b->sim.center, ga2d_vec_add(ga2d_vec_scale(b->sim.v, t), ga2d_vec_scale(a, t * t / 2)));
+    ga2d_rotor q = ga2d__turn(b->sim.q, b->sim.w * t, GA2D_ROTATION_EXACT);
+    return ga2d_transform_make(ga2d_vec_sub(center, ga2d_rotate(q, b->sim.local_center)), q);
+}
+
+/* Whether a contact's shapes, moving as they move now, come within slop
+   of each other before time `look`: conservative advancement (Mirtich).
+   No two of their points approach faster than u = |vB - vA| + |wA| ext_A
+   + |wB| ext_B + |aB - aA| look (ext a body's reach from its centre), so
+   shapes d apart at time t cannot touch before t + (d - slop) / u.  A
+   manifold kept to the points within u (look - t) + slop finds them
+   farther than that (none: they cannot meet in time) or gives d.  The
+   manifold's one normal is only the closest features' now: a pair that
+   closes along it at the step's start may slide past (two discs passing
+   side by side at 100 m/s, 5 cm apart at their closest, bounced off each
+   other).  Undecided after the iterations, it meets. */
+static int ga2d__meets_within(const ga2d_world *w, const ga2d__contact_constraint *cc, ga2d_real look)
+{
+    const ga2d__contact *ct = &w->contacts[cc->contact];
+    const ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
+    ga2d_vec fa = ga2d__free_accel(w, a), fb = ga2d__free_accel(w, b);
+    ga2d_real u = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
+                  GA2D__FABS(b->sim.w) * b->extent + ga2d__length(ga2d_vec_sub(fb, fa)) * look;
+    ga2d_real t = 0;
+    int i, k;
+    for (i = 0; i < GA2D__ADVANCE_ITERATIONS; ++i) {
+        ga2d_manifold m;
+        ga2d_real d;
+        ga2d__collide_geometries(&w->shapes[ct->shape_a].geom, ga2d__pose_after(a, fa, t), &w->shapes[ct->shape_b].geom,
+                                 ga2d__pose_after(b, fb, t), w->slop, u * (look - t) + w->slop, &m);
+        if (m.count == 0) return 0;
+        d = m.points[0].separation;
+        for (k = 1; k < m.count; ++k) d = m.points[k].separation < d ? m.points[k].separation : d;
+        if (d <= w->slop) return 1;
+        t += (d - w->slop) / u;
+        if (!(t < look)) return 0;
+    }
+    return 1;
+}
+
 static void ga2d__restitute(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
@@ -9261,7 +9310,7 @@ static void ga2d__restitute(ga2d__step_context *c)
             ga2d__contact_constraint *cc = &c->constraints[i];
             ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
             ga2d_real closing, vn[2], want[2], lambda[2];
-            int hit = 0;
+            int hit = 0, apart = 1;
             if (cc->restitution == 0) continue;
             closing = -ga2d_dot(ga2d_vec_sub(ga2d__free_accel(w, b), ga2d__free_accel(w, a)), cc->normal);
             closing = closing > 0 ? closing : 0;
@@ -9279,11 +9328,14 @@ static void ga2d__restitute(ga2d__step_context *c)
                    as if a substep followed; the next step would then see a
                    braked approach), or within slop of it, collides now */
                 if (vn[k] < -threshold && gap + vn[k] * look - closing * look * look / 2 <= w->slop) hit = 1;
+                if (gap <= w->slop) apart = 0;
                 vi2 = vn[k] * vn[k] + 2 * closing * gap;
                 leave2 = cc->restitution * cc->restitution * vi2 - 2 * closing * gap;
                 want[k] = vn[k] < 0 ? (leave2 > 0 ? GA2D__SQRT(leave2) : 0) : vn[k]; /* leaving: as it is */
             }
-            if (!hit) continue;
+            /* a pair apart must touch within the step to collide: one
+               that does not would bounce off a surface it never meets */
+            if (!hit || (apart && !ga2d__meets_within(w, cc, look))) continue;
             busy = 1;
             lambda[0] = lambda[1] = 0;
             if (cc->count == 2 && (vn[0] >= 0 || vn[1] >= 0)) {

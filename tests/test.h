@@ -74,6 +74,7 @@ void suite_joints_extremes(void);
 void suite_queries(void);
 void suite_continuous(void);
 void suite_mover(void);
+void suite_restitution_fast(void);
 
 #ifdef __cplusplus
 }

@@ -101,6 +101,7 @@ int main(int argc, char **argv)
     suite_queries();
     suite_continuous();
     suite_mover();
+    suite_restitution_fast();
     suite_accepted();
     suite_determinism();
     suite_snapshot();
