@@ -3922,7 +3922,9 @@ static ga2d_ray_result ga2d__ray_geometry(const ga2d_geometry *g, ga2d_vec p, ga
         break;
     }
     }
-    if (!best.hit) return out;
+    /* a piece whose arithmetic overflowed (a shape's coordinates near the
+       real range) answers NaN, which every comparison above lets by: no hit */
+    if (!best.hit || !(best.t >= 0 && best.t <= len) || !ga2d__finite_vec(best.normal)) return out;
     out.hit = 1;
     out.fraction = best.t / len;
     if (out.fraction > 1) out.fraction = 1; /* t <= len; the quotient may round past */
@@ -4114,11 +4116,13 @@ static void ga2d__solve3(ga2d__simplex *s)
         s->v[0].a = d23_2 / (d23_1 + d23_2);
         s->v[1].a = d23_1 / (d23_1 + d23_2);
         s->count = 2;
-    } else { /* inside */
-        ga2d_real inv = 1 / (d123_1 + d123_2 + d123_3);
-        s->v[0].a = d123_1 * inv;
-        s->v[1].a = d123_2 * inv;
-        s->v[2].a = d123_3 * inv;
+    } else { /* inside: each vertex weighs its opposite part's area over the
+                whole's, n (the quotients of the wedges themselves: the
+                products d123 underflow to 0 for a triangle of 1e-10 m in
+                float, and 0 / 0 made the closest points NaN) */
+        s->v[0].a = n != 0 ? ga2d_wedge(w2, w3) / n : (ga2d_real)1 / 3;
+        s->v[1].a = n != 0 ? ga2d_wedge(w3, w1) / n : (ga2d_real)1 / 3;
+        s->v[2].a = n != 0 ? ga2d_wedge(w1, w2) / n : (ga2d_real)1 / 3;
     }
 }
 
@@ -4336,7 +4340,7 @@ static ga2d_ray_result ga2d__shape_cast(const ga2d_shape_proxy *a, const ga2d_sh
             closing = -ga2d_dot(u, r);
             if (!(closing > 0)) return out; /* apart along u, and not closing: never touch */
             lambda += gap / closing;
-            if (lambda > 1) return out;
+            if (!(lambda <= 1)) return out; /* past the end, or NaN (values near the real range overflowed) */
             shift = ga2d_vec_scale(r, lambda);
             nv = ga2d__sv_make(a->points, nv.ia, pb, nv.ib, shift);
             n = u;

@@ -29,6 +29,8 @@
    its bound. */
 #include "test.h"
 
+#include <float.h>
+
 #define TOL_K 8.0
 #define RAYS_PER_TYPE 2000
 #define WORLD_SHAPES 1000
@@ -1234,6 +1236,79 @@ static void list_bodies(void)
     ga2d_world_destroy(w);
 }
 
+
+/* Answers stay finite at the extremes (the fuzz harnesses' findings, kept
+   in tests/fuzz/regress/shapes/): every comparison a ray or a shape cast
+   makes lets a NaN by, so numbers that overflow the real range must not
+   come out as a hit; and GJK's weights inside a triangle must not be
+   0 / 0 when the triangle is tiny.  In double the same inputs do not
+   overflow and the checks hold as well. */
+static int ext_finite_vec(ga2d_vec v) { return (double)v.x - (double)v.x == 0 && (double)v.y - (double)v.y == 0; }
+
+static void answers_finite_at_extremes(void)
+{
+    {
+        /* a segment reaching -1e30, placed at 1e12: (a - p) ^ e overflows
+           in float, and t = NaN passed "t < 0 || t > best" */
+        ga2d_geometry g;
+        ga2d_transform x;
+        ga2d_ray_result r;
+        memset(&g, 0, sizeof g);
+        g.type = GA2D_SHAPE_SEGMENT;
+        g.as.segment.point1 = ga2d_vec_make((ga2d_real)-6.125, (ga2d_real)-7.88232422);
+        g.as.segment.point2 = ga2d_vec_make((ga2d_real)-1e30, (ga2d_real)-1e30);
+        x.p = ga2d_vec_make((ga2d_real)1e12, (ga2d_real)1e12);
+        x.q.c = (ga2d_real)0.999673843;
+        x.q.s = (ga2d_real)-0.0245406143;
+        CHECK(ga2d_ray_cast_shape(&g, x, ga2d_vec_make(0, (ga2d_real)0.0625),
+                                  ga2d_vec_make((ga2d_real)-10.5, (ga2d_real)ldexp(1.0, -129)), &r) == GA2D_OK);
+        CHECK(!r.hit || (r.fraction >= 0 && r.fraction <= 1 && ext_finite_vec(r.point) && ext_finite_vec(r.normal)));
+    }
+    {
+        /* a 1e-10 m pentagon around a point: each d123 = n * (w ^ w) is
+           about 1e-40 and underflowed to 0 in float */
+        ga2d_vec a[5], b0 = ga2d_vec_make(0, 0);
+        ga2d_shape_proxy pa, pb;
+        ga2d_distance_result d;
+        ga2d_simplex_cache cache;
+        ga2d_transform x = ga2d_transform_make(ga2d_vec_make(1000, 1000), ga2d_rotor_identity());
+        a[0] = ga2d_vec_make((ga2d_real)-ldexp(1.0, -39), 0);
+        a[1] = ga2d_vec_make((ga2d_real)6.912159733474255e-11, (ga2d_real)-1.5279510989785194e-10);
+        a[2] = ga2d_vec_make((ga2d_real)2.2737367544323206e-10, (ga2d_real)-1.1823431123048067e-10);
+        a[3] = ga2d_vec_make((ga2d_real)1.1641532182693481e-10, (ga2d_real)4.001776687800884e-11);
+        a[4] = ga2d_vec_make(0, (ga2d_real)1.1459633242338896e-10);
+        pa = ga2d_make_proxy(a, 5, 0);
+        pb = ga2d_make_proxy(&b0, 1, 0);
+        memset(&cache, 0, sizeof cache);
+        CHECK(ga2d_shape_distance(&pa, x, &pb, x, &cache, &d) == GA2D_OK);
+        CHECK(d.distance == 0 && ext_finite_vec(d.point_a) && ext_finite_vec(d.point_b));
+        /* the middle of the closest points: within the pentagon's size of B's point */
+        CHECK(fabs((double)d.point_a.x - 1000) < 1e-3 && fabs((double)d.point_a.y - 1000) < 1e-3);
+        CHECK(ga2d_shape_distance(&pa, ga2d_transform_identity(), &pb, ga2d_transform_identity(), NULL, &d) == GA2D_OK);
+        CHECK(ext_finite_vec(d.point_a) && fabs((double)d.point_a.x) < 1e-9 && fabs((double)d.point_a.y) < 1e-9);
+    }
+    {
+        /* a circle at -FLT_MAX swept by (-FLT_MAX, -FLT_MAX): gap / closing
+           is inf / inf, and lambda = NaN passed "lambda > 1" */
+        ga2d_vec a[3], c = ga2d_vec_make(-5, (ga2d_real)-FLT_MAX);
+        ga2d_shape_proxy pa, pb;
+        ga2d_transform xa, xb;
+        ga2d_ray_result r;
+        a[0] = ga2d_vec_make((ga2d_real)-0.03125, (ga2d_real)-1.78125);
+        a[1] = a[2] = ga2d_vec_make((ga2d_real)2.46875, (ga2d_real)1.1875);
+        pa = ga2d_make_proxy(a, 3, 0);
+        pb = ga2d_make_proxy(&c, 1, (ga2d_real)0.3046875);
+        xa.p = ga2d_vec_make((ga2d_real)-100000.0, (ga2d_real)-100001.53125);
+        xa.q.c = (ga2d_real)-0.6116048097610474;
+        xa.q.s = (ga2d_real)0.791163444519043;
+        xb.p = ga2d_vec_make((ga2d_real)-99990.25, (ga2d_real)-100003.84375);
+        xb.q.c = (ga2d_real)-0.9924795627593994;
+        xb.q.s = (ga2d_real)-0.12241063266992569;
+        CHECK(ga2d_shape_cast(&pa, xa, &pb, xb, ga2d_vec_make((ga2d_real)-FLT_MAX, (ga2d_real)-FLT_MAX), &r) == GA2D_OK);
+        CHECK(!r.hit || (r.fraction >= 0 && r.fraction <= 1));
+    }
+}
+
 void suite_queries(void)
 {
     test_run("queries: rays against brute force", rays_against_brute_force);
@@ -1246,4 +1321,5 @@ void suite_queries(void)
     test_run("queries: ray clip protocol", ray_clip_protocol);
     test_run("queries: refusals and locks", query_refusals);
     test_run("queries: list bodies", list_bodies);
+    test_run("queries: answers finite at the extremes", answers_finite_at_extremes);
 }

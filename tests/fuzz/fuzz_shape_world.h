@@ -108,6 +108,8 @@
 #define FSW_MAX_OPS 160
 #define FSW_SCRATCH 256
 #define FSW_MAX_JOINTS 48
+/* op 39 followed by a byte at least this is a query op (fsw_query_op) */
+#define FSW_QUERY_MARK 0xC0
 
 #ifdef FUZZ_VERBOSE
 #define FSW_TRACE(args) (fprintf args)
@@ -179,11 +181,17 @@ struct fsw_state {
     int contained;        /* a step contained a body (NOT_FINITE) */
     fsw_joint joints[FSW_MAX_JOINTS];
     int njoints, joints_lost; /* joints_lost: more joints than the table holds (the count is not checked) */
+    int ccd_known, ccd_on; /* the continuous switch as the harness set it (unknown after a load) */
 };
 
 static void fsw_round_trip(fsw_state *s);
 static void fsw_check_joints(fsw_state *s, int after_step);
 static void fsw_forget_joints(fsw_state *s);
+static void fsw_q_check_continuous(fsw_state *s);
+static ga2d_aabb fsw_q_shape_box(ga2d_world *w, ga2d_shape_id id, double *S);
+static int fsw_q_in_tree_box(ga2d_world *w, ga2d_shape_id id, double S);
+static ga2d_real fsw_q_never(ga2d_shape_id shape, ga2d_vec p, ga2d_vec n, ga2d_real f, void *ctx);
+static int fsw_q_never_overlap(ga2d_shape_id shape, void *ctx);
 
 /* ------------------------------------------------------------- buffers */
 static int fsw_save(const ga2d_world *w, fsw_buf *b)
@@ -420,6 +428,7 @@ static int fsw_step_dt(fsw_state *s, ga2d_real dt, ga2d_result *out)
     FUZZ_CHECK(!fw_step_too_large(b, (double)dt, 1.001));
     FUZZ_CHECK(ga2d_world_get_counters(b->w).step_count == steps_before + 1);
     fsw_check_step(s, r, failures);
+    fsw_q_check_continuous(s);
     /* the field pushed every tracked body (a torque field_k at least):
        those that slept wake at the step's end */
     if (s->field_on && fz_finite((double)b->field_k) && b->field_k != 0)
@@ -502,6 +511,24 @@ static void fsw_probe_locked(fsw_cb *cb, ga2d_shape_id a)
     FUZZ_CHECK(ga2d_world_snapshot_save(w, buf, sizeof buf) == GA2D_ERR_LOCKED);
     FUZZ_CHECK(ga2d_world_snapshot_load(w, buf, sizeof buf) == GA2D_ERR_LOCKED);
     FUZZ_CHECK(ga2d_world_draw(w, &dd) == GA2D_ERR_LOCKED);
+    {
+        /* queries, the continuous switch and bullets (issue 25) */
+        ga2d_ray_result rr;
+        ga2d_aabb box;
+        ga2d_shape_proxy px = ga2d_make_proxy(pts, 1, (ga2d_real)0.5);
+        box.lower = pts[0];
+        box.upper = pts[2];
+        FUZZ_CHECK(ga2d_world_cast_ray_closest_checked(w, pts[0], pts[2], f, &rr) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(!ga2d_world_cast_ray_closest(w, pts[0], pts[2], f).hit);
+        FUZZ_CHECK(ga2d_world_cast_ray(w, pts[0], pts[2], f, fsw_q_never, NULL) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_world_overlap_aabb(w, box, f, fsw_q_never_overlap, NULL) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_world_overlap_point(w, pts[1], f, fsw_q_never_overlap, NULL) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_world_overlap_shape(w, &px, ga2d_transform_identity(), f, fsw_q_never_overlap, NULL) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_world_cast_shape(w, &px, ga2d_transform_identity(), pts[2], f, fsw_q_never, NULL) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_world_enable_continuous(w, 1) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_body_set_bullet(w, body, 1) == GA2D_ERR_LOCKED);
+        FUZZ_CHECK(ga2d_world_get_bodies(w, NULL, 0) == before.body_count);
+    }
     {
         /* joints: every maker, the destroy and the setters (on a tracked
            joint, or a forged id: LOCKED comes first) */
@@ -1924,6 +1951,714 @@ static void fsw_forget_joints(fsw_state *s)
     }
 }
 
+/* ------------------------------------------------ world queries (issue 25) */
+/* Queries through the broadphase: rays (closest, and every hit with a
+   callback that sees all, ignores, clips, stops, or answers NaN, past 1
+   or a half by the shape's id), overlaps (box, point, shape), shape
+   casts, the body list, the continuous switch, bullets and fast bodies.
+   What is checked (the header's promises): a refusal is the documented
+   one (NOT_FINITE for a value not finite, the ray's end included;
+   INVALID_ARGUMENT for a zero translation, a NULL callback or world, a
+   box upside down); every shape a callback gets is live, seen by the
+   filter, no sensor, and given once; a hit's fraction lies in [0, the
+   ray's clip so far], its point and normal are finite, its normal unit
+   (a shape cast's may be 0 at fraction 0: cores overlapping), a ray
+   hit's point on the ray at its fraction; a callback is never called
+   after it said stop; inside a callback every change (step, makers,
+   destroys, setters, the continuous switch, bullets) and every other
+   query is LOCKED; the world's snapshot is the same bytes after a query
+   as before; counters: query_shapes <= query_nodes and <= shape_count.
+   Against an O(n) scan of every shape (ga2d_ray_cast_shape on each):
+   the all-hits ray with a callback that sees all gets exactly the shapes
+   that scan hits, with the same fractions, and the closest ray the
+   least of them; a box overlap gets every shape whose own box overlaps
+   it and no other (within the rounding of the boxes); a point overlap
+   only shapes within rounding of the point, never a segment, and every
+   circle that surely holds it; a shape overlap only shapes within
+   rounding of the proxy.  Tolerance: a point placed by a body's
+   transform rounds by a few eps of the sizes involved; 64 eps S (S the
+   1-norms of the ray, the body's position and the point) covers it with
+   a margin, FZ_TINY * 4 an underflow. */
+#define FSW_QMAX 256
+
+static double fsw_n1(ga2d_vec v) { return fabs((double)v.x) + fabs((double)v.y); }
+
+typedef struct fsw_q {
+    fsw_state *s;
+    ga2d_world *w;
+    ga2d_vec origin, translation;
+    ga2d_filter filter;
+    int mode;   /* 0 see all, 1 ignore all, 2 clip to each hit, 3 stop at the first, 4 mixed by id */
+    int meddle; /* try changes from inside */
+    int shape_cast, stopped, calls;
+    ga2d_real clip;
+    ga2d_shape_id seen[FSW_QMAX];
+    ga2d_real fraction[FSW_QMAX];
+    int nseen, lost;
+} fsw_q;
+
+static int fsw_q_index(const fsw_q *q, ga2d_shape_id id)
+{
+    int i;
+    for (i = 0; i < q->nseen; ++i)
+        if (ga2d_shape_id_equal(q->seen[i], id)) return i;
+    return -1;
+}
+
+static ga2d_real fsw_q_never(ga2d_shape_id shape, ga2d_vec p, ga2d_vec n, ga2d_real f, void *ctx)
+{
+    (void)shape;
+    (void)p;
+    (void)n;
+    (void)f;
+    (void)ctx;
+    FUZZ_CHECK(0); /* a refused query calls nothing */
+    return 0;
+}
+
+static int fsw_q_never_overlap(ga2d_shape_id shape, void *ctx)
+{
+    (void)shape;
+    (void)ctx;
+    FUZZ_CHECK(0);
+    return 0;
+}
+
+/* Every change from inside a query's callback: LOCKED, and nothing
+   changed (the snapshot after the query shows it). */
+static void fsw_q_meddle(fsw_q *q, ga2d_shape_id shape)
+{
+    ga2d_world *w = q->w;
+    ga2d_body_id body = ga2d_shape_body(w, shape);
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_circle c;
+    ga2d_ray_result rr;
+    ga2d_aabb box;
+    ga2d_shape_proxy px;
+    ga2d_vec o = ga2d_vec_make(0, 0), t = ga2d_vec_make(1, 0);
+    c.center = o;
+    c.radius = 1;
+    box.lower = ga2d_vec_make(-1, -1);
+    box.upper = ga2d_vec_make(1, 1);
+    px = ga2d_make_proxy(&o, 1, 1);
+    bd.type = GA2D_BODY_DYNAMIC;
+    FUZZ_CHECK(ga2d_world_step(w, (ga2d_real)(1.0 / 60)) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_id_is_null(ga2d_body_create(w, &bd)));
+    FUZZ_CHECK(ga2d_body_destroy(w, body) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_shape_id_is_null(ga2d_shape_create_circle(w, body, &sd, &c)));
+    FUZZ_CHECK(ga2d_shape_destroy(w, shape, 1) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_shape_set_filter(w, shape, ga2d_default_filter()) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_set_transform(w, body, o, ga2d_rotor_identity()) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_set_velocity(w, body, t) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_body_set_bullet(w, body, 1) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_enable_continuous(w, 0) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_set_gravity(w, t) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_compact(w) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_cast_ray_closest_checked(w, o, t, q->filter, &rr) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(!ga2d_world_cast_ray_closest(w, o, t, q->filter).hit);
+    FUZZ_CHECK(ga2d_world_cast_ray(w, o, t, q->filter, fsw_q_never, NULL) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_overlap_aabb(w, box, q->filter, fsw_q_never_overlap, NULL) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_overlap_point(w, o, q->filter, fsw_q_never_overlap, NULL) == GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_overlap_shape(w, &px, ga2d_transform_identity(), q->filter, fsw_q_never_overlap, NULL) ==
+               GA2D_ERR_LOCKED);
+    FUZZ_CHECK(ga2d_world_cast_shape(w, &px, ga2d_transform_identity(), t, q->filter, fsw_q_never, NULL) == GA2D_ERR_LOCKED);
+    /* reading is allowed */
+    FUZZ_CHECK(ga2d_world_get_bodies(w, NULL, 0) == ga2d_world_get_counters(w).body_count);
+    FUZZ_CHECK(ga2d_shape_is_valid(w, shape));
+}
+
+/* What every callback checks of the shape it gets. */
+static void fsw_q_shape(fsw_q *q, ga2d_shape_id shape)
+{
+    ga2d_world *w = q->w;
+    FUZZ_CHECK(!q->stopped);
+    FUZZ_CHECK(ga2d_shape_is_valid(w, shape));
+    FUZZ_CHECK(!fsw_lookup(q->s, shape).sensor);
+    FUZZ_CHECK(ga2d_should_collide(q->filter, ga2d_shape_filter(w, shape)));
+    FUZZ_CHECK(fsw_q_index(q, shape) < 0); /* once */
+    ++q->calls;
+    if (q->meddle && q->calls <= 2) fsw_q_meddle(q, shape);
+}
+
+static void fsw_q_remember(fsw_q *q, ga2d_shape_id shape, ga2d_real f)
+{
+    if (q->nseen == FSW_QMAX) {
+        q->lost = 1;
+        return;
+    }
+    q->seen[q->nseen] = shape;
+    q->fraction[q->nseen++] = f;
+}
+
+static double fsw_q_tol(double S) { return 64 * FZ_EPS * S + 4 * FZ_TINY; }
+
+static ga2d_real fsw_q_cast(ga2d_shape_id shape, ga2d_vec p, ga2d_vec n, ga2d_real f, void *ctx)
+{
+    static const double mixed[6] = {(double)NAN, 2, 0.5, -1, -2, 1}; /* -2: the hit's own fraction */
+    fsw_q *q = (fsw_q *)ctx;
+    double l2 = (double)n.x * (double)n.x + (double)n.y * (double)n.y;
+    ga2d_real go_on;
+    fsw_q_shape(q, shape);
+    FUZZ_CHECK(f >= 0 && f <= q->clip);
+    FUZZ_CHECK(fz_finite_vec(p) && fz_finite_vec(n));
+    /* |n|^2 of a normalized vector, or a rotated unit normal: a few eps */
+    FUZZ_CHECK(fabs(l2 - 1) <= 16 * FZ_EPS || (q->shape_cast && f == 0 && l2 == 0));
+    if (!q->shape_cast) {
+        /* on the ray at its fraction: the hit is o' + f' t' in the shape's
+           frame, placed back by the body's transform */
+        double S = fsw_n1(q->origin) + fsw_n1(q->translation) + fsw_n1(p) + fsw_n1(ga2d_body_position(q->w, ga2d_shape_body(q->w, shape)));
+        double tol = fsw_q_tol(S);
+        FUZZ_CHECK(fabs((double)q->origin.x + (double)f * (double)q->translation.x - (double)p.x) <= tol);
+        FUZZ_CHECK(fabs((double)q->origin.y + (double)f * (double)q->translation.y - (double)p.y) <= tol);
+    }
+    fsw_q_remember(q, shape, f);
+    switch (q->mode) {
+    case 0: go_on = 1; break;
+    case 1: go_on = -1; break;
+    case 2: go_on = f; break;
+    case 3: go_on = 0; break;
+    default: {
+        double m = mixed[shape.index1 % 6u];
+        go_on = m == -2 ? f : fz_narrow(m);
+        break;
+    }
+    }
+    /* the protocol, as the header states it */
+    if (go_on == 0) q->stopped = 1;
+    else if (go_on > 0 && go_on < q->clip) q->clip = go_on;
+    return go_on;
+}
+
+static int fsw_q_overlap(ga2d_shape_id shape, void *ctx)
+{
+    fsw_q *q = (fsw_q *)ctx;
+    fsw_q_shape(q, shape);
+    fsw_q_remember(q, shape, 0);
+    if (q->mode == 3) {
+        q->stopped = 1;
+        return 0;
+    }
+    return 1;
+}
+
+/* Every live shape in the world (bodies listed, then their shapes). */
+static int fsw_q_all_shapes(ga2d_world *w, ga2d_shape_id *out, int cap)
+{
+    ga2d_body_id bodies[FSW_QMAX];
+    int nb = ga2d_world_get_bodies(w, bodies, FSW_QMAX), i, n = 0;
+    if (nb > FSW_QMAX) return -1;
+    for (i = 0; i < nb; ++i) {
+        int k = ga2d_body_get_shapes(w, bodies[i], out + n, cap - n);
+        if (k > cap - n) return -1;
+        n += k;
+    }
+    return n;
+}
+
+static int fsw_q_sees(const fsw_q *q, ga2d_shape_id id)
+{
+    return !fsw_lookup(q->s, id).sensor && ga2d_should_collide(q->filter, ga2d_shape_filter(q->w, id));
+}
+
+/* The query's frame: the snapshot before, a fresh callback state. */
+static void fsw_q_begin(fsw_state *s, fsw_q *q, fsw_buf *before, int *saved)
+{
+    memset(before, 0, sizeof *before);
+    *saved = fsw_save(s->base.w, before);
+    q->s = s;
+    q->w = s->base.w;
+    q->clip = 1;
+    q->stopped = q->calls = q->nseen = q->lost = 0;
+}
+
+/* After it: the same bytes, counters within the shape count. */
+static void fsw_q_end(fsw_state *s, fsw_buf *before, int saved)
+{
+    ga2d_world_counters c = ga2d_world_get_counters(s->base.w);
+    fsw_buf after;
+    FUZZ_CHECK(c.query_shapes >= 0 && c.query_shapes <= c.shape_count && c.query_shapes <= c.query_nodes);
+    memset(&after, 0, sizeof after);
+    if (saved && fsw_save(s->base.w, &after)) FUZZ_CHECK(fsw_same(before, &after));
+    free(after.p);
+    free(before->p);
+}
+
+
+/* Whether a shape lies inside its broadphase box (its tree leaf's), with
+   room for the rounding of a query of size S (the tree's box tests round
+   too).  Not always so between steps: the box is fitted at a step's
+   start to what the body can reach at its start velocity, and a joint, a
+   contact, a spring or the field that speeds it up during the step can
+   carry it out (a rigid distance joint pulling a box 4 m in one step:
+   the next step re-fits it).  A query visits the tree, so it misses such
+   a shape; the harness requires completeness only for shapes inside
+   their boxes, unless FSW_STRICT_QUERIES is defined (then this open
+   finding fails). */
+static int fsw_q_in_tree_box(ga2d_world *w, ga2d_shape_id id, double S)
+{
+    double S0, tol;
+    ga2d_aabb own = fsw_q_shape_box(w, id, &S0), fat = ga2d_shape_fat_aabb(w, id);
+    tol = fsw_q_tol(S + S0);
+#ifdef FSW_STRICT_QUERIES
+    if (tol < 1) return 1;
+#endif
+    return (double)fat.lower.x <= (double)own.lower.x - tol && (double)fat.lower.y <= (double)own.lower.y - tol &&
+           (double)fat.upper.x >= (double)own.upper.x + tol && (double)fat.upper.y >= (double)own.upper.y + tol;
+}
+
+/* A ray: the closest hit and every hit, checked against the scan. */
+static void fsw_q_ray(fsw_state *s, ga2d_vec o, ga2d_vec t, ga2d_filter f, int mode, int meddle, int null_fn)
+{
+    ga2d_world *w = s->base.w;
+    fsw_q q, q2;
+    fsw_buf before;
+    int saved, nf, zero, i, n;
+    ga2d_vec end = ga2d_vec_add(o, t);
+    ga2d_ray_result closest, plain;
+    ga2d_result r, rc;
+    ga2d_shape_id all[FSW_QMAX];
+    memset(&q, 0, sizeof q);
+    q.origin = o;
+    q.translation = t;
+    q.filter = f;
+    q.mode = mode;
+    q.meddle = meddle;
+    nf = !fz_finite_vec(o) || !fz_finite_vec(t) || !fz_finite_vec(end);
+    zero = t.x == 0 && t.y == 0;
+    fsw_q_begin(s, &q, &before, &saved);
+    r = ga2d_world_cast_ray(w, o, t, f, null_fn ? NULL : fsw_q_cast, &q);
+    FSW_TRACE((stderr, "query ray (%g %g) + (%g %g) mode %d meddle %d null %d: %s, %d calls\n", (double)o.x, (double)o.y,
+               (double)t.x, (double)t.y, mode, meddle, null_fn, ga2d_result_string(r), q.calls));
+    FUZZ_CHECK(r == (nf ? GA2D_ERR_NOT_FINITE : zero || null_fn ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK));
+    FUZZ_CHECK(ga2d_world_cast_ray(NULL, o, t, f, fsw_q_never, NULL) == (nf ? GA2D_ERR_NOT_FINITE : zero ? GA2D_ERR_INVALID_ARGUMENT : GA2D_ERR_INVALID_ARGUMENT));
+    fsw_q_end(s, &before, saved);
+    if (r != GA2D_OK) FUZZ_CHECK(q.calls == 0);
+    if (mode == 3) FUZZ_CHECK(q.calls <= 1);
+    memset(&closest, 0x5A, sizeof closest);
+    q2 = q;
+    fsw_q_begin(s, &q2, &before, &saved);
+    rc = ga2d_world_cast_ray_closest_checked(w, o, t, f, &closest);
+    plain = ga2d_world_cast_ray_closest(w, o, t, f);
+    fsw_q_end(s, &before, saved);
+    FUZZ_CHECK(rc == (nf ? GA2D_ERR_NOT_FINITE : zero ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK));
+    FUZZ_CHECK(ga2d_world_cast_ray_closest_checked(w, o, t, f, NULL) != GA2D_OK);
+    if (rc != GA2D_OK) {
+        FUZZ_CHECK(!plain.hit && ga2d_shape_id_is_null(plain.shape));
+        return;
+    }
+    FUZZ_CHECK(memcmp(&plain, &closest, sizeof plain) == 0);
+    if (r != GA2D_OK || (mode != 0 && mode != 1) || q.lost) return;
+    /* the scan: every live shape the filter sees, its own cast */
+    n = fsw_q_all_shapes(w, all, FSW_QMAX);
+    if (n < 0) return;
+    {
+        int hits = 0, best = -1, stale = 0;
+        ga2d_real least = 2;
+        for (i = 0; i < n; ++i) {
+            ga2d_ray_result h;
+            int k;
+            if (!fsw_q_sees(&q, all[i])) continue;
+            {
+                ga2d_geometry g = ga2d_shape_geometry(w, all[i]);
+                if (ga2d_ray_cast_shape(&g, ga2d_body_transform(w, ga2d_shape_body(w, all[i])), o, t, &h) != GA2D_OK) continue;
+            }
+            k = fsw_q_index(&q, all[i]);
+            FSW_TRACE((stderr, "  scan: shape %u hit %d f %.9g; query %d f %.9g\n", all[i].index1, h.hit, (double)h.fraction, k,
+                       k >= 0 ? (double)q.fraction[k] : -1.0));
+#ifdef FUZZ_VERBOSE
+            {
+                ga2d_aabb fb = ga2d_shape_fat_aabb(w, all[i]);
+                double S0;
+                ga2d_aabb tb = fsw_q_shape_box(w, all[i], &S0);
+                ga2d_body_id bb = ga2d_shape_body(w, all[i]);
+                fprintf(stderr, "    type %d body %u (type %d awake %d) fat (%g %g)-(%g %g) own (%g %g)-(%g %g) point (%g %g)\n",
+                        (int)ga2d_shape_get_type(w, all[i]), bb.index1, (int)ga2d_body_get_type(w, bb), ga2d_body_is_awake(w, bb),
+                        (double)fb.lower.x, (double)fb.lower.y, (double)fb.upper.x, (double)fb.upper.y, (double)tb.lower.x,
+                        (double)tb.lower.y, (double)tb.upper.x, (double)tb.upper.y, (double)h.point.x, (double)h.point.y);
+            }
+#endif
+            if (!h.hit) {
+                FUZZ_CHECK(k < 0);
+                continue;
+            }
+            if (k < 0 && !fsw_q_in_tree_box(w, all[i], fsw_n1(o) + fsw_n1(t))) {
+                stale = 1; /* outside its box: the query cannot see it */
+                continue;
+            }
+            ++hits;
+            FUZZ_CHECK(k >= 0 && q.fraction[k] == h.fraction);
+            if (h.fraction < least) {
+                least = h.fraction;
+                best = i;
+            }
+        }
+        FUZZ_CHECK(q.nseen == hits);
+        FUZZ_CHECK(closest.hit == (hits > 0));
+        FSW_TRACE((stderr, "  closest: hit %d shape %u f %.9g; scan least %.9g of %d\n", closest.hit, closest.shape.index1,
+                   (double)closest.fraction, (double)least, hits));
+        if (hits > 0) {
+            /* one of the hits, with its own fraction; the least of them
+               unless the tree's clipped box tests may round it away (the
+               nearest shape within rounding of its box's edge: far out,
+               or carried out of its box by the step) */
+            int kc = fsw_q_index(&q, closest.shape);
+            FUZZ_CHECK(kc >= 0 && q.fraction[kc] == closest.fraction);
+            FUZZ_CHECK(ga2d_body_id_equal(closest.body, ga2d_shape_body(w, closest.shape)));
+            if (!stale && fsw_q_in_tree_box(w, all[best], fsw_n1(o) + fsw_n1(t))) FUZZ_CHECK(closest.fraction == least);
+        }
+    }
+}
+
+/* A shape's own box in double (the query's, not the broadphase's fat
+   one), and the size its placement rounds by. */
+static ga2d_aabb fsw_q_shape_box(ga2d_world *w, ga2d_shape_id id, double *S)
+{
+    ga2d_geometry g = ga2d_shape_geometry(w, id);
+    ga2d_transform x = ga2d_body_transform(w, ga2d_shape_body(w, id));
+    ga2d_vec pts[GA2D_MAX_POLYGON_VERTICES];
+    ga2d_real r = 0;
+    int n = 0, i;
+    ga2d_aabb b;
+    switch (g.type) {
+    case GA2D_SHAPE_CIRCLE: pts[n++] = g.as.circle.center; r = g.as.circle.radius; break;
+    case GA2D_SHAPE_CAPSULE: pts[n++] = g.as.capsule.center1; pts[n++] = g.as.capsule.center2; r = g.as.capsule.radius; break;
+    case GA2D_SHAPE_POLYGON:
+        for (i = 0; i < g.as.polygon.count; ++i) pts[n++] = g.as.polygon.vertices[i];
+        r = g.as.polygon.radius;
+        break;
+    case GA2D_SHAPE_SEGMENT: pts[n++] = g.as.segment.point1; pts[n++] = g.as.segment.point2; break;
+    default: pts[n++] = g.as.chain_segment.segment.point1; pts[n++] = g.as.chain_segment.segment.point2; break;
+    }
+    *S = fsw_n1(x.p) + (double)r;
+    for (i = 0; i < n; ++i) {
+        ga2d_vec p = ga2d_transform_apply(x, pts[i]);
+        if (i == 0) b.lower = b.upper = p;
+        if (p.x < b.lower.x) b.lower.x = p.x;
+        if (p.y < b.lower.y) b.lower.y = p.y;
+        if (p.x > b.upper.x) b.upper.x = p.x;
+        if (p.y > b.upper.y) b.upper.y = p.y;
+        if (fsw_n1(pts[i]) + fsw_n1(x.p) + (double)r > *S) *S = fsw_n1(pts[i]) + fsw_n1(x.p) + (double)r;
+    }
+    b.lower = ga2d_vec_sub(b.lower, ga2d_vec_make(r, r));
+    b.upper = ga2d_vec_add(b.upper, ga2d_vec_make(r, r));
+    return b;
+}
+
+static int fsw_q_boxes_meet(ga2d_aabb a, ga2d_aabb b, double grow)
+{
+    return (double)a.lower.x - grow <= (double)b.upper.x && (double)b.lower.x <= (double)a.upper.x + grow &&
+           (double)a.lower.y - grow <= (double)b.upper.y && (double)b.lower.y <= (double)a.upper.y + grow;
+}
+
+/* A box: every shape whose own box meets it, and no other. */
+static void fsw_q_aabb(fsw_state *s, ga2d_aabb box, ga2d_filter f, int mode, int meddle, int null_fn)
+{
+    ga2d_world *w = s->base.w;
+    fsw_q q;
+    fsw_buf before;
+    int saved, nf, bad, i, n;
+    ga2d_result r;
+    ga2d_shape_id all[FSW_QMAX];
+    memset(&q, 0, sizeof q);
+    q.filter = f;
+    q.mode = mode;
+    q.meddle = meddle;
+    nf = !fz_finite_vec(box.lower) || !fz_finite_vec(box.upper);
+    bad = !(box.lower.x <= box.upper.x && box.lower.y <= box.upper.y);
+    fsw_q_begin(s, &q, &before, &saved);
+    r = ga2d_world_overlap_aabb(w, box, f, null_fn ? NULL : fsw_q_overlap, &q);
+    fsw_q_end(s, &before, saved);
+    FSW_TRACE((stderr, "query box (%g %g)-(%g %g) mode %d: %s, %d calls\n", (double)box.lower.x, (double)box.lower.y,
+               (double)box.upper.x, (double)box.upper.y, mode, ga2d_result_string(r), q.calls));
+    FUZZ_CHECK(r == (nf ? GA2D_ERR_NOT_FINITE : bad || null_fn ? GA2D_ERR_INVALID_ARGUMENT : GA2D_OK));
+    if (r != GA2D_OK) {
+        FUZZ_CHECK(q.calls == 0);
+        return;
+    }
+    if (mode == 3) FUZZ_CHECK(q.calls <= 1);
+    n = fsw_q_all_shapes(w, all, FSW_QMAX);
+    for (i = 0; i < n; ++i) {
+        double S;
+        ga2d_aabb sb;
+        int k = fsw_q_index(&q, all[i]);
+        if (!fsw_q_sees(&q, all[i])) continue;
+        sb = fsw_q_shape_box(w, all[i], &S);
+        S += fsw_n1(box.lower) + fsw_n1(box.upper);
+        if (k >= 0) FUZZ_CHECK(fsw_q_boxes_meet(sb, box, fsw_q_tol(S)));
+        else if (mode != 3 && !q.lost && fsw_q_in_tree_box(w, all[i], S)) FUZZ_CHECK(!fsw_q_boxes_meet(sb, box, -fsw_q_tol(S)));
+    }
+}
+
+/* A point: only shapes within rounding of it (never a segment), and
+   every circle that surely holds it. */
+static void fsw_q_point(fsw_state *s, ga2d_vec p, ga2d_filter f, int mode, int meddle)
+{
+    ga2d_world *w = s->base.w;
+    fsw_q q;
+    fsw_buf before;
+    int saved, i, n;
+    ga2d_result r;
+    ga2d_shape_id all[FSW_QMAX];
+    ga2d_shape_proxy pp = ga2d_make_proxy(&p, 1, 0);
+    memset(&q, 0, sizeof q);
+    q.filter = f;
+    q.mode = mode;
+    q.meddle = meddle;
+    fsw_q_begin(s, &q, &before, &saved);
+    r = ga2d_world_overlap_point(w, p, f, fsw_q_overlap, &q);
+    fsw_q_end(s, &before, saved);
+    FUZZ_CHECK(r == (fz_finite_vec(p) ? GA2D_OK : GA2D_ERR_NOT_FINITE));
+    if (r != GA2D_OK) return;
+    n = fsw_q_all_shapes(w, all, FSW_QMAX);
+    for (i = 0; i < n; ++i) {
+        ga2d_geometry g = ga2d_shape_geometry(w, all[i]);
+        ga2d_transform x = ga2d_body_transform(w, ga2d_shape_body(w, all[i]));
+        ga2d_shape_proxy sp = ga2d_shape_proxy_of(&g);
+        ga2d_distance_result d;
+        int k = fsw_q_index(&q, all[i]);
+        double tol = fsw_q_tol(fsw_n1(p) + fsw_n1(x.p) + 2 * FSW_QMAX);
+        if (!fsw_q_sees(&q, all[i])) continue;
+        if (k >= 0) {
+            FUZZ_CHECK(g.type != GA2D_SHAPE_SEGMENT && g.type != GA2D_SHAPE_CHAIN_SEGMENT);
+            if (ga2d_shape_distance(&sp, x, &pp, ga2d_transform_identity(), NULL, &d) == GA2D_OK)
+                FUZZ_CHECK((double)d.distance <= tol);
+        } else if (mode != 3 && !q.lost && g.type == GA2D_SHAPE_CIRCLE && fsw_q_in_tree_box(w, all[i], fsw_n1(p))) {
+            ga2d_vec c = ga2d_transform_apply(x, g.as.circle.center);
+            double dx = (double)p.x - (double)c.x, dy = (double)p.y - (double)c.y;
+            FUZZ_CHECK(!(hypot(dx, dy) < (double)g.as.circle.radius - tol));
+        }
+    }
+}
+
+/* A proxy from the input: a circle, a capsule, a box or any points;
+   ordinary sizes, or anything. */
+static ga2d_shape_proxy fsw_q_proxy(fsw_state *s, int *clean)
+{
+    fw_state *b = &s->base;
+    ga2d_vec pts[GA2D_MAX_POLYGON_VERTICES + 1];
+    unsigned k = fz_u8(&b->rd);
+    int n, i, wild = k >= 224;
+    ga2d_real r;
+    if (k % 4 == 0) n = 1;
+    else if (k % 4 == 1) n = 2;
+    else if (k % 4 == 2) n = 4;
+    else n = (int)(fz_u8(&b->rd) % (GA2D_MAX_POLYGON_VERTICES + 2));
+    for (i = 0; i < n; ++i) pts[i] = wild ? fw_vec(b, 2, 1) : fsw_vec(s, 0);
+    if (k % 4 == 2 && !wild) {
+        ga2d_real hx = fz_narrow((double)(1 + fz_u8(&b->rd) % 64) / 32), hy = fz_narrow((double)(1 + fz_u8(&b->rd) % 64) / 32);
+        pts[0] = ga2d_vec_make(-hx, -hy);
+        pts[1] = ga2d_vec_make(hx, -hy);
+        pts[2] = ga2d_vec_make(hx, hy);
+        pts[3] = ga2d_vec_make(-hx, hy);
+    }
+    r = wild ? fz_real(&b->rd, 1) : fz_narrow((double)fz_u8(&b->rd) / 256);
+    *clean = !wild && n >= 1;
+    return ga2d_make_proxy(pts, n, r);
+}
+
+static int fsw_q_proxy_refused(const ga2d_shape_proxy *p)
+{
+    int i;
+    if (p->count < 1 || p->count > GA2D_MAX_POLYGON_VERTICES || !fz_finite((double)p->radius) || p->radius < 0) return 1;
+    for (i = 0; i < p->count; ++i)
+        if (!fz_finite_vec(p->points[i])) return 1;
+    return 0;
+}
+
+/* A shape overlap or a shape cast. */
+static void fsw_q_shape_query(fsw_state *s, int cast, ga2d_filter f, int mode, int meddle)
+{
+    fw_state *b = &s->base;
+    ga2d_world *w = b->w;
+    fsw_q q;
+    fsw_buf before;
+    int saved, clean, i, n, wild = fz_u8(&b->rd) < 32;
+    ga2d_shape_proxy px = fsw_q_proxy(s, &clean);
+    ga2d_transform x;
+    ga2d_vec t = fw_vec(b, 8, wild);
+    ga2d_result r;
+    ga2d_shape_id all[FSW_QMAX];
+    x.p = fw_vec(b, 4, wild);
+    x.q = ga2d_rotor_from_angle(fw_val(b, 4, 0));
+    if (wild && fz_u8(&b->rd) < 64) {
+        x.q.c = fz_real(&b->rd, 1);
+        x.q.s = fz_real(&b->rd, 1);
+    }
+    memset(&q, 0, sizeof q);
+    q.filter = f;
+    q.mode = mode;
+    q.meddle = meddle;
+    q.shape_cast = cast;
+    fsw_q_begin(s, &q, &before, &saved);
+    r = cast ? ga2d_world_cast_shape(w, &px, x, t, f, fsw_q_cast, &q) : ga2d_world_overlap_shape(w, &px, x, f, fsw_q_overlap, &q);
+    fsw_q_end(s, &before, saved);
+    FSW_TRACE((stderr, "query shape cast %d count %d r %g at (%g %g) t (%g %g): %s, %d calls\n", cast, px.count, (double)px.radius,
+               (double)x.p.x, (double)x.p.y, (double)t.x, (double)t.y, ga2d_result_string(r), q.calls));
+    FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT);
+    if (fsw_q_proxy_refused(&px) || !fz_finite_vec(x.p) || !fw_rotor_ok(x.q) || (cast && !fz_finite_vec(t)))
+        FUZZ_CHECK(r == GA2D_ERR_NOT_FINITE || r == GA2D_ERR_INVALID_ARGUMENT);
+    else if (!wild)
+        FUZZ_CHECK(r == GA2D_OK); /* a unit rotor, ordinary sizes */
+    else
+        FUZZ_CHECK(r == GA2D_OK || r == GA2D_ERR_INVALID_ARGUMENT || r == GA2D_ERR_NOT_FINITE || r == GA2D_ERR_TOO_LARGE);
+    FUZZ_CHECK(ga2d_world_overlap_shape(w, &px, x, f, NULL, NULL) != GA2D_OK);
+    FUZZ_CHECK(ga2d_world_overlap_shape(w, NULL, x, f, fsw_q_never_overlap, NULL) == GA2D_ERR_INVALID_ARGUMENT);
+    if (r != GA2D_OK) {
+        FUZZ_CHECK(q.calls == 0);
+        return;
+    }
+    if (mode == 3) FUZZ_CHECK(q.calls <= 1);
+    if (cast || !clean) return;
+    /* an overlap: only shapes within rounding of the proxy */
+    n = fsw_q_all_shapes(w, all, FSW_QMAX);
+    for (i = 0; i < n; ++i) {
+        ga2d_geometry g;
+        ga2d_shape_proxy sp;
+        ga2d_distance_result d;
+        ga2d_transform xs;
+        if (fsw_q_index(&q, all[i]) < 0) continue;
+        g = ga2d_shape_geometry(w, all[i]);
+        sp = ga2d_shape_proxy_of(&g);
+        xs = ga2d_body_transform(w, ga2d_shape_body(w, all[i]));
+        if (ga2d_shape_distance(&sp, xs, &px, x, NULL, &d) == GA2D_OK)
+            FUZZ_CHECK((double)d.distance <= fsw_q_tol(fsw_n1(xs.p) + fsw_n1(x.p) + 2 * FSW_QMAX));
+    }
+}
+
+/* The body list: every live body once, in id index order; a short
+   buffer gets the first ones; NULL counts. */
+static void fsw_q_bodies(fsw_state *s, int cap)
+{
+    ga2d_world *w = s->base.w;
+    ga2d_body_id ids[FSW_QMAX], some[FSW_QMAX];
+    int n = ga2d_world_get_bodies(w, ids, FSW_QMAX), i, k;
+    FUZZ_CHECK(n == ga2d_world_get_counters(w).body_count && n == ga2d_world_body_count(w));
+    FUZZ_CHECK(ga2d_world_get_bodies(w, NULL, 0) == n && ga2d_world_get_bodies(NULL, ids, FSW_QMAX) == 0);
+    for (i = 0; i < n && i < FSW_QMAX; ++i) {
+        FUZZ_CHECK(ga2d_body_is_valid(w, ids[i]));
+        if (i > 0) FUZZ_CHECK(ids[i].index1 > ids[i - 1].index1);
+    }
+    for (i = 0; i < s->base.nids; ++i)
+        if (ga2d_body_is_valid(w, s->base.ids[i]) && n <= FSW_QMAX) {
+            int found = 0;
+            for (k = 0; k < n; ++k) found |= ga2d_body_id_equal(ids[k], s->base.ids[i]);
+            FUZZ_CHECK(found);
+        }
+    if (cap > FSW_QMAX) cap = FSW_QMAX;
+    memset(some, 0, sizeof some);
+    FUZZ_CHECK(ga2d_world_get_bodies(w, some, cap) == n);
+    for (i = 0; i < cap && i < n; ++i) FUZZ_CHECK(ga2d_body_id_equal(some[i], ids[i]));
+    for (; i < cap; ++i) FUZZ_CHECK(ga2d_body_id_is_null(some[i])); /* past the count: untouched */
+}
+
+/* The world's continuous counters after a step. */
+static void fsw_q_check_continuous(fsw_state *s)
+{
+    ga2d_world_counters c = ga2d_world_get_counters(s->base.w);
+    FUZZ_CHECK(c.continuous_hits >= 0 && c.continuous_hits <= c.continuous_bodies);
+    FUZZ_CHECK(c.continuous_bodies <= c.body_count);
+    if (s->ccd_known && !s->ccd_on) FUZZ_CHECK(c.continuous_bodies == 0 && c.continuous_hits == 0);
+}
+
+static ga2d_filter fsw_q_filter(fsw_state *s)
+{
+    fz_reader *r = &s->base.rd;
+    ga2d_filter f = ga2d_default_filter();
+    unsigned k = fz_u8(r);
+    if (k < 192) return f;
+    f.category_bits = (uint32_t)1u << (k % 4);
+    f.mask_bits = fz_u8(r) < 128 ? 0xFFFFFFFFu : (uint32_t)fz_u8(r);
+    f.group_index = (int32_t)(int8_t)fz_u8(r) % 3;
+    return f;
+}
+
+/* One query operation. */
+static void fsw_query_op(fsw_state *s)
+{
+    fw_state *b = &s->base;
+    ga2d_world *w = b->w;
+    fz_reader *rd = &b->rd;
+    unsigned k = fz_u8(rd), how = fz_u8(rd);
+    int mode = (int)(how % 5), meddle = (how >> 3) & 1, wild = ((how >> 4) & 3) == 3;
+    ga2d_filter f = fsw_q_filter(s);
+    switch (k % 10) {
+    case 0: case 1: {
+        ga2d_vec o = fw_vec(b, 4, wild), t = fw_vec(b, 8, wild);
+        if ((how >> 6) == 3) t = ga2d_vec_make(0, 0);
+        fsw_q_ray(s, o, t, f, mode, meddle, (how >> 6) == 2 && (how & 4));
+        break;
+    }
+    case 2: {
+        ga2d_aabb box;
+        box.lower = fw_vec(b, 4, wild);
+        box.upper = ga2d_vec_add(box.lower, ga2d_vec_make(fw_pos(b, 8, wild), fw_pos(b, 8, wild)));
+        if ((how >> 6) == 3) {
+            ga2d_vec v = box.lower;
+            box.lower = box.upper;
+            box.upper = v;
+        }
+        fsw_q_aabb(s, box, f, mode, meddle, (how >> 6) == 2 && (how & 4));
+        break;
+    }
+    case 3: fsw_q_point(s, fw_vec(b, 4, wild), f, mode, meddle); break;
+    case 4: case 5: fsw_q_shape_query(s, (int)(k % 10) == 5, f, mode, meddle); break;
+    case 6: fsw_q_bodies(s, (int)fz_u8(rd) % 64); break;
+    case 7: {
+        int on = (int)(how % 4) - 1;
+        ga2d_result r = ga2d_world_enable_continuous(w, on);
+        FUZZ_CHECK(r == GA2D_OK);
+        FUZZ_CHECK(ga2d_world_enable_continuous(NULL, on) == GA2D_ERR_INVALID_ARGUMENT);
+        s->ccd_known = 1;
+        s->ccd_on = on != 0;
+        break;
+    }
+    case 8: {
+        ga2d_body_id id = fw_id(b);
+        int on = (int)(how % 4) - 1, valid = ga2d_body_is_valid(w, id);
+        ga2d_result r;
+        fsw_guard gd;
+        fsw_guard_begin(s, &gd);
+        r = ga2d_body_set_bullet(w, id, on);
+        FUZZ_CHECK(r == (valid ? GA2D_OK : GA2D_ERR_STALE_ID));
+        fsw_guard_end(s, &gd, r);
+        FUZZ_CHECK(ga2d_body_is_bullet(w, id) == (valid && on != 0));
+        if (fz_u8(rd) < 32) fsw_round_trip(s);
+        break;
+    }
+    default: {
+        /* a fast body: 10 m/s to the speed cap, a bullet or not, then a step */
+        static const double speeds[6] = {10, 50, 100, 300, 1000, GA2D_MAX_LINEAR_SPEED};
+        ga2d_body_id id = fw_id(b);
+        double a = (double)fz_u8(rd) * (6.283185307179586 / 256), v = speeds[how % 6];
+        if (ga2d_body_get_type(w, id) == GA2D_BODY_DYNAMIC) {
+            FUZZ_CHECK(ga2d_body_set_velocity(w, id, ga2d_vec_make(fz_narrow(v * cos(a)), fz_narrow(v * sin(a)))) == GA2D_OK);
+            if (how & 64) FUZZ_CHECK(ga2d_body_set_bullet(w, id, 1) == GA2D_OK);
+        }
+        fsw_step(s);
+        break;
+    }
+    }
+}
+
+/* At the end of every input, reading no byte: rays between the tracked
+   bodies, a box around each, the body list. */
+static void fsw_query_final(fsw_state *s)
+{
+    ga2d_world *w = s->base.w;
+    int i;
+    fsw_q_bodies(s, 3);
+    for (i = 0; i < s->base.nids && i < 6; ++i) {
+        ga2d_body_id a = s->base.ids[i], c = s->base.ids[(i + 1) % s->base.nids];
+        ga2d_vec o = ga2d_body_position(w, a), t = ga2d_vec_sub(ga2d_body_position(w, c), o);
+        if (!ga2d_body_is_valid(w, a) || !ga2d_body_is_valid(w, c)) continue;
+        if (t.x == 0 && t.y == 0) t = ga2d_vec_make(1, 0);
+        fsw_q_ray(s, o, t, ga2d_default_filter(), i & 1, 0, 0);
+        fsw_q_aabb(s, ga2d_body_fat_aabb(w, a), ga2d_default_filter(), 0, 0, 0);
+        fsw_q_point(s, o, ga2d_default_filter(), 0, 0);
+    }
+}
+
 /* ------------------------------------------------------------ one input */
 static int fuzz_shape_world_one(const uint8_t *data, size_t size)
 {
@@ -2014,7 +2749,14 @@ static int fuzz_shape_world_one(const uint8_t *data, size_t size)
             /* one of the next few allocations fails (whichever call makes it) */
             b->alloc.fail_at = b->alloc.attempts + 1 + fz_pick(&b->rd, 4);
         } else if (op == 38) fsw_joint_op(s);
-        else fsw_shape_create(s);
+        else if (fz_more(&b->rd) && b->rd.p[b->rd.i] >= FSW_QUERY_MARK) {
+            /* the query ops (issue 25): op 39 and a marked byte, so older
+               inputs (op 39 made a shape) keep their meaning */
+            ++b->rd.i;
+            fsw_query_op(s);
+        } else fsw_shape_create(s);
+        /* a load may bring back another continuous switch */
+        if (op >= 33 && op <= 35) s->ccd_known = 0;
         /* a destroyed body's joints are stale */
         if (op >= 23 && op < 30 && s->njoints > 0) fsw_check_joints(s, 0);
     }
@@ -2024,6 +2766,7 @@ static int fuzz_shape_world_one(const uint8_t *data, size_t size)
         (void)fsw_step_dt(s, (ga2d_real)(1.0 / 60), &r);
     }
     fsw_queries(s);
+    fsw_query_final(s);
     fsw_round_trip(s);
     ga2d_world_destroy(b->w);
     /* every byte back, each block freed with its own size */

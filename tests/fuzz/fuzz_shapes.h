@@ -73,6 +73,11 @@
 #define FG_MAXV GA2D_MAX_POLYGON_VERTICES
 #define FG_UNIT_TOL 1e-4 /* the collider's |q|^2 and |n|^2 tolerance, and its perpendicularity one */
 #define FG_SLOP ((double)GA2D_LINEAR_SLOP)
+/* GJK's answers in the two argument orders, warm or cold, agree to the
+   rounding and its progress test, and, for shapes under 1e-13 m in float
+   (its simplex's dot products near 1e-30), to this: a billionth of the
+   slop, beneath any length the library acts on */
+#define FG_GJK_FLOOR (1e-9 * FG_SLOP)
 
 #ifdef GA2D_DOUBLE
 #define FG_NEXT(x) nextafter((x), 1e300)
@@ -1220,6 +1225,314 @@ static void fg_makers(fz_reader *r)
     FUZZ_CHECK(ga2d_polygon_regular_checked(3, 1, NULL) == GA2D_ERR_INVALID_ARGUMENT);
 }
 
+
+/* ------------------------------------------------- queries (issue 25) */
+/* The world-free queries on the two geometries, read after everything
+   above (so older inputs keep their meaning): a ray cast through the typed
+   functions and ga2d_ray_cast_shape, GJK distance with a cache (zeroed,
+   reused, or garbage), a shape cast and time of impact.  Tolerances:
+   S is the size of what is placed (1-norms of origins, translations and
+   the proxies' reach); a point placed by a transform, or moved along a
+   ray, rounds by a few eps of S per operation, and a rotor off unit by
+   dq scales it by up to dq: 64 eps S + 4 dq S covers every chain of
+   operations here with a margin of more than 4, and FZ_TINY * 4 a
+   result that underflows.  Checks against exact geometry run only for
+   "ordinary" inputs (every value finite, S < 1e6, rotors unit within
+   1e-6), where that bound is meaningful. */
+static double fg_proxy_reach(const ga2d_shape_proxy *p)
+{
+    double m = 0;
+    int i;
+    for (i = 0; i < p->count && i < FG_MAXV; ++i)
+        if (fg_norm1(p->points[i]) > m) m = fg_norm1(p->points[i]);
+    return m + fabs((double)p->radius);
+}
+
+static int fg_finite_proxy(const ga2d_shape_proxy *p)
+{
+    int i;
+    for (i = 0; i < p->count && i < FG_MAXV; ++i)
+        if (!fz_finite_vec(p->points[i])) return 0;
+    return fz_finite((double)p->radius);
+}
+
+/* A proxy: a shape's own (through ga2d_shape_proxy_of), or by hand from
+   any bytes (a count from -1 to FG_MAXV + 1, any radius). */
+static ga2d_shape_proxy fg_proxy(fz_reader *r, const ga2d_geometry *g)
+{
+    ga2d_shape_proxy p;
+    ga2d_vec pts[FG_MAXV + 2];
+    int n, i;
+    unsigned k = fz_u8(r);
+    if (k < 192) return ga2d_shape_proxy_of(g);
+    n = (int)(fz_u8(r) % (FG_MAXV + 3)) - 1;
+    for (i = 0; i < FG_MAXV + 2; ++i) {
+        pts[i].x = k < 240 ? fz_narrow((double)(int8_t)fz_u8(r) / 32) : fz_real(r, 2);
+        pts[i].y = k < 240 ? fz_narrow((double)(int8_t)fz_u8(r) / 32) : fz_real(r, 2);
+    }
+    p = ga2d_make_proxy(pts, n, k < 240 ? fz_narrow((double)fz_u8(r) / 256) : fz_real(r, 1));
+    FUZZ_CHECK(p.count == (n < 1 ? 0 : n > FG_MAXV ? FG_MAXV : n));
+    return p;
+}
+
+/* Whether a proxy is refused: a count out of range or a negative radius
+   (INVALID_ARGUMENT), a value not finite (NOT_FINITE). */
+static int fg_proxy_errs(const ga2d_shape_proxy *p)
+{
+    return p->count < 1 || p->count > FG_MAXV || !fg_finite_proxy(p) || p->radius < 0;
+}
+
+/* A transform as the collider reads it: 2 refused (values not finite, a
+   rotor off unit past its tolerance), 1 either (within rounding of the
+   tolerance), 0 accepted. */
+static int fg_xf_bad(ga2d_transform x, double dev)
+{
+    if (!fz_finite_vec(x.p) || !fz_finite((double)x.q.c) || !fz_finite((double)x.q.s)) return 2;
+    if (dev > 0.9 * FG_UNIT_TOL && dev < 1.1 * FG_UNIT_TOL) return 1;
+    return dev > FG_UNIT_TOL ? 2 : 0;
+}
+
+/* An answer: with no reason to refuse, OK; with one, a named refusal
+   (NOT_FINITE, INVALID_ARGUMENT or TOO_LARGE: which reason is reported
+   first is the library's order); within rounding of one, either. */
+static void fg_check_errs(ga2d_result r, int must_fail, int may_fail)
+{
+    FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT);
+    if (r != GA2D_OK) FUZZ_CHECK(r == GA2D_ERR_NOT_FINITE || r == GA2D_ERR_INVALID_ARGUMENT || r == GA2D_ERR_TOO_LARGE);
+    if (must_fail) FUZZ_CHECK(r != GA2D_OK);
+    else if (!may_fail) FUZZ_CHECK(r == GA2D_OK);
+}
+
+static int fg_unit_or_zero(ga2d_vec n, double tol, int zero_ok)
+{
+    double l2 = (double)n.x * (double)n.x + (double)n.y * (double)n.y;
+    return fabs(l2 - 1) <= tol || (zero_ok && l2 == 0);
+}
+
+/* A ray hit's promises: fraction in [0, 1], a unit normal (within the
+   polygon normals' and the rotor's own deviation), and the point on the
+   ray at that fraction. */
+static void fg_check_ray_hit(const ga2d_ray_result *h, ga2d_vec o, ga2d_vec t, double ntol, double ptol, int ordinary)
+{
+    if (!h->hit) {
+        FUZZ_CHECK(h->fraction == 0 && h->point.x == 0 && h->point.y == 0 && h->normal.x == 0 && h->normal.y == 0);
+        return;
+    }
+    FG_TRACE((stderr, "ray hit o (%.9g %.9g) t (%.9g %.9g): f %.9g p (%.9g %.9g) n (%.9g %.9g)\n", (double)o.x, (double)o.y,
+              (double)t.x, (double)t.y, (double)h->fraction, (double)h->point.x, (double)h->point.y, (double)h->normal.x,
+              (double)h->normal.y));
+    FUZZ_CHECK(h->fraction >= 0 && h->fraction <= 1);
+    FUZZ_CHECK(fz_finite_vec(h->point) && fz_finite_vec(h->normal));
+    if (!ordinary) return;
+    FUZZ_CHECK(fg_unit_or_zero(h->normal, ntol, 0));
+    FUZZ_CHECK(fabs((double)o.x + (double)h->fraction * (double)t.x - (double)h->point.x) <= ptol);
+    FUZZ_CHECK(fabs((double)o.y + (double)h->fraction * (double)t.y - (double)h->point.y) <= ptol);
+}
+
+static void fg_queries(fz_reader *r, const fg_side *A, const fg_side *B)
+{
+    const ga2d_geometry *a = A->g;
+    ga2d_vec o, t;
+    ga2d_shape_proxy pa, pb;
+    ga2d_simplex_cache cache;
+    ga2d_distance_result d1, d2;
+    ga2d_ray_result h, typed;
+    ga2d_result res;
+    double S, ptol, dtol, ntol;
+    unsigned wild = fz_u8(r);
+    int ordinary, must, may;
+    o.x = wild & 1 ? fz_real(r, 4) : fz_narrow((double)(int8_t)fz_u8(r) / 16);
+    o.y = wild & 1 ? fz_real(r, 4) : fz_narrow((double)(int8_t)fz_u8(r) / 16);
+    t.x = wild & 2 ? fz_real(r, 4) : fz_narrow((double)(int8_t)fz_u8(r) / 8);
+    t.y = wild & 2 ? fz_real(r, 4) : fz_narrow((double)(int8_t)fz_u8(r) / 8);
+    pa = ga2d_shape_proxy_of(a);
+    pb = ga2d_shape_proxy_of(B->g);
+    S = fg_norm1(A->x.p) + fg_norm1(B->x.p) + fg_norm1(o) + fg_norm1(t) + A->in->reach + B->in->reach;
+    ordinary = !A->in->nf && !A->in->inv && !B->in->nf && !B->in->inv && fz_finite(S) && S < 1e6 && A->dq < 1e-6 &&
+               B->dq < 1e-6 && fz_finite_vec(o) && fz_finite_vec(t);
+    ptol = (64 * FZ_EPS + 4 * (A->dq + B->dq)) * S + 4 * FZ_TINY;
+    /* |n|^2 off 1: a normal normalized (a few eps), a polygon's own
+       normals accepted within the collider's tolerance, the rotor's */
+    ntol = 16 * FZ_EPS + 2 * A->in->ndev + 2 * A->dq;
+
+    /* rays: the typed form in the shape's frame, the placed form in the
+       world's; the same bits when the placement is the identity */
+    res = ga2d_ray_cast_shape(a, A->x, o, t, &h);
+    fg_check_errs(res,
+                  A->in->nf || A->in->inv || !fz_finite_vec(o) || !fz_finite_vec(t) || (t.x == 0 && t.y == 0) ||
+                      fg_xf_bad(A->x, A->dq) == 2,
+                  A->in->maybe || fg_xf_bad(A->x, A->dq) == 1);
+    if (res == GA2D_OK) fg_check_ray_hit(&h, o, t, ntol, ptol, ordinary);
+    FUZZ_CHECK(ga2d_ray_cast_shape(a, A->x, o, t, NULL) != GA2D_OK);
+    switch (a->type) {
+    case GA2D_SHAPE_CIRCLE: typed = ga2d_ray_cast_circle(&a->as.circle, o, t); break;
+    case GA2D_SHAPE_CAPSULE: typed = ga2d_ray_cast_capsule(&a->as.capsule, o, t); break;
+    case GA2D_SHAPE_POLYGON: typed = ga2d_ray_cast_polygon(&a->as.polygon, o, t); break;
+    case GA2D_SHAPE_SEGMENT: typed = ga2d_ray_cast_segment(&a->as.segment, o, t, 0); break;
+    case GA2D_SHAPE_CHAIN_SEGMENT: typed = ga2d_ray_cast_segment(&a->as.chain_segment.segment, o, t, 1); break;
+    default: typed = ga2d_ray_cast_circle(NULL, o, t); break;
+    }
+    if (a->type < 0 || a->type >= GA2D_SHAPE_TYPE_COUNT) FUZZ_CHECK(!typed.hit);
+    {
+        ga2d_transform id = ga2d_transform_identity();
+        ga2d_ray_result h0;
+        if (ga2d_ray_cast_shape(a, id, o, t, &h0) == GA2D_OK) {
+            FG_TRACE((stderr, "ray type %d o (%g %g) t (%g %g): placed hit %d f %.9g p (%.9g %.9g) n (%.9g %.9g); typed hit %d f %.9g p (%.9g %.9g) n (%.9g %.9g)\n",
+                      (int)a->type, (double)o.x, (double)o.y, (double)t.x, (double)t.y, h0.hit, (double)h0.fraction, (double)h0.point.x,
+                      (double)h0.point.y, (double)h0.normal.x, (double)h0.normal.y, typed.hit, (double)typed.fraction,
+                      (double)typed.point.x, (double)typed.point.y, (double)typed.normal.x, (double)typed.normal.y));
+            /* equal values (the identity's turn may make a -0 a +0) */
+            FUZZ_CHECK(h0.hit == typed.hit && h0.fraction == typed.fraction && h0.point.x == typed.point.x &&
+                       h0.point.y == typed.point.y && h0.normal.x == typed.normal.x && h0.normal.y == typed.normal.y);
+        }
+        else if (a->type != GA2D_SHAPE_CHAIN_SEGMENT) FUZZ_CHECK(!typed.hit); /* the typed form has no ghosts to refuse */
+        fg_check_ray_hit(&typed, o, t, 16 * FZ_EPS + 2 * A->in->ndev, ptol, ordinary);
+    }
+    if (ordinary && res == GA2D_OK && h.hit &&
+        fabs((double)h.normal.x * (double)t.x + (double)h.normal.y * (double)t.y) > 1e-6 * fg_len(fg_d(t))) {
+        /* the hit point is on the shape: within the rounding of it (unless
+           the ray runs along the surface within rounding, where where it
+           meets it is ill-conditioned: a segment tilted by 1e-313 rad) */
+        ga2d_shape_proxy pt = ga2d_make_proxy(&h.point, 1, 0);
+        ga2d_distance_result dp;
+        /* a polygon's faces are its normals' half-planes, which the collider
+           takes within FG_UNIT_TOL of its edges' (tilted by up to that), and
+           GJK's are its vertices' hull: they part by up to that times its
+           reach */
+        double ftol = ptol + (a->type == GA2D_SHAPE_POLYGON ? 4 * FG_UNIT_TOL * (A->in->reach + fg_norm1(A->x.p)) : 0);
+        if (ga2d_shape_distance(&pa, A->x, &pt, ga2d_transform_identity(), NULL, &dp) == GA2D_OK) {
+            FG_TRACE((stderr, "hit point off the shape by %.9g (bound %.9g)\n", (double)dp.distance, ftol));
+            FUZZ_CHECK((double)dp.distance <= ftol);
+        }
+    }
+
+    /* distance, with a cache: zeroed, then reused (warm), then garbage */
+    pa = fg_proxy(r, a);
+    pb = fg_proxy(r, B->g);
+    S = fg_norm1(A->x.p) + fg_norm1(B->x.p) + fg_proxy_reach(&pa) + fg_proxy_reach(&pb);
+    ordinary = ordinary && fg_finite_proxy(&pa) && fg_finite_proxy(&pb) && fz_finite(S) && S < 1e6;
+    dtol = (64 * FZ_EPS + 4 * (A->dq + B->dq)) * S + 4 * FZ_TINY;
+    must = fg_proxy_errs(&pa) || fg_proxy_errs(&pb) || fg_xf_bad(A->x, A->dq) == 2 || fg_xf_bad(B->x, B->dq) == 2;
+    may = fg_xf_bad(A->x, A->dq) == 1 || fg_xf_bad(B->x, B->dq) == 1;
+    memset(&cache, 0, sizeof cache);
+    res = ga2d_shape_distance(&pa, A->x, &pb, B->x, &cache, &d1);
+    fg_check_errs(res, must, may);
+    FUZZ_CHECK(ga2d_shape_distance(&pa, A->x, &pb, B->x, &cache, NULL) != GA2D_OK);
+    FUZZ_CHECK(ga2d_shape_distance(NULL, A->x, &pb, B->x, &cache, &d2) == GA2D_ERR_INVALID_ARGUMENT);
+    if (res == GA2D_OK) {
+        FUZZ_CHECK(d1.iterations >= 0 && d1.iterations <= GA2D_GJK_MAX_ITERATIONS);
+        FUZZ_CHECK(cache.count >= 0 && cache.count <= 3);
+        FUZZ_CHECK(!(d1.distance < 0));
+        FG_TRACE((stderr, "distance: a count %d r %g, b count %d r %g: d %.9g a (%.9g %.9g) b (%.9g %.9g) n (%.9g %.9g) it %d\n",
+                  pa.count, (double)pa.radius, pb.count, (double)pb.radius, (double)d1.distance, (double)d1.point_a.x,
+                  (double)d1.point_a.y, (double)d1.point_b.x, (double)d1.point_b.y, (double)d1.normal.x, (double)d1.normal.y,
+                  d1.iterations));
+#ifdef FUZZ_VERBOSE
+        {
+            int q;
+            for (q = 0; q < pa.count; ++q) fprintf(stderr, "  a[%d] = (%a, %a)\n", q, (double)pa.points[q].x, (double)pa.points[q].y);
+            for (q = 0; q < pb.count; ++q) fprintf(stderr, "  b[%d] = (%a, %a)\n", q, (double)pb.points[q].x, (double)pb.points[q].y);
+            fprintf(stderr, "  xa (%a %a | %a %a) xb (%a %a | %a %a)\n", (double)A->x.p.x, (double)A->x.p.y, (double)A->x.q.c,
+                    (double)A->x.q.s, (double)B->x.p.x, (double)B->x.p.y, (double)B->x.q.c, (double)B->x.q.s);
+        }
+#endif
+        if (ordinary) {
+            double gap = fg_len(fg_sub(fg_d(d1.point_b), fg_d(d1.point_a)));
+            FUZZ_CHECK(fz_finite((double)d1.distance) && fz_finite_vec(d1.point_a) && fz_finite_vec(d1.point_b));
+            FUZZ_CHECK(fg_unit_or_zero(d1.normal, 16 * FZ_EPS + 2 * A->dq, d1.distance == 0));
+            /* the two points are the distance apart (both on the surfaces) */
+            if (d1.distance > 0) FUZZ_CHECK(fabs(gap - (double)d1.distance) <= 2 * dtol);
+            else FUZZ_CHECK(gap <= 2 * dtol);
+        }
+        /* warm: the same pair from the cache it left */
+        FUZZ_CHECK(ga2d_shape_distance(&pa, A->x, &pb, B->x, &cache, &d2) == GA2D_OK);
+        FUZZ_CHECK(d2.iterations >= 0 && d2.iterations <= GA2D_GJK_MAX_ITERATIONS);
+        /* GJK stops within a relative tolerance of the distance (its
+           progress test), from either start: the two answers agree to the
+           rounding of the placement and that test */
+        if (ordinary) FUZZ_CHECK(fabs((double)d2.distance - (double)d1.distance) <= 4 * dtol + 1e-3 * (double)d1.distance + FG_GJK_FLOOR);
+        /* garbage: any count and indices are taken or dropped, never read past */
+        cache.count = (int)fz_u8(r) - 8;
+        cache.index_a[0] = (uint8_t)fz_u8(r);
+        cache.index_b[0] = (uint8_t)fz_u8(r);
+        cache.index_a[1] = cache.index_a[2] = (uint8_t)fz_u8(r);
+        cache.index_b[1] = cache.index_b[2] = (uint8_t)fz_u8(r);
+        FUZZ_CHECK(ga2d_shape_distance(&pa, A->x, &pb, B->x, &cache, &d2) == GA2D_OK);
+        FG_TRACE((stderr, "garbage cache: d %.9g (was %.9g) it %d\n", (double)d2.distance, (double)d1.distance, d2.iterations));
+        if (ordinary) FUZZ_CHECK(fabs((double)d2.distance - (double)d1.distance) <= 4 * dtol + 1e-3 * (double)d1.distance + FG_GJK_FLOOR);
+        /* swapped: the same distance */
+        FUZZ_CHECK(ga2d_shape_distance(&pb, B->x, &pa, A->x, NULL, &d2) == GA2D_OK);
+        FG_TRACE((stderr, "swapped: d %.9g a (%.9g %.9g) b (%.9g %.9g) it %d\n", (double)d2.distance, (double)d2.point_a.x,
+                  (double)d2.point_a.y, (double)d2.point_b.x, (double)d2.point_b.y, d2.iterations));
+        if (ordinary) FUZZ_CHECK(fabs((double)d2.distance - (double)d1.distance) <= 4 * dtol + 1e-3 * (double)d1.distance + FG_GJK_FLOOR);
+    }
+
+    /* shape cast: B moved by t against A */
+    res = ga2d_shape_cast(&pa, A->x, &pb, B->x, t, &h);
+    fg_check_errs(res, must || !fz_finite_vec(t), may);
+    if (res == GA2D_OK && h.hit) {
+        FG_TRACE((stderr, "cast: t (%.9g %.9g): f %.9g p (%.9g %.9g) n (%.9g %.9g)\n", (double)t.x, (double)t.y, (double)h.fraction,
+                  (double)h.point.x, (double)h.point.y, (double)h.normal.x, (double)h.normal.y));
+        FUZZ_CHECK(h.fraction >= 0 && h.fraction <= 1);
+        if (ordinary) {
+            FUZZ_CHECK(fz_finite_vec(h.point));
+            FUZZ_CHECK(fg_unit_or_zero(h.normal, 16 * FZ_EPS + 2 * A->dq, h.fraction == 0));
+        }
+    }
+
+    /* time of impact: each proxy on a sweep (ordinary motion, or any) */
+    {
+        ga2d_sweep sa, sb;
+        ga2d_toi_result toi;
+        ga2d_real target, tmax;
+        unsigned mode = fz_u8(r);
+        int wild_sweep = mode >= 224, i;
+        double slop = FG_SLOP;
+        sa.local_center = wild_sweep ? ga2d_vec_make(fz_real(r, 1), fz_real(r, 1)) : ga2d_vec_make(0, 0);
+        sb.local_center = wild_sweep ? ga2d_vec_make(fz_real(r, 1), fz_real(r, 1)) : ga2d_vec_make(0, 0);
+        sa.c1 = A->x.p;
+        sb.c1 = B->x.p;
+        sa.c2 = ga2d_vec_add(A->x.p, wild_sweep ? ga2d_vec_make(fz_real(r, 4), fz_real(r, 4)) : ga2d_vec_make(0, 0));
+        sb.c2 = ga2d_vec_add(B->x.p, t);
+        sa.a1 = fz_narrow(atan2((double)A->x.q.s, (double)A->x.q.c));
+        sb.a1 = fz_narrow(atan2((double)B->x.q.s, (double)B->x.q.c));
+        sa.a2 = sa.a1 + (wild_sweep ? fz_real(r, 4) : fz_narrow((double)(int8_t)fz_u8(r) / 32));
+        sb.a2 = sb.a1 + (wild_sweep ? fz_real(r, 4) : fz_narrow((double)(int8_t)fz_u8(r) / 32));
+        target = (mode & 3) == 3 ? fz_real(r, 0.1) : (ga2d_real)GA2D_LINEAR_SLOP;
+        tmax = (mode & 12) == 12 ? fz_real(r, 1) : 1;
+        res = ga2d_time_of_impact(&pa, &sa, &pb, &sb, target, tmax, &toi);
+        FUZZ_CHECK((int)res >= 0 && res < GA2D_RESULT_COUNT);
+        if (fg_proxy_errs(&pa) || fg_proxy_errs(&pb) || !fz_finite((double)target) || !fz_finite((double)tmax) || target < 0 ||
+            !(tmax > 0) || tmax > 1)
+            FUZZ_CHECK(res != GA2D_OK);
+        FUZZ_CHECK(ga2d_time_of_impact(&pa, &sa, &pb, NULL, target, tmax, &toi) != GA2D_OK);
+        if (res != GA2D_OK) return;
+        FUZZ_CHECK(res == GA2D_OK);
+        FUZZ_CHECK(toi.state >= GA2D_TOI_SEPARATED && toi.state <= GA2D_TOI_GAVE_UP);
+        FUZZ_CHECK(toi.iterations >= 0 && toi.iterations <= GA2D_TOI_MAX_ITERATIONS);
+        FUZZ_CHECK(toi.t >= 0 && toi.t <= tmax);
+        if (toi.state == GA2D_TOI_SEPARATED) FUZZ_CHECK(toi.t == tmax);
+        if (toi.state == GA2D_TOI_OVERLAPPED) FUZZ_CHECK(toi.t == 0);
+        if (!ordinary || wild_sweep || !fg_finite_proxy(&pa) || target > 1) return;
+        /* never past an impact: sampled over [0, t], the proxies stay
+           apart by the target less the stop tolerance (slop / 4) less the
+           rounding of the placements (the sweep's S grows by t) */
+        for (i = 0; i <= 16 && toi.state != GA2D_TOI_OVERLAPPED; ++i) {
+            ga2d_real ti = fz_narrow((double)toi.t * i / 16);
+            ga2d_distance_result di;
+            if (ga2d_shape_distance(&pa, ga2d_sweep_transform(&sa, ti), &pb, ga2d_sweep_transform(&sb, ti), NULL, &di) != GA2D_OK)
+                continue; /* a turned rotor within rounding of the tolerance */
+            FUZZ_CHECK((double)di.distance >= (double)target - slop / 4 - 4 * dtol - 64 * FZ_EPS * fg_norm1(t));
+        }
+        if (toi.state == GA2D_TOI_HIT) {
+            ga2d_distance_result di;
+            if (ga2d_shape_distance(&pa, ga2d_sweep_transform(&sa, toi.t), &pb, ga2d_sweep_transform(&sb, toi.t), NULL, &di) ==
+                GA2D_OK)
+                FUZZ_CHECK((double)di.distance <= (double)target + slop / 4 + 4 * dtol + 64 * FZ_EPS * fg_norm1(t));
+        }
+    }
+}
+
 /* ------------------------------------------------------------ one input */
 static int fuzz_shapes_one(const uint8_t *data, size_t size)
 {
@@ -1256,6 +1569,7 @@ static int fuzz_shapes_one(const uint8_t *data, size_t size)
     fg_masses(&rd, &a, &ia);
     fg_masses(&rd, &b, &ib);
     fg_makers(&rd);
+    fg_queries(&rd, &A, &B);
     {
         /* bad arguments answered, not crashed on */
         ga2d_manifold m, sentinel;
