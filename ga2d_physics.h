@@ -1078,8 +1078,11 @@ GA2D_API ga2d_result ga2d_shape_set_friction(ga2d_world *w, ga2d_shape_id id, ga
 GA2D_API ga2d_result ga2d_shape_set_restitution(ga2d_world *w, ga2d_shape_id id, ga2d_real restitution);
 GA2D_API ga2d_result ga2d_shape_set_filter(ga2d_world *w, ga2d_shape_id id, ga2d_filter f);
 GA2D_API ga2d_filter ga2d_shape_filter(const ga2d_world *w, ga2d_shape_id id);
-/* The shape's box in the broadphase (see ga2d_body_fat_aabb). */
+/* The shape's box in the broadphase (see ga2d_body_fat_aabb); after a
+   step it holds the shape's tight box. */
 GA2D_API ga2d_aabb ga2d_shape_fat_aabb(const ga2d_world *w, ga2d_shape_id id);
+/* The shape's tight box where its body is now (zero for an invalid id). */
+GA2D_API ga2d_aabb ga2d_shape_aabb(const ga2d_world *w, ga2d_shape_id id);
 /* Up to `capacity` of a body's shapes, in creation order; returns how many it has. */
 GA2D_API int ga2d_body_get_shapes(const ga2d_world *w, ga2d_body_id id, ga2d_shape_id *out, int capacity);
 
@@ -4572,6 +4575,7 @@ typedef struct ga2d__body {
     ga2d_real extent;            /* the farthest its shapes reach from the centre */
     ga2d_real min_extent;        /* its thinnest shape's inner reach (continuous collision) */
     int is_bullet;
+    ga2d_real box_slack;         /* in a step: how far its shapes can go and stay in their tree boxes (-1: unknown) */
 } ga2d__body;
 
 /* A chain slot: its body and its segments' shape slots, in order. */
@@ -5352,13 +5356,25 @@ static ga2d_aabb ga2d__shape_aabb(const ga2d__shape *s, ga2d_transform x)
    flying steadily re-fits every other step.  A box more than four
    margins larger than that (a fast body that has slowed) is re-fitted
    too, or it would hold pairs it can no longer reach. */
-static int ga2d__needs_refit(const ga2d_world *w, const ga2d__body *b, const ga2d__shape *s, ga2d_aabb *fat)
+static int ga2d__needs_refit(const ga2d_world *w, const ga2d__body *b, const ga2d__shape *s, ga2d_aabb *fat, ga2d_aabb *now)
 {
-    ga2d_aabb now = ga2d__shape_aabb(s, ga2d__body_xf(b));
-    ga2d_aabb reach = ga2d__reach_box(b, now, w->step.dt), box = ga2d__fat_box(w, s);
+    ga2d_aabb reach, box = ga2d__fat_box(w, s);
     ga2d_real margin = ga2d__margin(w, b);
+    *now = ga2d__shape_aabb(s, ga2d__body_xf(b));
+    reach = ga2d__reach_box(b, *now, w->step.dt);
     *fat = ga2d__fatten(ga2d__reach_box(b, reach, w->step.dt), margin);
     return !(ga2d_aabb_contains(box, reach) && ga2d_aabb_contains(ga2d__fatten(*fat, 4 * margin), box));
+}
+
+/* How far inner can move, in any direction, and stay in outer (negative:
+   it is out). */
+static ga2d_real ga2d__box_slack(ga2d_aabb outer, ga2d_aabb inner)
+{
+    ga2d_real a = inner.lower.x - outer.lower.x, b = inner.lower.y - outer.lower.y;
+    ga2d_real c = outer.upper.x - inner.upper.x, d = outer.upper.y - inner.upper.y;
+    a = a < b ? a : b;
+    c = c < d ? c : d;
+    return a < c ? a : c;
 }
 
 /* The tree takes a body's shapes' new fat boxes and they are queued for
@@ -5370,8 +5386,8 @@ static void ga2d__update_proxy(ga2d_world *w, int slot)
     int s;
     for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
         ga2d__shape *sh = &w->shapes[s];
-        ga2d_aabb fat;
-        if (!ga2d__needs_refit(w, b, sh, &fat)) continue;
+        ga2d_aabb fat, now;
+        if (!ga2d__needs_refit(w, b, sh, &fat, &now)) continue;
         ga2d__tree_move(ga2d__tree_of(w, sh), sh->proxy, fat);
         ga2d__buffer_move(w, s);
     }
@@ -6597,6 +6613,7 @@ GA2D_API ga2d_result ga2d_body_def_validate(const ga2d_body_def *def)
 /* Adds slot i to the moving list (capacity ensured by the caller). */
 static void ga2d__moving_add(ga2d_world *w, int i)
 {
+    w->bodies[i].box_slack = -1;
     w->bodies[i].move_index = w->moving_count;
     w->moving[w->moving_count++] = i;
 }
@@ -7032,6 +7049,14 @@ GA2D_API ga2d_aabb ga2d_shape_fat_aabb(const ga2d_world *w, ga2d_shape_id id)
     ga2d_aabb box;
     memset(&box, 0, sizeof box);
     return sh ? ga2d__fat_box(w, sh) : box;
+}
+
+GA2D_API ga2d_aabb ga2d_shape_aabb(const ga2d_world *w, ga2d_shape_id id)
+{
+    const ga2d__shape *sh = ga2d__shape_lookup(w, id);
+    ga2d_aabb box;
+    memset(&box, 0, sizeof box);
+    return sh ? ga2d__shape_aabb(sh, ga2d__body_xf(&w->bodies[sh->body])) : box;
 }
 
 GA2D_API int ga2d_body_get_shapes(const ga2d_world *w, ga2d_body_id id, ga2d_shape_id *out, int capacity)
@@ -7617,26 +7642,81 @@ static void ga2d__bits_zero(uint64_t *bits, int n)
    longer holds what it can reach in this step gets new boxes for all its
    shapes, written into their own tree leaves (a leaf's box is read by
    nothing else until ga2d__refit_proxies moves it in the tree), and its
-   bit. */
+   bit.  Each body's box slack is kept for ga2d__mark_strays. */
 static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     int k;
     for (k = begin; k < end; ++k) {
-        const ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d__body *b = &w->bodies[w->moving[k]];
         int s, refit = 0;
-        ga2d_aabb fat;
-        for (s = b->shape_head; s >= 0 && !refit; s = w->shapes[s].next) refit = ga2d__needs_refit(w, b, &w->shapes[s], &fat);
-        if (!refit) continue;
+        ga2d_aabb fat, now;
+        ga2d_real slack = GA2D__R(GA2D_MAX_COORDINATE), gap;
+        for (s = b->shape_head; s >= 0 && !refit; s = w->shapes[s].next) {
+            refit = ga2d__needs_refit(w, b, &w->shapes[s], &fat, &now);
+            gap = ga2d__box_slack(ga2d__fat_box(w, &w->shapes[s]), now);
+            slack = gap < slack ? gap : slack;
+        }
+        if (!refit) {
+            b->box_slack = slack;
+            continue;
+        }
         if (b->shape_count == 1) {
             const ga2d__shape *sh = &w->shapes[b->shape_head];
             ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
+            slack = ga2d__box_slack(fat, now);
         } else {
+            slack = GA2D__R(GA2D_MAX_COORDINATE);
             for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
                 const ga2d__shape *sh = &w->shapes[s];
-                ga2d__needs_refit(w, b, sh, &fat);
+                ga2d__needs_refit(w, b, sh, &fat, &now);
                 ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
+                gap = ga2d__box_slack(fat, now);
+                slack = gap < slack ? gap : slack;
             }
+        }
+        b->box_slack = slack;
+        c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
+    }
+}
+
+/* Stage, over the moving bodies, after the substeps (and continuous
+   collision): a body a joint or contact carried out of any of its tree
+   leaves (the boxes hold what its velocity at the step's start could
+   reach) gets its boxes grown now to hold the boxes the next step's
+   ga2d__mark_refits would give it, so that world queries between steps
+   see every shape where it is.  (Grown, never shrunk: the pairs its old
+   boxes made stay until the next step's narrowphase, as they would
+   have.)  A body whose motion in the step is within the slack its boxes
+   had at the start stays inside them: its shapes moved by at most its
+   centre's motion (per axis) and the chord its turn sweeps at its
+   extent, r |1 - dq| <= r (|1 - c| + |s|) for dq = q q0~; the guard
+   covers the rounding of the boxes' coordinates.  Only the others pay
+   for tight boxes. */
+static void ga2d__mark_strays(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        const ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d_transform x = ga2d__body_xf(b);
+        ga2d_vec d = ga2d_vec_sub(b->sim.center, b->sim.center0);
+        ga2d_rotor dq = ga2d_rotor_mul(b->sim.q, ga2d_rotor_inverse(b->sim.q0));
+        ga2d_real chord = (GA2D__FABS(1 - dq.c) + GA2D__FABS(dq.s)) * b->extent, shift = GA2D__FABS(d.x);
+        ga2d_real guard = 16 * GA2D__EPS * (GA2D__FABS(b->sim.center.x) + GA2D__FABS(b->sim.center.y) + b->extent);
+        int s, out = 0;
+        shift = GA2D__FABS(d.y) > shift ? GA2D__FABS(d.y) : shift;
+        if (shift + chord + guard <= b->box_slack) continue;
+        for (s = b->shape_head; s >= 0 && !out; s = w->shapes[s].next) {
+            const ga2d__shape *sh = &w->shapes[s];
+            out = !ga2d_aabb_contains(ga2d__tree_of(w, sh)->nodes[sh->proxy].box, ga2d__shape_aabb(sh, x));
+        }
+        if (!out) continue;
+        for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
+            const ga2d__shape *sh = &w->shapes[s];
+            ga2d_aabb fat, now, *box = &ga2d__tree_of(w, sh)->nodes[sh->proxy].box;
+            ga2d__needs_refit(w, b, sh, &fat, &now);
+            *box = ga2d_aabb_union(*box, fat);
         }
         c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
     }
@@ -11802,6 +11882,14 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__run(c, ga2d__finish_bodies, w->moving_count);
     if (w->def.enable_continuous) ga2d__continuous(c);
     else w->counters.continuous_bodies = w->counters.continuous_hits = 0;
+    /* boxes for the queries between steps, and their pairs */
+    ga2d__bits_zero(c->refits, w->moving_count);
+    ga2d__run(c, ga2d__mark_strays, w->moving_count);
+    ga2d__refit_proxies(c);
+    if (w->move_count > 0) {
+        ga2d__run(c, ga2d__find_pairs, w->move_count);
+        ga2d__create_pairs(c);
+    }
     w->counters.constraint_count = c->constraint_count;
     w->time = c->t0 + (double)dt;
     if (w->def.enable_sleep) ga2d__update_sleep(c);

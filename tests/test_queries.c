@@ -1309,6 +1309,154 @@ static void answers_finite_at_extremes(void)
     }
 }
 
+/* Bodies the step carries far from where their start velocity reaches
+   (the step fits the broadphase boxes to that reach at its start): rigid
+   distance joints pulling boxes, capsules and circles 2 to 14 m to their
+   1 m length in one step, in 12 directions; a force field kicking bodies
+   at rest to 60 m/s within the step; a revolute motor of huge torque
+   spinning a 6 m bar up from rest.  After every step each shape lies
+   inside its tree box (ga2d_shape_fat_aabb: the same box function at the
+   same pose, so exactly), and the world's queries find it: a ray down
+   through its centre hits it, with the fraction the shape's own cast
+   gives (the same arithmetic), and a point overlap at its centre lists
+   it.  Sleep off, gravity 0: nothing else moves them. */
+typedef struct carried_scene { ga2d_body_id kicked[6]; } carried_scene;
+
+static void kick_field(ga2d_world *w, void *ctx)
+{
+    carried_scene *cs = (carried_scene *)ctx;
+    int i;
+    for (i = 0; i < 6; ++i) {
+        /* 60 m/s more in each step of 1/60 s (F = m dv / dt) up to 150
+           m/s, outward from the ring they start on */
+        ga2d_real m = ga2d_body_mass_data(w, cs->kicked[i]).mass, f = m * 60 * 60;
+        ga2d_vec dir = ga2d_vec_make((ga2d_real)cos(i * 1.0471975511965976), (ga2d_real)sin(i * 1.0471975511965976));
+        if ((double)ga2d_vec_length(ga2d_body_velocity(w, cs->kicked[i])) > 150) continue;
+        ga2d_body_apply_force(w, cs->kicked[i], ga2d_vec_scale(dir, f), ga2d_body_center(w, cs->kicked[i]));
+    }
+}
+
+typedef struct found_ctx { ga2d_shape_id want; int found; ga2d_real fraction; } found_ctx;
+
+static int found_shape(ga2d_shape_id shape, void *ctx)
+{
+    found_ctx *f = (found_ctx *)ctx;
+    if (ga2d_shape_id_equal(shape, f->want)) f->found = 1;
+    return 1;
+}
+
+static ga2d_real found_on_ray(ga2d_shape_id shape, ga2d_vec point, ga2d_vec normal, ga2d_real fraction, void *ctx)
+{
+    found_ctx *f = (found_ctx *)ctx;
+    (void)point;
+    (void)normal;
+    if (ga2d_shape_id_equal(shape, f->want)) {
+        f->found = 1;
+        f->fraction = fraction;
+    }
+    return 1; /* every hit */
+}
+
+static void carried_bodies_found(void)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_world *w;
+    ga2d_body_id anchor, hub, bar, all[64];
+    carried_scene cs;
+    int i, k, n = 0, step, outside = 0, missed = 0;
+    wd.gravity = ga2d_vec_make(0, 0);
+    wd.enable_sleep = 0;
+    w = ga2d_world_create(&wd);
+    anchor = ga2d_body_create(w, &bd); /* static, shapeless */
+    bd.type = GA2D_BODY_DYNAMIC;
+    for (k = 0; k < 12; ++k) {
+        ga2d_distance_joint_def jd = ga2d_default_distance_joint_def();
+        double a = k * 0.5235987755982988, r = 2 + k;
+        ga2d_body_def d = bd;
+        d.position = ga2d_vec_make((ga2d_real)(r * cos(a) + 100), (ga2d_real)(r * sin(a)));
+        d.polygon = ga2d_polygon_box((ga2d_real)0.25, (ga2d_real)0.25);
+        all[n] = ga2d_body_create(w, &d);
+        if (k % 3 != 0) { /* a circle or a capsule in place of the box */
+            ga2d_circle disc;
+            ga2d_capsule cap;
+            ga2d_shape_id old;
+            ga2d_shape_def sd = ga2d_default_shape_def();
+            CHECK(ga2d_body_get_shapes(w, all[n], &old, 1) == 1);
+            disc.center = ga2d_vec_make(0, 0);
+            disc.radius = (ga2d_real)0.3;
+            cap.center1 = ga2d_vec_make((ga2d_real)-0.3, 0);
+            cap.center2 = ga2d_vec_make((ga2d_real)0.3, 0);
+            cap.radius = (ga2d_real)0.2;
+            if (k % 3 == 1) CHECK(!ga2d_shape_id_is_null(ga2d_shape_create_circle(w, all[n], &sd, &disc)));
+            else CHECK(!ga2d_shape_id_is_null(ga2d_shape_create_capsule(w, all[n], &sd, &cap)));
+            CHECK_RESULT(ga2d_shape_destroy(w, old, 1), GA2D_OK);
+        }
+        jd.body_a = anchor;
+        jd.body_b = all[n];
+        jd.local_anchor_a = ga2d_vec_make(100, 0);
+        jd.length = 1;
+        CHECK(!ga2d_joint_id_is_null(ga2d_distance_joint_create(w, &jd)));
+        ++n;
+    }
+    for (i = 0; i < 6; ++i) {
+        ga2d_body_def d = bd;
+        d.position = ga2d_vec_make((ga2d_real)(-100 + 5 * cos(i * 1.0471975511965976)), (ga2d_real)(50 + 5 * sin(i * 1.0471975511965976)));
+        d.polygon = ga2d_polygon_box((ga2d_real)0.2, (ga2d_real)0.4);
+        cs.kicked[i] = all[n++] = ga2d_body_create(w, &d);
+    }
+    CHECK_RESULT(ga2d_world_set_force_callback(w, kick_field, &cs), GA2D_OK);
+    {
+        ga2d_revolute_joint_def rj = ga2d_default_revolute_joint_def();
+        ga2d_body_def d = bd;
+        d.type = GA2D_BODY_STATIC;
+        d.position = ga2d_vec_make(0, -100);
+        hub = ga2d_body_create(w, &d);
+        d = bd;
+        d.position = ga2d_vec_make(0, -100);
+        d.polygon = ga2d_polygon_box(3, (ga2d_real)0.1);
+        bar = all[n++] = ga2d_body_create(w, &d);
+        rj.body_a = hub;
+        rj.body_b = bar;
+        rj.enable_motor = 1;
+        rj.motor_speed = 40; /* rad/s: the ends move 2 m in a step */
+        rj.max_motor_torque = (ga2d_real)1e6;
+        CHECK(!ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &rj)));
+    }
+    for (step = 0; step < 30; ++step) {
+        CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+        for (i = 0; i < n; ++i) {
+            ga2d_shape_id sh;
+            ga2d_geometry g;
+            ga2d_transform x = ga2d_body_transform(w, all[i]);
+            /* from above its reach (the bar's is 3 m) straight down */
+            ga2d_vec c = ga2d_body_center(w, all[i]), o = ga2d_vec_add(c, ga2d_vec_make(0, 4)), t = ga2d_vec_make(0, -8);
+            ga2d_ray_result mine;
+            found_ctx f;
+            CHECK(ga2d_body_get_shapes(w, all[i], &sh, 1) == 1);
+            g = ga2d_shape_geometry(w, sh);
+            outside += !ga2d_aabb_contains(ga2d_shape_fat_aabb(w, sh), ga2d_shape_aabb(w, sh));
+            CHECK(ga2d_ray_cast_shape(&g, x, o, t, &mine) == GA2D_OK && mine.hit);
+            f.want = sh;
+            f.found = 0;
+            CHECK_RESULT(ga2d_world_cast_ray(w, o, t, ga2d_default_filter(), found_on_ray, &f), GA2D_OK);
+            missed += !(f.found && f.fraction == mine.fraction);
+            f.found = 0;
+            CHECK_RESULT(ga2d_world_overlap_point(w, c, ga2d_default_filter(), found_shape, &f), GA2D_OK);
+            missed += !f.found;
+        }
+    }
+    CHECK(outside == 0);
+    CHECK(missed == 0);
+    /* the scene did what it is for: the joints pulled their bodies in,
+       the kicked bodies fly, the bar spins */
+    CHECK((double)ga2d_vec_length(ga2d_vec_sub(ga2d_body_position(w, all[11]), ga2d_vec_make(100, 0))) < 1.01);
+    CHECK((double)ga2d_vec_length(ga2d_body_velocity(w, cs.kicked[0])) > 100);
+    CHECK(fabs((double)ga2d_body_angular_velocity(w, bar)) > 30);
+    if (verbose()) printf("queries: carried bodies: %d shapes outside their tree box after a step, %d missed by a query\n", outside, missed);
+    ga2d_world_destroy(w);
+}
+
 void suite_queries(void)
 {
     test_run("queries: rays against brute force", rays_against_brute_force);
@@ -1322,4 +1470,5 @@ void suite_queries(void)
     test_run("queries: refusals and locks", query_refusals);
     test_run("queries: list bodies", list_bodies);
     test_run("queries: answers finite at the extremes", answers_finite_at_extremes);
+    test_run("queries: bodies a step carries out of their boxes are found after it", carried_bodies_found);
 }

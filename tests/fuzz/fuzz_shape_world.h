@@ -2185,24 +2185,19 @@ static void fsw_q_end(fsw_state *s, fsw_buf *before, int saved)
 }
 
 
-/* Whether a shape lies inside its broadphase box (its tree leaf's), with
-   room for the rounding of a query of size S (the tree's box tests round
-   too).  Not always so between steps: the box is fitted at a step's
-   start to what the body can reach at its start velocity, and a joint, a
-   contact, a spring or the field that speeds it up during the step can
-   carry it out (a rigid distance joint pulling a box 4 m in one step:
-   the next step re-fits it).  A query visits the tree, so it misses such
-   a shape; the harness requires completeness only for shapes inside
-   their boxes, unless FSW_STRICT_QUERIES is defined (then this open
-   finding fails). */
+/* Whether a query must find a shape: always, but where the rounding of a
+   query of size S (the tree's box tests round too) reaches a metre, only
+   if the shape lies inside its broadphase box with room for it.  The
+   step keeps every shape inside its tree box (a body carried out of its
+   boxes during the step, by a joint, a contact, a spring or the field,
+   gets them grown at the step's end), so between steps a query misses
+   nothing. */
 static int fsw_q_in_tree_box(ga2d_world *w, ga2d_shape_id id, double S)
 {
     double S0, tol;
     ga2d_aabb own = fsw_q_shape_box(w, id, &S0), fat = ga2d_shape_fat_aabb(w, id);
     tol = fsw_q_tol(S + S0);
-#ifdef FSW_STRICT_QUERIES
     if (tol < 1) return 1;
-#endif
     return (double)fat.lower.x <= (double)own.lower.x - tol && (double)fat.lower.y <= (double)own.lower.y - tol &&
            (double)fat.upper.x >= (double)own.upper.x + tol && (double)fat.upper.y >= (double)own.upper.y + tol;
 }
@@ -2300,8 +2295,8 @@ static void fsw_q_ray(fsw_state *s, ga2d_vec o, ga2d_vec t, ga2d_filter f, int m
         if (hits > 0) {
             /* one of the hits, with its own fraction; the least of them
                unless the tree's clipped box tests may round it away (the
-               nearest shape within rounding of its box's edge: far out,
-               or carried out of its box by the step) */
+               nearest shape within rounding of its box's edge, far
+               out) */
             int kc = fsw_q_index(&q, closest.shape);
             FUZZ_CHECK(kc >= 0 && q.fraction[kc] == closest.fraction);
             FUZZ_CHECK(ga2d_body_id_equal(closest.body, ga2d_shape_body(w, closest.shape)));
