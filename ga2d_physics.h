@@ -6426,7 +6426,12 @@ static ga2d_result ga2d__mass_sum_of(const ga2d_world *w, int slot, ga2d_vec ori
 }
 
 /* The body takes its shapes' mass properties (ga2d__mass_sum_of, checked
-   by the caller), and its extent is refreshed. */
+   by the caller), and its extent is refreshed.  Its origin is kept, but
+   the centre is what the body stores, and the origin read back from it
+   (c - l q) rounds at the centre's size: a centre far out (a shape
+   10^7 m away) moves the origin, and the shapes with it, by up to a
+   metre.  So the callers refit the body's proxies after (a static body
+   is never refit by a step). */
 static void ga2d__update_mass(ga2d_world *w, int slot, ga2d_vec origin)
 {
     ga2d__body *b = &w->bodies[slot];
@@ -6867,6 +6872,7 @@ GA2D_API ga2d_result ga2d_shape_create_checked(ga2d_world *w, ga2d_body_id body,
     k = ga2d__shape_add(w, ga2d__slot(body), &d, &clean);
     ga2d__update_mass(w, ga2d__slot(body), ga2d__body_origin(b));
     ga2d__shape_proxy(w, k);
+    ga2d__update_proxy(w, ga2d__slot(body)); /* see ga2d__update_mass */
     ga2d__wake(w, ga2d__slot(body));
     *out = ga2d__shape_id_of(w, k);
     ga2d__leave(w);
@@ -6926,7 +6932,10 @@ GA2D_API ga2d_result ga2d_shape_destroy(ga2d_world *w, ga2d_shape_id id, int upd
     }
     ga2d__enter(w); /* sensors, the tree and waking allocate and free through the hooks */
     ga2d__shape_remove(w, (int)id.index1 - 1);
-    if (update_body_mass) ga2d__update_mass(w, slot, ga2d__body_origin(&w->bodies[slot]));
+    if (update_body_mass) {
+        ga2d__update_mass(w, slot, ga2d__body_origin(&w->bodies[slot]));
+        ga2d__update_proxy(w, slot);
+    }
     ga2d__wake(w, slot);
     ga2d__leave(w);
     return GA2D_OK;
@@ -7249,6 +7258,7 @@ GA2D_API ga2d_result ga2d_chain_create_checked(ga2d_world *w, ga2d_body_id body,
     }
     ga2d__update_mass(w, c->body, ga2d__body_origin(&w->bodies[c->body]));
     for (i = 0; i < n; ++i) ga2d__shape_proxy(w, shapes[i]);
+    ga2d__update_proxy(w, c->body);
     *out = ga2d__chain_id_of(w, k);
     ga2d__leave(w);
     return GA2D_OK;
@@ -7278,6 +7288,7 @@ GA2D_API ga2d_result ga2d_chain_destroy(ga2d_world *w, ga2d_chain_id id)
     for (i = 0; i < c->count; ++i) ga2d__shape_remove(w, c->shapes[i]);
     ga2d__chain_free(w, (int)id.index1 - 1);
     ga2d__update_mass(w, slot, ga2d__body_origin(&w->bodies[slot]));
+    ga2d__update_proxy(w, slot);
     ga2d__leave(w);
     return GA2D_OK;
 }
@@ -7458,6 +7469,7 @@ GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2
     b->sim.inv_inertia = (b->fixed_rotation || m.inertia == 0) ? 0 : 1 / m.inertia;
     if (b->sim.inv_inertia == 0) b->sim.w = 0;
     b->sim.field_valid = 0;
+    ga2d__update_proxy(w, ga2d__slot(id)); /* see ga2d__update_mass */
     return GA2D_OK;
 }
 

@@ -1457,6 +1457,79 @@ static void carried_bodies_found(void)
     ga2d_world_destroy(w);
 }
 
+/* A body stores its centre and reads its origin back from it (c - l q),
+   which rounds at the centre's size: a shape 10^7 m out moves the centre
+   there and the origin by up to a metre (the float ulp at 10^7 m is
+   1 m; in double the shift is 10^-9 m).  Whatever the shift, the body's
+   shapes stay inside their tree boxes and the queries find them, after
+   a shape is added or removed, a chain made or destroyed, or a centre of
+   mass set: for a static body (no step ever refits it) and a dynamic
+   one, before any step. */
+static void far_centre_keeps_boxes(void)
+{
+    int type, op;
+    for (type = 0; type < 2; ++type)
+        for (op = 0; op < 4; ++op) {
+            ga2d_world_def wd = ga2d_default_world_def();
+            ga2d_body_def bd = ga2d_default_body_def();
+            ga2d_shape_def sd = ga2d_default_shape_def();
+            ga2d_world *w;
+            ga2d_body_id b;
+            ga2d_shape_id box, far;
+            ga2d_circle c = {{(ga2d_real)9.5e6, (ga2d_real)-1.7e6}, 1};
+            ga2d_vec o;
+            found_ctx f;
+            int k;
+            wd.gravity = ga2d_vec_make(0, 0);
+            w = ga2d_world_create(&wd);
+            bd.type = type ? GA2D_BODY_DYNAMIC : GA2D_BODY_STATIC;
+            bd.position = ga2d_vec_make((ga2d_real)-21.5, (ga2d_real)-7.25);
+            bd.rotor = ga2d_rotor_from_angle((ga2d_real)2.97);
+            bd.polygon = ga2d_polygon_box((ga2d_real)0.3, (ga2d_real)0.3);
+            b = ga2d_body_create(w, &bd);
+            CHECK(ga2d_body_get_shapes(w, b, &box, 1) == 1);
+            far = ga2d_shape_create_circle(w, b, &sd, &c); /* the centre goes far out */
+            CHECK(!ga2d_shape_id_is_null(far));
+            for (k = 0; k < 3; ++k) {
+                if (op == 0) { /* more shapes far out, each moving the centre again */
+                    c.center.x = (ga2d_real)((double)c.center.x * 1.3);
+                    CHECK(!ga2d_shape_id_is_null(ga2d_shape_create_circle(w, b, &sd, &c)));
+                } else if (op == 1) { /* a far shape removed, then another made */
+                    CHECK_RESULT(ga2d_shape_destroy(w, far, 1), GA2D_OK);
+                    c.center.y = (ga2d_real)((double)c.center.y * 1.7);
+                    far = ga2d_shape_create_circle(w, b, &sd, &c);
+                } else if (op == 2) { /* a chain far out, made and destroyed */
+                    ga2d_vec pts[2];
+                    ga2d_chain_def cd = ga2d_default_chain_def();
+                    ga2d_chain_id ch;
+                    pts[0] = ga2d_vec_make((ga2d_real)3e6, 0);
+                    pts[1] = ga2d_vec_make((ga2d_real)(3e6 + 1000.0 * (k + 1)), 500); /* apart by more than 64 eps of their size */
+                    cd.points = pts;
+                    cd.count = 2;
+                    ch = ga2d_chain_create(w, b, &cd);
+                    if (type == 0) {
+                        CHECK(ch.index1 != 0);
+                        if (k == 1) CHECK_RESULT(ga2d_chain_destroy(w, ch), GA2D_OK);
+                    }
+                } else if (type == 1) { /* a centre of mass set far out */
+                    ga2d_mass m = ga2d_body_mass_data(w, b);
+                    m.center = ga2d_vec_make((ga2d_real)(-4e6 * (k + 1)), (ga2d_real)(1e6 * k + 3e5));
+                    CHECK_RESULT(ga2d_body_set_mass_data(w, b, m), GA2D_OK);
+                }
+                CHECK(ga2d_aabb_contains(ga2d_shape_fat_aabb(w, box), ga2d_shape_aabb(w, box)));
+                /* a ray down through the box, from 2 m above it */
+                o = ga2d_vec_scale(ga2d_vec_add(ga2d_shape_aabb(w, box).lower, ga2d_shape_aabb(w, box).upper), (ga2d_real)0.5);
+                f.want = box;
+                f.found = 0;
+                CHECK_RESULT(ga2d_world_cast_ray(w, ga2d_vec_add(o, ga2d_vec_make(0, 2)), ga2d_vec_make(0, -4), ga2d_default_filter(),
+                                                 found_on_ray, &f),
+                             GA2D_OK);
+                CHECK(f.found);
+            }
+            ga2d_world_destroy(w);
+        }
+}
+
 void suite_queries(void)
 {
     test_run("queries: rays against brute force", rays_against_brute_force);
@@ -1471,4 +1544,5 @@ void suite_queries(void)
     test_run("queries: list bodies", list_bodies);
     test_run("queries: answers finite at the extremes", answers_finite_at_extremes);
     test_run("queries: bodies a step carries out of their boxes are found after it", carried_bodies_found);
+    test_run("queries: a far centre of mass moves no shape out of its box", far_centre_keeps_boxes);
 }
