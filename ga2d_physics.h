@@ -4496,6 +4496,7 @@ typedef struct ga2d__contact {
     ga2d_manifold manifold;
     ga2d_real friction, restitution;
     ga2d_vec end_normal;     /* an ended touch's new normal, while its end is reported */
+    ga2d_real peak[2];       /* each point's largest normal impulse in the last step (hit events) */
     ga2d__held held;         /* the manifold in A's frame, while touching */
     uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
 } ga2d__contact;
@@ -8136,6 +8137,7 @@ struct ga2d__group {
     ga2d__w has2;           /* 1 where the lane has a second point, else 0 (an empty lane's
                                first point has zero masses of itself: no inverse mass) */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
+    ga2d__w npeak[2];       /* the largest normal impulse any pass of the step left (hit events) */
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
     ga2d__w share;          /* where the point lies from A's anchor to B's (ga2d__share) */
 };
@@ -8913,6 +8915,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
     ga2d__wblock(g, inv_a, own, lambda);
     for (k = 0; k < 2; ++k) {
         g->nimp[k] = ga2d__wadd(g->nimp[k], lambda[k]);
+        g->npeak[k] = ga2d__wsel(ga2d__wgt(g->nimp[k], g->npeak[k]), g->nimp[k], g->npeak[k]);
         ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda[k]), ga2d__wmul(g->ny, lambda[k]));
     }
     for (k = 0; ps->friction && k < 2; ++k) {
@@ -9058,6 +9061,7 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
         GA2D__LANE(g->tmass[k], l) = p->tangent_mass;
         GA2D__LANE(g->nimp[k], l) = p->normal_impulse;
         GA2D__LANE(g->timp[k], l) = p->tangent_impulse;
+        GA2D__LANE(g->npeak[k], l) = 0;
     }
 }
 
@@ -9291,6 +9295,7 @@ static void ga2d__store_impulses(ga2d__step_context *c, int begin, int end)
             for (k = 0; k < m->count; ++k) {
                 m->points[k].normal_impulse = GA2D__LANE(g->nimp[k], l);
                 m->points[k].tangent_impulse = GA2D__LANE(g->timp[k], l);
+                w->contacts[g->contact[l]].peak[k] = GA2D__LANE(g->npeak[k], l);
             }
         }
     }
@@ -11804,8 +11809,9 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
 }
 
 /* Book-keeping after the impulses are stored: each constraint that
-   reports hits and whose fastest approaching point pushed, faster than
-   the threshold, is a hit event. */
+   reports hits and whose fastest approaching point pushed in any pass of
+   the step (its peak impulse: a body stopped in the first substep has
+   none left by the last), faster than the threshold, is a hit event. */
 static void ga2d__hit_events(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
@@ -11817,7 +11823,7 @@ static void ga2d__hit_events(ga2d__step_context *c)
         int best = -1;
         if (!cc->hits) continue;
         for (k = 0; k < cc->count && k < ct->manifold.count; ++k)
-            if (cc->p[k].approach > threshold && ct->manifold.points[k].normal_impulse > 0 &&
+            if (cc->p[k].approach > threshold && ct->peak[k] > 0 &&
                 (best < 0 || cc->p[k].approach > cc->p[best].approach))
                 best = k;
         if (best < 0) continue;
