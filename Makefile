@@ -107,6 +107,16 @@ $(BUILD)/readme/joints: tests/readme_joints.c $(BUILD)/readme/joints_snippet.inc
 	$(CC) -std=c99 $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -o $@ $(LIBS)
 	$(CXX) -std=c++11 -x c++ $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -x none -o $@-cxx $(LIBS)
 
+# The README's queries snippet (a ray, a pick, a blast), cut out of
+# README.md, runs inside tests/readme_queries.c the same way.
+$(BUILD)/readme/queries_snippet.inc: README.md
+	@mkdir -p $(dir $@)
+	awk '/^### Queries:/{q=1} q&&/^```c$$/{f=1;next} f&&/^```$$/{exit} f' README.md > $@
+	@test -s $@ || { echo "README.md has no queries block"; exit 1; }
+$(BUILD)/readme/queries: tests/readme_queries.c $(BUILD)/readme/queries_snippet.inc $(HEADER)
+	$(CC) -std=c99 $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -o $@ $(LIBS)
+	$(CXX) -std=c++11 -x c++ $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -x none -o $@-cxx $(LIBS)
+
 # Determinism (issue 8): the mixed scene of tests/determinism_scene.h must
 # hash the same in every build of one precision: gcc and clang, C and C++,
 # -O0, -O2 and -O3 (all with -ffp-contract=off; never -ffast-math), and the
@@ -136,7 +146,7 @@ $(BUILD)/det/%: tests/determinism.c tests/determinism_scene.h $(HEADER)
 	@mkdir -p $(dir $@)
 	$(DET_CC_$(word 2,$(subst -, ,$*))) $(DET_FLAGS_$(word 1,$(subst -, ,$*))) -$(word 3,$(subst -, ,$*)) -ffp-contract=off $(WARN) $(INC) $< -x none -o $@ $(LIBS)
 
-test-build: $(TEST_BINS) $(BUILD)/readme/quickstart $(BUILD)/readme/shapes $(BUILD)/readme/joints $(DET_BINS)
+test-build: $(TEST_BINS) $(BUILD)/readme/quickstart $(BUILD)/readme/shapes $(BUILD)/readme/joints $(BUILD)/readme/queries $(DET_BINS)
 
 # Runs every configuration (built in parallel), prints each one's summary,
 # and ends with the total line "N passed, N failed".
@@ -145,6 +155,7 @@ test:
 	@echo "README quick start:" && ./$(BUILD)/readme/quickstart && ./$(BUILD)/readme/quickstart-cxx >/dev/null
 	@./$(BUILD)/readme/shapes && ./$(BUILD)/readme/shapes-cxx && echo "README shapes snippet: built and ran (C99, C++11)"
 	@./$(BUILD)/readme/joints && ./$(BUILD)/readme/joints-cxx && echo "README joints snippet: built and ran (C99, C++11)"
+	@./$(BUILD)/readme/queries && ./$(BUILD)/readme/queries-cxx && echo "README queries snippet: built and ran (C99, C++11)"
 	@echo "determinism: one hash per precision over $(words $(DET_BINS)) builds" && \
 	  for p in float double; do \
 	    for b in $(BUILD)/det/$$p-*; do ./$$b || { echo "  $$b: churn changed the scene"; exit 1; }; done | sort | uniq -c; \
