@@ -6426,6 +6426,22 @@ static ga2d_result ga2d__mass_sum_of(const ga2d_world *w, int slot, ga2d_vec ori
     return GA2D_OK;
 }
 
+/* How far the body's shapes reach from its centre of mass (the fat boxes'
+   swing, continuous collision's motion test), and its thinnest shape's
+   inner reach: anew whenever its shapes or its centre change. */
+static void ga2d__refresh_extent(const ga2d_world *w, ga2d__body *b)
+{
+    int k;
+    b->extent = 0;
+    b->min_extent = GA2D__MAX;
+    for (k = b->shape_head; k >= 0; k = w->shapes[k].next) {
+        ga2d_real d = ga2d__shape_reach(&w->shapes[k], b->sim.local_center), m = ga2d__shape_inner_reach(&w->shapes[k]);
+        b->extent = d > b->extent ? d : b->extent;
+        if (!w->shapes[k].is_sensor && m < b->min_extent) b->min_extent = m;
+    }
+    if (b->min_extent == GA2D__MAX) b->min_extent = b->extent;
+}
+
 /* The body takes its shapes' mass properties (ga2d__mass_sum_of, checked
    by the caller), and its extent is refreshed.  Its origin is kept, but
    the centre is what the body stores, and the origin read back from it
@@ -6437,7 +6453,6 @@ static void ga2d__update_mass(ga2d_world *w, int slot, ga2d_vec origin)
 {
     ga2d__body *b = &w->bodies[slot];
     ga2d__mass_sum s;
-    int k;
     ga2d__mass_sum_of(w, slot, origin, -1, -1, NULL, &s);
     b->sim.local_center = s.local_center;
     b->sim.v = s.v;
@@ -6453,14 +6468,7 @@ static void ga2d__update_mass(ga2d_world *w, int slot, ga2d_vec origin)
         b->sim.inv_inertia = b->fixed_rotation || !(b->inertia > 0) ? 0 : 1 / b->inertia;
         if (b->fixed_rotation) b->sim.w = 0;
     }
-    b->extent = 0;
-    b->min_extent = GA2D__MAX;
-    for (k = b->shape_head; k >= 0; k = w->shapes[k].next) {
-        ga2d_real d = ga2d__shape_reach(&w->shapes[k], s.local_center), m = ga2d__shape_inner_reach(&w->shapes[k]);
-        b->extent = d > b->extent ? d : b->extent;
-        if (!w->shapes[k].is_sensor && m < b->min_extent) b->min_extent = m;
-    }
-    if (b->min_extent == GA2D__MAX) b->min_extent = b->extent;
+    ga2d__refresh_extent(w, b);
     b->sim.field_valid = 0;
 }
 
@@ -7470,6 +7478,7 @@ GA2D_API ga2d_result ga2d_body_set_mass_data(ga2d_world *w, ga2d_body_id id, ga2
     b->sim.inv_inertia = (b->fixed_rotation || m.inertia == 0) ? 0 : 1 / m.inertia;
     if (b->sim.inv_inertia == 0) b->sim.w = 0;
     b->sim.field_valid = 0;
+    ga2d__refresh_extent(w, b); /* measured from the new centre */
     ga2d__update_proxy(w, ga2d__slot(id)); /* see ga2d__update_mass */
     return GA2D_OK;
 }

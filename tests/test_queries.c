@@ -1530,6 +1530,54 @@ static void far_centre_keeps_boxes(void)
         }
 }
 
+/* A centre of mass set 10 m off the body's only shape (set_mass_data)
+   makes the shape swing 10 m out when the body turns: a box turning at
+   40 rad/s about such a centre (0.67 rad a step, its box sweeping 6.7 m)
+   stays inside its tree box after every step, and the queries find it.
+   (The body's reach was measured from the old centre: its boxes and the
+   end-of-step test were 14 times too small.) */
+static void mass_centre_off_the_shape(void)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_world *w;
+    ga2d_body_id b;
+    ga2d_shape_id sh;
+    ga2d_mass m;
+    int i, outside = 0, missed = 0;
+    wd.gravity = ga2d_vec_make(0, 0);
+    wd.enable_sleep = 0;
+    w = ga2d_world_create(&wd);
+    bd.type = GA2D_BODY_DYNAMIC;
+    bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+    b = ga2d_body_create(w, &bd);
+    CHECK(ga2d_body_get_shapes(w, b, &sh, 1) == 1);
+    m = ga2d_body_mass_data(w, b);
+    m.center = ga2d_vec_make(-8, (ga2d_real)-6);
+    m.inertia = m.mass * 100; /* as if the mass were 10 m away */
+    CHECK_RESULT(ga2d_body_set_mass_data(w, b, m), GA2D_OK);
+    CHECK_RESULT(ga2d_body_set_angular_velocity(w, b, 40), GA2D_OK);
+    for (i = 0; i < 60; ++i) {
+        ga2d_aabb box;
+        ga2d_vec o;
+        found_ctx f;
+        CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+        box = ga2d_shape_aabb(w, sh);
+        outside += !ga2d_aabb_contains(ga2d_shape_fat_aabb(w, sh), box);
+        o = ga2d_vec_scale(ga2d_vec_add(box.lower, box.upper), (ga2d_real)0.5);
+        f.want = sh;
+        f.found = 0;
+        CHECK_RESULT(ga2d_world_cast_ray(w, ga2d_vec_add(o, ga2d_vec_make(0, 2)), ga2d_vec_make(0, -4), ga2d_default_filter(),
+                                         found_on_ray, &f),
+                     GA2D_OK);
+        missed += !f.found;
+    }
+    CHECK(outside == 0);
+    CHECK(missed == 0);
+    CHECK(fabs((double)ga2d_body_angular_velocity(w, b) - 40) < 1e-3); /* it did turn: nothing else acts */
+    ga2d_world_destroy(w);
+}
+
 void suite_queries(void)
 {
     test_run("queries: rays against brute force", rays_against_brute_force);
@@ -1545,4 +1593,5 @@ void suite_queries(void)
     test_run("queries: answers finite at the extremes", answers_finite_at_extremes);
     test_run("queries: bodies a step carries out of their boxes are found after it", carried_bodies_found);
     test_run("queries: a far centre of mass moves no shape out of its box", far_centre_keeps_boxes);
+    test_run("queries: a centre of mass set off the shape widens its reach", mass_centre_off_the_shape);
 }
