@@ -8125,6 +8125,7 @@ struct ga2d__group_extra {
     ga2d__w tw;             /* +-1/2 where one side is round: the point slides with it (ga2d__point_now) */
     ga2d__w tspeed;         /* the conveyor's tangent speed */
     ga2d__w rr, rmass, rimp; /* rolling resistance: rr = c r, rmass = 1/(iA + iB), rimp its impulse */
+    ga2d__w npeak[2];       /* hit events: the largest normal impulse any pass of the step left */
 };
 
 struct ga2d__group {
@@ -8133,6 +8134,7 @@ struct ga2d__group {
     unsigned char round;    /* a lane has a round shape: rax.. are core anchors, x->o.. what lies along n */
     unsigned char conveyor; /* a lane has a tangent speed (x->tspeed) */
     unsigned char rolling;  /* a lane has rolling resistance (x->rr, rmass, rimp) */
+    unsigned char hits;     /* a lane reports hits (x->npeak) */
     unsigned char extras;   /* x's fields are written (ga2d__lane_extras) */
     int count;              /* lanes in use */
     int skip;               /* when full: a later group to look at first */
@@ -8146,7 +8148,6 @@ struct ga2d__group {
     ga2d__w has2;           /* 1 where the lane has a second point, else 0 (an empty lane's
                                first point has zero masses of itself: no inverse mass) */
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
-    ga2d__w npeak[2];       /* the largest normal impulse any pass of the step left (hit events) */
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
     ga2d__w share;          /* where the point lies from A's anchor to B's (ga2d__share) */
 };
@@ -8262,7 +8263,7 @@ static void ga2d__constraint_extras(ga2d_world *w, const ga2d__contact *ct, ga2d
     /* rolling resistance: the larger coefficient at the rolling radius (a
        round side's; none between sharp shapes) */
     cc->rolling = ga2d__saturate((rra > rrb ? rra : rrb) * (cc->round_a > cc->round_b ? cc->round_a : cc->round_b));
-    cc->needs_extras = cc->round_a != 0 || cc->round_b != 0 || cc->tangent_speed != 0 || cc->rolling != 0;
+    cc->needs_extras = cc->round_a != 0 || cc->round_b != 0 || cc->tangent_speed != 0 || cc->rolling != 0 || cc->hits;
 }
 
 /* Stage, over the constraints: each takes its contact's normal, material
@@ -8924,7 +8925,6 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
     ga2d__wblock(g, inv_a, own, lambda);
     for (k = 0; k < 2; ++k) {
         g->nimp[k] = ga2d__wadd(g->nimp[k], lambda[k]);
-        g->npeak[k] = ga2d__wsel(ga2d__wgt(g->nimp[k], g->npeak[k]), g->nimp[k], g->npeak[k]);
         ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda[k]), ga2d__wmul(g->ny, lambda[k]));
     }
     for (k = 0; ps->friction && k < 2; ++k) {
@@ -8996,7 +8996,8 @@ static void ga2d__solve_baumgarte(ga2d__step_context *c, int begin, int end)
     ga2d__solve_contacts(c, begin, end, GA2D__BIAS_BAUMGARTE);
 }
 
-/* Lane l's fields for round shapes, conveyors and rolling resistance.
+/* Lane l's fields for round shapes, conveyors, rolling resistance and
+   hit events.
    The first lane of a group that needs them zeroes them in every other
    lane (their group is flagged from then on, so every later lane writes
    its own); a group without them never writes them. */
@@ -9010,12 +9011,15 @@ static void ga2d__lane_extras(ga2d__group *g, int l, const ga2d__contact_constra
                 GA2D__LANE(g->x->oax[k], j) = GA2D__LANE(g->x->oay[k], j) = GA2D__LANE(g->x->obx[k], j) = GA2D__LANE(g->x->oby[k], j) = 0;
             GA2D__LANE(g->x->tspeed, j) = GA2D__LANE(g->x->rr, j) = GA2D__LANE(g->x->rmass, j) = GA2D__LANE(g->x->rimp, j) = 0;
             GA2D__LANE(g->x->tw, j) = 0;
+            GA2D__LANE(g->x->npeak[0], j) = GA2D__LANE(g->x->npeak[1], j) = 0;
         }
         g->extras = 1;
     }
     if (c->round_a != 0 || c->round_b != 0) g->round = 1;
     if (c->tangent_speed != 0) g->conveyor = 1;
     if (c->rolling != 0) g->rolling = 1;
+    if (c->hits) g->hits = 1;
+    GA2D__LANE(g->x->npeak[0], l) = GA2D__LANE(g->x->npeak[1], l) = 0;
     GA2D__LANE(g->x->tspeed, l) = c->tangent_speed;
     GA2D__LANE(g->x->rr, l) = c->rolling;
     GA2D__LANE(g->x->rmass, l) = c->rolling != 0 && c->inv_ia + c->inv_ib > 0 ? 1 / (c->inv_ia + c->inv_ib) : 0;
@@ -9070,7 +9074,6 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
         GA2D__LANE(g->tmass[k], l) = p->tangent_mass;
         GA2D__LANE(g->nimp[k], l) = p->normal_impulse;
         GA2D__LANE(g->timp[k], l) = p->tangent_impulse;
-        GA2D__LANE(g->npeak[k], l) = 0;
     }
 }
 
@@ -9093,7 +9096,7 @@ static void ga2d__group_open(ga2d__group *g)
 {
     g->count = 0;
     g->skip = 0;
-    g->extras = g->round = g->conveyor = g->rolling = 0;
+    g->extras = g->round = g->conveyor = g->rolling = g->hits = 0;
 }
 
 /* The first group from gi on with a free lane (or group_count): full
@@ -9304,7 +9307,7 @@ static void ga2d__store_impulses(ga2d__step_context *c, int begin, int end)
             for (k = 0; k < m->count; ++k) {
                 m->points[k].normal_impulse = GA2D__LANE(g->nimp[k], l);
                 m->points[k].tangent_impulse = GA2D__LANE(g->timp[k], l);
-                w->contacts[g->contact[l]].peak[k] = GA2D__LANE(g->npeak[k], l);
+                if (g->hits) w->contacts[g->contact[l]].peak[k] = GA2D__LANE(g->x->npeak[k], l);
             }
         }
     }
@@ -11554,9 +11557,28 @@ static void ga2d__baumgarte_blocks(ga2d__step_context *c, int begin, int end)
     ga2d__blocks(c, begin, end, ga2d__joints_biased, ga2d__solve_baumgarte);
 }
 static void ga2d__stage_warm_start(ga2d__step_context *c) { ga2d__run(c, ga2d__warm_start_blocks, c->joint_active + c->group_count); }
-static void ga2d__stage_solve(ga2d__step_context *c) { ga2d__run(c, ga2d__solve_blocks, c->joint_active + c->group_count); }
-static void ga2d__stage_relax(ga2d__step_context *c) { ga2d__run(c, ga2d__relax_blocks, c->joint_active + c->group_count); }
-static void ga2d__stage_baumgarte(ga2d__step_context *c) { ga2d__run(c, ga2d__baumgarte_blocks, c->joint_active + c->group_count); }
+/* Stage, over the groups, after each pass of a world with hit events:
+   each point's largest normal impulse of the step so far (a body stopped
+   in the first substep has none left by the last).  Kept out of the
+   passes, which it slowed by 2 % with no hit event in the world. */
+static void ga2d__track_peaks(ga2d__step_context *c, int begin, int end)
+{
+    int gi, k;
+    for (gi = begin; gi < end; ++gi) {
+        ga2d__group *g = &c->groups[gi];
+        if (!g->hits) continue;
+        for (k = 0; k < 2; ++k) g->x->npeak[k] = ga2d__wsel(ga2d__wgt(g->nimp[k], g->x->npeak[k]), g->nimp[k], g->x->npeak[k]);
+    }
+}
+
+static void ga2d__run_pass(ga2d__step_context *c, ga2d__range_fn *blocks)
+{
+    ga2d__run(c, blocks, c->joint_active + c->group_count);
+    if (c->world->hit_shapes > 0) ga2d__run(c, ga2d__track_peaks, c->group_count);
+}
+static void ga2d__stage_solve(ga2d__step_context *c) { ga2d__run_pass(c, ga2d__solve_blocks); }
+static void ga2d__stage_relax(ga2d__step_context *c) { ga2d__run_pass(c, ga2d__relax_blocks); }
+static void ga2d__stage_baumgarte(ga2d__step_context *c) { ga2d__run_pass(c, ga2d__baumgarte_blocks); }
 static void ga2d__stage_push_apart(ga2d__step_context *c)
 {
     ga2d__run(c, ga2d__refresh_turns, c->world->moving_count);
