@@ -11637,6 +11637,26 @@ typedef struct ga2d__ccd {
     ga2d_real fraction;    /* the earliest impact found so far */
 } ga2d__ccd;
 
+/* A body's turn over the step that just ran, q q0~ (its dq is the
+   solver's, refreshed per pass and not by every solver kind). */
+static ga2d_rotor ga2d__step_turn(const ga2d__body *b) { return ga2d_rotor_mul(b->sim.q, ga2d_rotor_inverse(b->sim.q0)); }
+
+/* Whether a body is fast: its step's motion, its centre's displacement
+   plus its turn times its reach, passes GA2D__CCD_FRACTION of its
+   thinnest shape's inner reach.  Most bodies are told slow without a
+   square root or an arctangent: the turn is at most (pi/2) |sin| while
+   cos >= 0 (sin t >= 2t/pi on [0, pi/2]), else at most pi. */
+static int ga2d__is_fast(const ga2d__body *b)
+{
+    ga2d_vec d = ga2d_vec_sub(b->sim.center, b->sim.center0);
+    ga2d_rotor dq = ga2d__step_turn(b);
+    ga2d_real limit = GA2D__R(GA2D__CCD_FRACTION) * b->min_extent, d2 = ga2d_vec_length_sq(d), motion;
+    ga2d_real turn_max = dq.c >= 0 ? GA2D__R(0.5) * GA2D__PI * GA2D__FABS(dq.s) : GA2D__PI, room = limit - turn_max * b->extent;
+    if (room > 0 && d2 <= room * room) return 0;
+    motion = GA2D__SQRT(d2) + GA2D__FABS(ga2d_rotor_angle(dq)) * b->extent;
+    return motion > limit && ga2d__finite(motion);
+}
+
 /* A body's motion over the step that just ran: start to end. */
 static ga2d_sweep ga2d__body_sweep(const ga2d__body *b)
 {
@@ -11645,7 +11665,7 @@ static ga2d_sweep ga2d__body_sweep(const ga2d__body *b)
     s.c1 = b->sim.center0;
     s.c2 = b->sim.center;
     s.a1 = ga2d_rotor_angle(b->sim.q0);
-    s.a2 = s.a1 + ga2d_rotor_angle(b->sim.dq);
+    s.a2 = s.a1 + ga2d_rotor_angle(ga2d__step_turn(b));
     return s;
 }
 
@@ -11747,12 +11767,8 @@ static void ga2d__continuous(ga2d__step_context *c)
         int slot = w->moving[k], nodes = 0;
         ga2d__body *b = &w->bodies[slot];
         ga2d__ccd q;
-        ga2d_real turn, motion;
         ga2d_aabb box;
-        if (b->type != GA2D_BODY_DYNAMIC || !b->awake || b->shape_head < 0) continue;
-        turn = GA2D__FABS(ga2d_rotor_angle(b->sim.dq));
-        motion = ga2d_vec_length(ga2d_vec_sub(b->sim.center, b->sim.center0)) + turn * b->extent;
-        if (!(motion > GA2D__R(GA2D__CCD_FRACTION) * b->min_extent) || !ga2d__finite(motion)) continue;
+        if (b->type != GA2D_BODY_DYNAMIC || !b->awake || b->shape_head < 0 || !ga2d__is_fast(b)) continue;
         ++w->counters.continuous_bodies;
         q.w = w;
         q.slot = slot;

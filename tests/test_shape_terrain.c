@@ -299,6 +299,9 @@ static void chain_valleys_hold(void)
                         }
     CHECK(crossed == 0);
     CHECK(runs >= 200); /* the sweep ran: 7 turns x 2 sizes x 6 speeds x 2 x 2 of balls less the fastest few */
+    /* beyond the discrete step, continuous collision (on by default)
+       sweeps the body along its path and turn, and holds every one */
+    CHECK(beyond > 0 && held_beyond == beyond);
     if (getenv("GA2D_TEST_VERBOSE"))
         printf("  shape_terrain: %d valley runs, %d crossed; least centre height above an arm %.4g m; beyond the step's "
                "reach %d more, %d of them held\n", runs, crossed, worst, beyond, held_beyond);
