@@ -86,34 +86,20 @@ $(BUILD)/readme/quickstart: $(BUILD)/readme/quickstart.c $(HEADER)
 	$(CC) -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
 	$(CXX) -std=c++11 -x c++ $(OPT) $(WARN) $(INC) $< -x none -o $@-cxx $(LIBS)
 
-# The README's shapes snippet (a ball, a chain on a ground, a sensor), cut
-# out of README.md, runs inside tests/readme_shapes.c: it must build as C99
-# and C++11 and make what it says.
-$(BUILD)/readme/shapes_snippet.inc: README.md
+# The README's API snippets, each cut out of README.md (the first C block
+# under its "### <Heading>:" heading) into build/readme/<name>_snippet.inc
+# and run inside tests/readme_<name>.c: each must build as C99 and C++11
+# and make what it says.  shapes: a ball, a chain on a ground, a sensor;
+# joints: a hinge, a rope, a weld, the mouse drag; queries: a ray, a pick,
+# a blast.
+README_HEADING_shapes := Shapes
+README_HEADING_joints := Joints
+README_HEADING_queries := Queries
+$(BUILD)/readme/%_snippet.inc: README.md
 	@mkdir -p $(dir $@)
-	awk '/^### Shapes:/{q=1} q&&/^```c$$/{f=1;next} f&&/^```$$/{exit} f' README.md > $@
-	@test -s $@ || { echo "README.md has no shapes block"; exit 1; }
-$(BUILD)/readme/shapes: tests/readme_shapes.c $(BUILD)/readme/shapes_snippet.inc $(HEADER)
-	$(CC) -std=c99 $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -o $@ $(LIBS)
-	$(CXX) -std=c++11 -x c++ $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -x none -o $@-cxx $(LIBS)
-
-# The README's joints snippet (a hinge, a rope, a weld, the mouse drag),
-# cut out of README.md, runs inside tests/readme_joints.c the same way.
-$(BUILD)/readme/joints_snippet.inc: README.md
-	@mkdir -p $(dir $@)
-	awk '/^### Joints:/{q=1} q&&/^```c$$/{f=1;next} f&&/^```$$/{exit} f' README.md > $@
-	@test -s $@ || { echo "README.md has no joints block"; exit 1; }
-$(BUILD)/readme/joints: tests/readme_joints.c $(BUILD)/readme/joints_snippet.inc $(HEADER)
-	$(CC) -std=c99 $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -o $@ $(LIBS)
-	$(CXX) -std=c++11 -x c++ $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -x none -o $@-cxx $(LIBS)
-
-# The README's queries snippet (a ray, a pick, a blast), cut out of
-# README.md, runs inside tests/readme_queries.c the same way.
-$(BUILD)/readme/queries_snippet.inc: README.md
-	@mkdir -p $(dir $@)
-	awk '/^### Queries:/{q=1} q&&/^```c$$/{f=1;next} f&&/^```$$/{exit} f' README.md > $@
-	@test -s $@ || { echo "README.md has no queries block"; exit 1; }
-$(BUILD)/readme/queries: tests/readme_queries.c $(BUILD)/readme/queries_snippet.inc $(HEADER)
+	awk '/^### $(README_HEADING_$*):/{q=1} q&&/^```c$$/{f=1;next} f&&/^```$$/{exit} f' README.md > $@
+	@test -s $@ || { echo "README.md has no $* block"; exit 1; }
+$(BUILD)/readme/%: tests/readme_%.c $(BUILD)/readme/%_snippet.inc $(HEADER)
 	$(CC) -std=c99 $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -o $@ $(LIBS)
 	$(CXX) -std=c++11 -x c++ $(OPT) $(WARN) $(INC) -I$(BUILD)/readme $< -x none -o $@-cxx $(LIBS)
 
