@@ -29,7 +29,7 @@ TEST_DEP := $(TEST_SRC) tests/test.h $(wildcard tests/*.h tests/fuzz/*.h) $(HEAD
 # sdl_demo.c needs SDL2: built by `make sdl`, not by `make`
 EXAMPLES := $(filter-out $(BUILD)/examples/sdl_demo,$(patsubst examples/%.c,$(BUILD)/examples/%,$(wildcard examples/*.c)))
 
-.PHONY: all examples demo sdl test test-build test-browser bench clean check mutate
+.PHONY: mutants-apply all examples demo sdl test test-build test-browser bench clean check mutate
 
 all: examples
 examples: $(EXAMPLES)
@@ -155,10 +155,18 @@ test:
 
 # One configuration (C99 float, gcc) and the float determinism pin, for the
 # edit-test loop.  make check T=solver runs only the tests named so.
-check: $(BUILD)/tests/gcc-c99-float $(BUILD)/det/float-gcc-O2
+check: $(BUILD)/tests/gcc-c99-float $(BUILD)/det/float-gcc-O2 mutants-apply
 	@got=$$(./$(BUILD)/det/float-gcc-O2 | cut -d' ' -f2); echo " $(DET_PINS) " | grep -q " float:$$got " || \
 	  { echo "determinism FAILED: float hash $$got is not the pinned one ($(DET_PINS))"; exit 1; }
 	./$(BUILD)/tests/gcc-c99-float $(T)
+
+# Every planted bug of tests/mutate/mutants.txt still applies to the header
+# (its from text found exactly once): an edit that moves a line a mutant
+# names fails make check at once, not make mutate's long run.
+mutants-apply:
+	@mkdir -p $(BUILD)/mutate && for n in $$(awk -v mode=list -f tests/mutate/mutate.awk tests/mutate/mutants.txt | cut -f1); do \
+	  awk -v mode=apply -v name="$$n" -v out=$(BUILD)/mutate/apply-check.h -f tests/mutate/mutate.awk tests/mutate/mutants.txt $(HEADER) || exit 1; \
+	done
 
 # --- benchmarks: tests/bench/bench_*.c, each given a CSV path under build/bench
 BENCH_SRC  := $(wildcard tests/bench/bench_*.c)
