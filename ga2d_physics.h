@@ -2629,13 +2629,17 @@ GA2D_API ga2d_mass ga2d_capsule_mass(const ga2d_capsule *c, ga2d_real density)
    cheapest sibling by the perimeter ("surface area") heuristic, and AVL
    rotations keep it balanced, so a query visits O(log n + k) nodes.  The
    world keeps two: static bodies in one, moving bodies in the other, so a
-   static-static pair can never be made. */
+   static-static pair can never be made.  Each node also keeps the filter
+   categories under it (Box2D v3's trees do), so pair finding skips a
+   subtree none of whose shapes its mask lets in: a grid of bodies that
+   never touch one another finds no candidates at all. */
 typedef struct ga2d__node {
     ga2d_aabb box;
     int parent;           /* or the next free node */
     int child1, child2;   /* -1 at a leaf */
     int height;           /* 0 at a leaf, -1 when free */
-    int body;             /* a leaf's body slot */
+    int body;             /* a leaf's shape slot */
+    uint32_t category;    /* a leaf's shape's category bits; inner: its children's union */
 } ga2d__node;
 
 typedef struct ga2d__tree {
@@ -2709,8 +2713,10 @@ static int ga2d__tree_balance(ga2d__tree *t, int ia)
         else a->child1 = move;
         n[move].parent = ia;
         a->box = ga2d_aabb_union(n[io].box, n[move].box);
+        a->category = n[io].category | n[move].category;
         a->height = 1 + (n[io].height > n[move].height ? n[io].height : n[move].height);
         u->box = ga2d_aabb_union(a->box, n[keep].box);
+        u->category = a->category | n[keep].category;
         u->height = 1 + (a->height > n[keep].height ? a->height : n[keep].height);
         return iu;
     }
@@ -2729,6 +2735,7 @@ static void ga2d__tree_refit(ga2d__tree *t, int i)
         c2 = n->child2;
         n->height = 1 + (t->nodes[c1].height > t->nodes[c2].height ? t->nodes[c1].height : t->nodes[c2].height);
         n->box = ga2d_aabb_union(t->nodes[c1].box, t->nodes[c2].box);
+        n->category = t->nodes[c1].category | t->nodes[c2].category;
         i = n->parent;
     }
 }
@@ -2765,6 +2772,7 @@ static void ga2d__tree_insert_leaf(ga2d__tree *t, int leaf)
     n = t->nodes;
     n[parent].parent = old_parent;
     n[parent].box = ga2d_aabb_union(box, n[s].box);
+    n[parent].category = n[leaf].category | n[s].category;
     n[parent].height = n[s].height + 1;
     n[parent].child1 = s;
     n[parent].child2 = leaf;
@@ -2804,12 +2812,14 @@ static void ga2d__tree_remove_leaf(ga2d__tree *t, int leaf)
     }
 }
 
-/* A new leaf for `body` with box `box`; capacity must have been reserved. */
-static int ga2d__tree_create(ga2d__tree *t, ga2d_aabb box, int body)
+/* A new leaf for shape `body` with box `box` and the shape's category
+   bits; capacity must have been reserved. */
+static int ga2d__tree_create(ga2d__tree *t, ga2d_aabb box, int body, uint32_t category)
 {
     int leaf = ga2d__tree_alloc_node(t);
     t->nodes[leaf].box = box;
     t->nodes[leaf].body = body;
+    t->nodes[leaf].category = category;
     ga2d__tree_insert_leaf(t, leaf);
     return leaf;
 }
@@ -2827,18 +2837,31 @@ static void ga2d__tree_move(ga2d__tree *t, int leaf, ga2d_aabb box)
     ga2d__tree_insert_leaf(t, leaf);
 }
 
-/* Calls fn(ctx, body) for every leaf whose box overlaps q.  The stack
-   holds at most height + 1 entries; AVL balance keeps the height under
-   1.45 log2(leaves) + 2, far below 256 for any world that fits in memory. */
+/* A leaf's shape changed its categories: the unions above it follow. */
+static void ga2d__tree_set_category(ga2d__tree *t, int leaf, uint32_t category)
+{
+    int i;
+    t->nodes[leaf].category = category;
+    for (i = t->nodes[leaf].parent; i >= 0; i = t->nodes[i].parent)
+        t->nodes[i].category = t->nodes[t->nodes[i].child1].category | t->nodes[t->nodes[i].child2].category;
+}
+
+/* Calls fn(ctx, body) for every leaf whose box overlaps q and whose
+   categories meet `mask` (subtrees with none are skipped whole; with
+   GA2D__ALL_CATEGORIES, every leaf, a shape of no category too).  The
+   stack holds at most height + 1 entries; AVL balance keeps the height
+   under 1.45 log2(leaves) + 2, far below 256 for any world that fits in
+   memory. */
+#define GA2D__ALL_CATEGORIES 0xFFFFFFFFu
 typedef void ga2d__query_fn(void *ctx, int body);
-static void ga2d__tree_query(const ga2d__tree *t, ga2d_aabb q, ga2d__query_fn *fn, void *ctx)
+static void ga2d__tree_query(const ga2d__tree *t, ga2d_aabb q, uint32_t mask, ga2d__query_fn *fn, void *ctx)
 {
     int stack[256], top = 0;
     if (t->root < 0) return;
     stack[top++] = t->root;
     while (top > 0) {
         const ga2d__node *nd = &t->nodes[stack[--top]];
-        if (!ga2d_aabb_overlaps(nd->box, q)) continue;
+        if ((mask != GA2D__ALL_CATEGORIES && (nd->category & mask) == 0) || !ga2d_aabb_overlaps(nd->box, q)) continue;
         if (nd->child1 < 0) {
             fn(ctx, nd->body);
         } else {
@@ -4631,15 +4654,26 @@ typedef struct ga2d__soft { ga2d_real bias_rate, mass_scale, impulse_scale; } ga
 /* A joint slot (the joints section has what it does).  Joints live in a
    pool as bodies and shapes do, each on both its bodies' joint lists. */
 struct ga2d__joint {
+    /* what every pass reads first, together (a pass over thousands of
+       joints streams them: the solver's fields span two cache lines) */
     int type;                    /* ga2d_joint_type; -1 for a free slot */
-    uint32_t generation;
-    int next_free;
     int body[2];                 /* A's and B's slots */
-    int next[2];                 /* the next link on body[side]'s list, or -1 */
-    uint64_t serial;             /* creation order: the solver's order */
-    ga2d_vec local[2];           /* anchors in the bodies' frames, from their origins */
-    int collide_connected;
-    void *user_data;
+    int enable_limit, enable_motor, enable_spring;
+    /* impulses per substep, kept from step to step to warm start: the
+       point's (or the motor joint's linear), the axial ones (spring,
+       motor, limits: along the angle, or the distance joint's axis), and
+       the rigid axial one (distance: the length; weld and motor joint:
+       the angle) */
+    ga2d_vec linear_impulse;
+    ga2d_real spring_impulse, motor_impulse, lower_impulse, upper_impulse, impulse;
+    /* prepared each step: the anchors from the centres (world frame) and
+       the centres' offset, where the step began; the angle then, less the
+       reference (0 where no pass reads it); the masses and springs */
+    ga2d_vec ra, rb, delta_center;
+    ga2d_real delta_angle;
+    ga2d_real ima, imb, iia, iib, axial_mass;
+    ga2d_vec target;             /* motor joint: the offset in the world frame, step start */
+    ga2d__soft spring, linear_spring;
     /* what the kinds' defs set, shared where they mean the same:
        reference_angle  B's angle less A's at rest (revolute, weld), or
                         the target one (motor joint: angular_offset)
@@ -4655,22 +4689,14 @@ struct ga2d__joint {
     ga2d_real reference_angle, lower, upper, motor_speed, max_motor, hertz, damping_ratio;
     ga2d_real length, linear_hertz, linear_damping_ratio, max_force, max_torque, correction;
     ga2d_vec offset;
-    int enable_limit, enable_motor, enable_spring;
-    /* impulses per substep, kept from step to step to warm start: the
-       point's (or the motor joint's linear), the axial ones (spring,
-       motor, limits: along the angle, or the distance joint's axis), and
-       the rigid axial one (distance: the length; weld and motor joint:
-       the angle) */
-    ga2d_vec linear_impulse;
-    ga2d_real spring_impulse, motor_impulse, lower_impulse, upper_impulse, impulse;
-    /* prepared each step: the anchors from the centres (world frame) and
-       the centres' offset, where the step began; the angle then, less the
-       reference; the masses and springs */
-    ga2d_vec ra, rb, delta_center;
-    ga2d_real delta_angle;
-    ga2d_real ima, imb, iia, iib, axial_mass;
-    ga2d_vec target;             /* motor joint: the offset in the world frame, step start */
-    ga2d__soft spring, linear_spring;
+    /* the pool's and the lists' */
+    uint32_t generation;
+    int next_free;
+    int next[2];                 /* the next link on body[side]'s list, or -1 */
+    uint64_t serial;             /* creation order: the solver's order */
+    ga2d_vec local[2];           /* anchors in the bodies' frames, from their origins */
+    int collide_connected;
+    void *user_data;
 };
 
 
@@ -5495,7 +5521,10 @@ GA2D_API ga2d_result ga2d_body_set_filter(ga2d_world *w, ga2d_body_id id, ga2d_f
     int s;
     if (r != GA2D_OK) return r;
     ga2d__wake(w, ga2d__slot(id));
-    for (s = b->shape_head; s >= 0; s = w->shapes[s].next) w->shapes[s].filter = f;
+    for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
+        w->shapes[s].filter = f;
+        ga2d__tree_set_category(ga2d__tree_of(w, &w->shapes[s]), w->shapes[s].proxy, f.category_bits);
+    }
     ga2d__destroy_body_contacts(w, ga2d__slot(id), 1);
     ga2d__buffer_body(w, ga2d__slot(id)); /* pairs it may now make */
     return GA2D_OK;
@@ -6212,8 +6241,8 @@ static void ga2d__update_sensors(ga2d__step_context *c)
         if (se->type < 0 || !se->is_sensor) continue;
         box = ga2d__shape_aabb(se, ga2d__body_xf(&w->bodies[se->body]));
         w->sensor_scratch_count = 0;
-        ga2d__tree_query(&w->trees[0], box, ga2d__sensor_found, w);
-        ga2d__tree_query(&w->trees[1], box, ga2d__sensor_found, w);
+        ga2d__tree_query(&w->trees[0], box, GA2D__ALL_CATEGORIES, ga2d__sensor_found, w);
+        ga2d__tree_query(&w->trees[1], box, GA2D__ALL_CATEGORIES, ga2d__sensor_found, w);
         if (c->error == GA2D_ERR_OUT_OF_MEMORY) return;
         for (i = 0, n = 0; i < w->sensor_scratch_count; ++i)
             if (ga2d__sensor_sees(w, se, w->sensor_scratch[i])) w->sensor_scratch[n++] = w->sensor_scratch[i];
@@ -6537,7 +6566,8 @@ static void ga2d__shape_proxy(ga2d_world *w, int k)
 {
     ga2d__shape *sh = &w->shapes[k];
     const ga2d__body *b = &w->bodies[sh->body];
-    sh->proxy = ga2d__tree_create(ga2d__tree_of(w, sh), ga2d__fatten(ga2d__shape_aabb(sh, ga2d__body_xf(b)), ga2d__margin(w, b)), k);
+    sh->proxy = ga2d__tree_create(ga2d__tree_of(w, sh), ga2d__fatten(ga2d__shape_aabb(sh, ga2d__body_xf(b)), ga2d__margin(w, b)), k,
+                                  sh->filter.category_bits);
     ga2d__buffer_move(w, k);
 }
 
@@ -7042,6 +7072,7 @@ GA2D_API ga2d_result ga2d_shape_set_filter(ga2d_world *w, ga2d_shape_id id, ga2d
     if (r != GA2D_OK) return r;
     ga2d__wake(w, sh->body);
     sh->filter = f;
+    ga2d__tree_set_category(ga2d__tree_of(w, sh), sh->proxy, f.category_bits);
     link = ga2d__first_edge(w, sh->body);
     while (link >= 0) {
         int ci = link >> 1, next = ga2d__next_edge(w, link);
@@ -7782,11 +7813,15 @@ static void ga2d__find_pairs(ga2d__step_context *c, int begin, int end)
     for (k = begin; k < end; ++k) {
         int s = w->move_buf[k];
         ga2d__pair_query q;
+        const ga2d_filter *f = &w->shapes[s].filter;
         ga2d_aabb box = ga2d__fat_box(w, &w->shapes[s]);
+        /* the shapes its mask lets in (ga2d_should_collide); a positive
+           group lets its own in whatever their categories */
+        uint32_t mask = f->group_index > 0 ? GA2D__ALL_CATEGORIES : f->mask_bits;
         q.w = w;
         q.self = s;
-        ga2d__tree_query(&w->trees[1], box, ga2d__pair_found, &q);
-        if (w->bodies[w->shapes[s].body].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, ga2d__pair_found, &q);
+        ga2d__tree_query(&w->trees[1], box, mask, ga2d__pair_found, &q);
+        if (w->bodies[w->shapes[s].body].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, mask, ga2d__pair_found, &q);
     }
 }
 
@@ -10502,6 +10537,7 @@ static void ga2d__order_joints(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     int k, n = 0;
+    uint64_t last = 0; /* the largest serial listed */
     c->joint_active = 0;
     if (w->joint_count == 0) return;
     if (!ga2d__grow(&w->mem, (void **)&c->joint_order, &c->joint_order_capacity, w->joint_count, sizeof *c->joint_order)) {
@@ -10522,6 +10558,11 @@ static void ga2d__order_joints(ga2d__step_context *c)
             const ga2d__body *carrier = sleeper == a ? b : a;
             if (carrier->type == GA2D_BODY_KINEMATIC && (carrier->sim.v.x != 0 || carrier->sim.v.y != 0 || carrier->sim.w != 0))
                 (void)ga2d__field_wakes(w, sleeper, 1);
+            continue;
+        }
+        if (j->serial > last) { /* the pool's order is nearly creation order */
+            c->joint_order[n++] = k;
+            last = j->serial;
             continue;
         }
         for (at = n; at > 0 && w->joints[c->joint_order[at - 1]].serial > j->serial; --at) c->joint_order[at] = c->joint_order[at - 1];
@@ -10545,6 +10586,17 @@ static ga2d_real ga2d__joint_hertz(const ga2d__step_context *c, ga2d_real hertz)
     return hertz < GA2D__HERTZ_CAP * c->inv_h ? hertz : GA2D__HERTZ_CAP * c->inv_h;
 }
 
+/* Whether a joint's passes read its angle (ga2d__joint_angle). */
+static int ga2d__reads_angle(const ga2d__joint *j)
+{
+    switch (j->type) {
+    case GA2D_JOINT_REVOLUTE: return j->enable_spring || j->enable_limit;
+    case GA2D_JOINT_DISTANCE:
+    case GA2D_JOINT_WHEEL: return 0;
+    default: return 1;
+    }
+}
+
 /* Stage, over the step's joints: anchors, masses and the angle where the
    step began; a side the solver does not move gets its solver body.  The
    solver bodies must be there (ga2d__reserve_sbodies). */
@@ -10559,7 +10611,9 @@ static void ga2d__prepare_joints(ga2d__step_context *c, int begin, int end)
         j->ra = ga2d_rotate(a->sim.q, ga2d_vec_sub(j->local[0], a->sim.local_center));
         j->rb = ga2d_rotate(b->sim.q, ga2d_vec_sub(j->local[1], b->sim.local_center));
         j->delta_center = ga2d_vec_sub(b->sim.center, a->sim.center);
-        j->delta_angle = ga2d__wrap_angle(ga2d_rotor_angle(ga2d__relative_rotor(a->sim.q, b->sim.q)) - j->reference_angle);
+        /* the angle (two arctangents) only where a pass reads it: a bare
+           hinge or a distance or wheel joint never does */
+        j->delta_angle = ga2d__reads_angle(j) ? ga2d__wrap_angle(ga2d_rotor_angle(ga2d__relative_rotor(a->sim.q, b->sim.q)) - j->reference_angle) : 0;
         j->ima = ma ? a->sim.inv_mass : 0;
         j->imb = mb ? b->sim.inv_mass : 0;
         j->iia = ma ? a->sim.inv_inertia : 0;
@@ -10581,7 +10635,7 @@ static void ga2d__prepare_joints(ga2d__step_context *c, int begin, int end)
 /* A solver body's velocity state, and a turn applied to an anchor. */
 typedef struct ga2d__jbody { ga2d_vec v; ga2d_real w; } ga2d__jbody;
 
-static ga2d__jbody ga2d__jload(const ga2d__sbody *s)
+static GA2D__HOT ga2d__jbody ga2d__jload(const ga2d__sbody *s)
 {
     ga2d__jbody b;
     b.v = ga2d_vec_make(s->vx, s->vy);
@@ -10589,7 +10643,7 @@ static ga2d__jbody ga2d__jload(const ga2d__sbody *s)
     return b;
 }
 
-static void ga2d__jstore(ga2d__sbody *s, ga2d__jbody b)
+static GA2D__HOT void ga2d__jstore(ga2d__sbody *s, ga2d__jbody b)
 {
     s->vx = b.v.x;
     s->vy = b.v.y;
@@ -10598,13 +10652,13 @@ static void ga2d__jstore(ga2d__sbody *s, ga2d__jbody b)
 
 /* An anchor r (from the centre, where the step began) turned as its body
    has since: r dq. */
-static ga2d_vec ga2d__jturn(const ga2d__sbody *s, ga2d_vec r) { return ga2d_rotate(ga2d__rotor(s->dqc, s->dqs), r); }
+static GA2D__HOT ga2d_vec ga2d__jturn(const ga2d__sbody *s, ga2d_vec r) { return ga2d_rotate(ga2d__rotor(s->dqc, s->dqs), r); }
 
 /* The impulse P at anchors ra, rb and the axial impulse L (a torque
    impulse on B, its opposite on A): v += P / m, w += (r ^ P + L) / I on
    B, the opposite on A (the paper's impulse response, eq. for the
    angular part: the bivector r ^ P over the inertia). */
-static void ga2d__japply(const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, ga2d_vec ra, ga2d_vec rb, ga2d_vec P, ga2d_real L)
+static GA2D__HOT void ga2d__japply(const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, ga2d_vec ra, ga2d_vec rb, ga2d_vec P, ga2d_real L)
 {
     A->v = ga2d_vec_sub(A->v, ga2d_vec_scale(P, j->ima));
     A->w -= j->iia * (ga2d_wedge(ra, P) + L);
@@ -10614,14 +10668,14 @@ static void ga2d__japply(const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, g
 
 /* B's anchor less A's now: the centres' offset where the step began,
    their motion since, the turned anchors. */
-static ga2d_vec ga2d__joint_span(const ga2d__sbody *sa, const ga2d__sbody *sb, const ga2d__joint *j, ga2d_vec ra, ga2d_vec rb)
+static GA2D__HOT ga2d_vec ga2d__joint_span(const ga2d__sbody *sa, const ga2d__sbody *sb, const ga2d__joint *j, ga2d_vec ra, ga2d_vec rb)
 {
     return ga2d_vec_add(ga2d_vec_add(ga2d_vec_make(sb->dpx - sa->dpx, sb->dpy - sa->dpy), ga2d_vec_sub(rb, ra)), j->delta_center);
 }
 
 /* The velocity of B's anchor relative to A's: vb + w_b rb_perp - va -
    w_a ra_perp (the bivector w e12 acting on r). */
-static ga2d_vec ga2d__joint_cdot(const ga2d__jbody *A, const ga2d__jbody *B, ga2d_vec ra, ga2d_vec rb)
+static GA2D__HOT ga2d_vec ga2d__joint_cdot(const ga2d__jbody *A, const ga2d__jbody *B, ga2d_vec ra, ga2d_vec rb)
 {
     return ga2d_vec_sub(ga2d_vec_add(B->v, ga2d_vec_scale(ga2d_vec_perp(rb), B->w)),
                         ga2d_vec_add(A->v, ga2d_vec_scale(ga2d_vec_perp(ra), A->w)));
@@ -10681,7 +10735,7 @@ static ga2d_real ga2d__limit_impulse(const ga2d__step_context *c, ga2d_real mass
 /* K^-1 r for a point constraint's 2x2 mass matrix K at anchors ra, rb:
    K = (1/m_a + 1/m_b) 1 + (1/I_a) [ra_y^2, -ra_x ra_y; -ra_x ra_y, ra_x^2]
    + the same for B (the paper's impulse denominator, for any direction). */
-static ga2d_vec ga2d__point_solve(const ga2d__joint *j, ga2d_vec ra, ga2d_vec rb, ga2d_vec r)
+static GA2D__HOT ga2d_vec ga2d__point_solve(const ga2d__joint *j, ga2d_vec ra, ga2d_vec rb, ga2d_vec r)
 {
     ga2d_real k11 = j->ima + j->imb + j->iia * ra.y * ra.y + j->iib * rb.y * rb.y;
     ga2d_real k12 = -j->iia * ra.x * ra.y - j->iib * rb.x * rb.y;
@@ -10694,7 +10748,7 @@ static ga2d_vec ga2d__point_solve(const ga2d__joint *j, ga2d_vec ra, ga2d_vec rb
 /* The point constraint, B's anchor onto A's: the velocity error, and with
    a softness the separation `sep` fed back through it (NULL: rigid, no
    feedback: the relax pass). */
-static void ga2d__solve_point(const ga2d__step_context *c, ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, ga2d_vec ra,
+static GA2D__HOT void ga2d__solve_point(const ga2d__step_context *c, ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B, ga2d_vec ra,
                               ga2d_vec rb, ga2d_vec sep, const ga2d__soft *soft)
 {
     ga2d_vec rhs = ga2d__joint_cdot(A, B, ra, rb), P;
@@ -13262,7 +13316,7 @@ static int ga2d__snap_read_shapes(ga2d_world *t, ga2d__codec *k)
         ga2d__io_vec(k, &box.lower);
         ga2d__io_vec(k, &box.upper);
         if (!k->ok || !ga2d__snap_box_ok(box)) return 0;
-        sh->proxy = ga2d__tree_create(ga2d__tree_of(t, sh), box, i);
+        sh->proxy = ga2d__tree_create(ga2d__tree_of(t, sh), box, i, sh->filter.category_bits);
         if (queued) ga2d__buffer_move(t, i);
     }
     return 1;

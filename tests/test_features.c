@@ -500,6 +500,81 @@ static void filters_in_a_world(void)
     CHECK_NEAR(drop_b_on_a(cases[0].a, cases[0].b, 1, filt(4, all, -7)), 1.5, 4 * SLOP); /* no group in A: still collides */
 }
 
+/* The broadphase skips subtrees none of whose categories a shape's mask
+   lets in.  Two things it must not skip:
+   - a positive group collides its shapes whatever their categories: boxes
+     of category 0 and mask 0 in group 3, one static, one dropped from
+     0.5 m above it, rest stacked (centre y = 1.5), and in group 0 the
+     dropped one falls past it (below y = 0 after 1 s: free fall from 2 m
+     reaches -2.9 m);
+   - a shape refiltered to a category another's mask lets in is seen by
+     that shape's later searches: a ground of category 2 under a ball
+     whose mask lacks 2, refiltered to category 4 while the ball is 10 m
+     above it (its own search then finds nothing near), must catch the
+     ball (rest at y = 0.5 + 0.25 within 4 slops: a resting contact sinks
+     under one), by the shape's setter and by the body's. */
+static double rest_on_static(ga2d_filter fs, ga2d_filter fd)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_world *w;
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_body_id a, b;
+    double y;
+    int i;
+    wd.enable_sleep = 0;
+    w = ga2d_world_create(&wd);
+    if (!w) return -1;
+    bd.position = v2(0, 0.5);
+    a = ga2d_body_create(w, &bd);
+    sd.filter = fs;
+    add_box(w, a, &sd, 0.5, 0.5);
+    b = dynamic_body(w, 0, 2);
+    sd.filter = fd;
+    add_box(w, b, &sd, 0.5, 0.5);
+    for (i = 0; i < 60; ++i) ga2d_world_step(w, (ga2d_real)DT);
+    y = (double)ga2d_body_center(w, b).y;
+    ga2d_world_destroy(w);
+    return y;
+}
+
+static double ball_on_refiltered_ground(int by_body)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_world *w;
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_body_id g, b;
+    ga2d_shape_id gs;
+    double y;
+    int i;
+    wd.enable_sleep = 0;
+    w = ga2d_world_create(&wd);
+    if (!w) return -1;
+    bd.position = v2(0, 0);
+    g = ga2d_body_create(w, &bd);
+    sd.filter = filt(2, 0xFFFFFFFFu, 0);
+    gs = add_box(w, g, &sd, 5, 0.5);
+    b = dynamic_body(w, 0, 10.75);
+    sd.filter = filt(1, 0xFFFFFFFFu & ~2u, 0);
+    add_circle(w, b, &sd, 0.25);
+    ga2d_world_step(w, (ga2d_real)DT);
+    if (by_body) CHECK_RESULT(ga2d_body_set_filter(w, g, filt(4, 0xFFFFFFFFu, 0)), GA2D_OK);
+    else CHECK_RESULT(ga2d_shape_set_filter(w, gs, filt(4, 0xFFFFFFFFu, 0)), GA2D_OK);
+    for (i = 0; i < 180; ++i) ga2d_world_step(w, (ga2d_real)DT);
+    y = (double)ga2d_body_center(w, b).y;
+    ga2d_world_destroy(w);
+    return y;
+}
+
+static void filters_prune_the_search(void)
+{
+    CHECK_NEAR(rest_on_static(filt(0, 0, 3), filt(0, 0, 3)), 1.5, 4 * SLOP);
+    CHECK(rest_on_static(filt(0, 0, 0), filt(0, 0, 0)) < 0);
+    CHECK_NEAR(ball_on_refiltered_ground(0), 0.75, 4 * SLOP);
+    CHECK_NEAR(ball_on_refiltered_ground(1), 0.75, 4 * SLOP);
+}
+
 /* ============================================================ switches */
 /* A small scene that uses warm starting, friction, restitution and the
    solver kind: two boxes stacked off-centre, the top one pushed sideways,
@@ -897,6 +972,7 @@ void suite_features(void)
     test_run("features: the sleep switch", sleep_switch);
     test_run("features: a belt carries a box at its speed at steady state", conveyor_steady_state);
     test_run("features: filters decide contacts in a world", filters_in_a_world);
+    test_run("features: the broadphase's category pruning keeps groups and refilters", filters_prune_the_search);
     test_run("features: world switch setters step as the def", world_switch_setters);
     test_run("features: shape friction and restitution setters reach live contacts", shape_setters_reach_live_contacts);
     test_run("features: chain segments, their ghosts, and chain destroy", chain_segments_and_destroy);

@@ -18,7 +18,8 @@
 #   sh tests/bench/ab_header.sh [COMMIT [ROUNDS [scene ...]]]
 #
 # COMMIT defaults to 21b9092 (before shapes), ROUNDS to 5, the scenes to
-# large_pyramid and many_pyramids.  Run from the repository's top.  Writes
+# large_pyramid and many_pyramids.  AB_FULL=1 builds both drivers with every
+# scene (rain, mixed_pile, joint_grid too): for a COMMIT with joints.  Run from the repository's top.  Writes
 # $AB_DIR (default build/bench/ab): the two headers as built, the
 # binaries, ab.csv (runs: round, build, scene, ms/step, figure) and
 # steps.txt (steps: every round).
@@ -48,10 +49,11 @@ mkdir -p "$DIR/old" "$DIR/new"
 git show "$COMMIT:ga2d_physics.h" > "$DIR/old/ga2d_physics.h"
 # the working tree's header as it is now: an edit during the run changes nothing
 cp ga2d_physics.h "$DIR/new/ga2d_physics.h"
+[ "${AB_FULL:-0}" = 1 ] && ONLY=-DAB_FULL || ONLY=-DBENCH_BOXES_ONLY
 for b in old new; do
     # bench_scenes.c includes "ga2d_physics.h": its own folder has none, so -I picks the build's
-    $CC -std=c99 $OPT $WARN -DBENCH_BOXES_ONLY -I"$DIR/$b" tests/bench/bench_scenes.c -o "$DIR/bench_$b" -lm
-    $CC -std=c99 $OPT $WARN -DAB_SIDE=$b -I"$DIR/$b" -c tests/bench/ab_world.c -o "$DIR/ab_$b.o"
+    $CC -std=c99 $OPT $WARN $ONLY -I"$DIR/$b" tests/bench/bench_scenes.c -o "$DIR/bench_$b" -lm
+    $CC -std=c99 $OPT $WARN $ONLY -DAB_SIDE=$b -I"$DIR/$b" -c tests/bench/ab_world.c -o "$DIR/ab_$b.o"
 done
 $CC -std=c99 $OPT $WARN -c tests/bench/ab_steps.c -o "$DIR/ab_steps.o"
 $CC "$DIR/ab_steps.o" "$DIR/ab_old.o" "$DIR/ab_new.o" -o "$DIR/ab_steps" -lm

@@ -5,7 +5,7 @@
 #define _POSIX_C_SOURCE 199309L
 #define GA2D_IMPLEMENTATION
 #define GA2D_STATIC
-#ifndef BENCH_BOXES_ONLY
+#if !defined(BENCH_BOXES_ONLY) && !defined(AB_FULL)
 #define BENCH_BOXES_ONLY /* nothing the header before shapes lacks */
 #endif
 #include "ga2d_physics.h"
@@ -59,6 +59,7 @@ ab_world *AB_FN(make)(const char *scene)
         if (ok) a->ids[i] = sr__make_body(a->w, &a->s, i, 0);
         ok = ok && !ga2d_body_id_is_null(a->ids[i]);
     }
+    ok = ok && sr__make_joints(a->w, &a->s, a->ids); /* AB_FULL: joint_grid's */
     if (!ok) {
         AB_FN(free)(a);
         return NULL;
@@ -98,6 +99,10 @@ double AB_FN(figure)(const ab_world *a)
     if (a->s.figure == BENCH_FIG_DRIFT) {
         ga2d_vec c = ga2d_body_center(a->w, a->ids[a->s.probe]);
         return hypot((double)c.x - (double)a->start.x, (double)c.y - (double)a->start.y);
+    }
+    if (a->s.figure == BENCH_FIG_SAG) { /* start y - end y */
+        ga2d_vec c = ga2d_body_center(a->w, a->ids[a->s.probe]);
+        return (double)a->start.y - (double)c.y;
     }
     if (a->s.figure == BENCH_FIG_MOMENTUM) {
         double p[2];
