@@ -2723,19 +2723,31 @@ static int ga2d__tree_balance(ga2d__tree *t, int ia)
     return ia;
 }
 
-/* Refits boxes and heights from node i up to the root, rotating as it goes. */
+/* Refits boxes and heights from node i up to the root, rotating as it
+   goes; above i it stops at a node that neither turned nor changed (the
+   nodes above that see the same children they were fitted to).  Node i
+   itself is always refitted: a caller may have set its fields. */
 static void ga2d__tree_refit(ga2d__tree *t, int i)
 {
+    const int first = i;
     while (i >= 0) {
         ga2d__node *n;
-        int c1, c2;
+        ga2d_aabb box;
+        uint32_t category;
+        int c1, c2, height, at = i;
         i = ga2d__tree_balance(t, i);
         n = &t->nodes[i];
         c1 = n->child1;
         c2 = n->child2;
-        n->height = 1 + (t->nodes[c1].height > t->nodes[c2].height ? t->nodes[c1].height : t->nodes[c2].height);
-        n->box = ga2d_aabb_union(t->nodes[c1].box, t->nodes[c2].box);
-        n->category = t->nodes[c1].category | t->nodes[c2].category;
+        height = 1 + (t->nodes[c1].height > t->nodes[c2].height ? t->nodes[c1].height : t->nodes[c2].height);
+        box = ga2d_aabb_union(t->nodes[c1].box, t->nodes[c2].box);
+        category = t->nodes[c1].category | t->nodes[c2].category;
+        if (at != first && i == at && height == n->height && category == n->category && box.lower.x == n->box.lower.x &&
+            box.lower.y == n->box.lower.y && box.upper.x == n->box.upper.x && box.upper.y == n->box.upper.y)
+            return;
+        n->height = height;
+        n->box = box;
+        n->category = category;
         i = n->parent;
     }
 }
