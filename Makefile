@@ -25,7 +25,7 @@ HEADER  := ga2d_physics.h
 NPROC   := $(shell nproc 2>/dev/null || echo 2)
 
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
-TEST_DEP := $(TEST_SRC) tests/test.h $(wildcard tests/*.h tests/fuzz/*.h) $(HEADER)
+TEST_DEP := $(TEST_SRC) tests/test.h $(wildcard tests/*.h tests/fuzz/*.h) examples/task_pool.h $(HEADER)
 # sdl_demo.c needs SDL2: built by `make sdl`, not by `make`
 EXAMPLES := $(filter-out $(BUILD)/examples/sdl_demo,$(patsubst examples/%.c,$(BUILD)/examples/%,$(wildcard examples/*.c)))
 
@@ -36,7 +36,7 @@ examples: $(EXAMPLES)
 
 $(BUILD)/examples/%: examples/%.c $(HEADER) $(wildcard examples/*.h)
 	@mkdir -p $(dir $@)
-	$(CC) -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
+	$(CC) -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS) -pthread
 
 demo: $(BUILD)/examples/pyramid
 	./$(BUILD)/examples/pyramid
@@ -74,7 +74,7 @@ TEST_BINS := $(addprefix $(BUILD)/tests/,$(TEST_CONFIGS))
 
 $(BUILD)/tests/%: $(TEST_DEP)
 	@mkdir -p $(dir $@)
-	$(CFG_$*) $(OPT) $(WARN) $(INC) $(TEST_SRC) -x none -o $@ $(LIBS)
+	$(CFG_$*) $(OPT) $(WARN) $(INC) $(TEST_SRC) -x none -o $@ $(LIBS) -pthread
 
 # The README's quick start, cut out of README.md, must build warning-free as
 # C99 and C++11 and run.

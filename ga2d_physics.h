@@ -747,6 +747,24 @@ typedef void ga2d_force_fn(ga2d_world *world, void *context);
 struct ga2d_manifold;
 typedef int ga2d_pre_solve_fn(ga2d_shape_id shape_a, ga2d_shape_id shape_b, const struct ga2d_manifold *m, void *context);
 
+/* Threads through the user's task system (Box2D v3's shape): the world
+   never starts a thread.  enqueue_task splits items [0, item_count) into
+   ranges of at least min_range items, calls task(start, end, worker,
+   task_context) for each on any of its worker_count workers (worker in
+   [0, worker_count)), and returns a handle for finish_task, which waits
+   for all of them; or it runs them itself and returns NULL (finish_task
+   is then not called).  The step hands over ranges of the stages whose
+   items write only their own data, once a step each: the narrowphase and
+   the bodies' broadphase-box and start marks.  The solver's passes still
+   run on the calling thread (they are one chain until they are coloured),
+   so a second worker gains little yet.  Results are the same bits for any
+   worker count and any split.  The world is locked while a task runs: a
+   task system must not call it. */
+typedef void ga2d_task_fn(int start_index, int end_index, int worker_index, void *task_context);
+typedef void *ga2d_enqueue_task_fn(ga2d_task_fn *task, int item_count, int min_range, void *task_context, void *user_context);
+typedef void ga2d_finish_task_fn(void *user_task, void *user_context);
+#define GA2D_MAX_WORKERS 256
+
 typedef struct ga2d_world_def {
     ga2d_vec gravity;                     /* m/s^2; default (0, -10), |g| <= GA2D_MAX_GRAVITY */
     int substeps;                         /* per step; 0 means 4 */
@@ -777,6 +795,10 @@ typedef struct ga2d_world_def {
     ga2d_real hit_event_threshold;        /* m/s of approach for a hit event; 0 means 1 */
     int enable_continuous;                /* sweep fast bodies against static shapes
                                              (default 1; see ga2d_body_def.is_bullet) */
+    int worker_count;                     /* 0 or 1: one thread; at most GA2D_MAX_WORKERS */
+    ga2d_enqueue_task_fn *enqueue_task;   /* NULL: the step runs every stage itself */
+    ga2d_finish_task_fn *finish_task;     /* set with enqueue_task, or neither */
+    void *user_task_context;
     int internal_cookie;                  /* set by the default functions; leave it */
 } ga2d_world_def;
 
@@ -4748,6 +4770,9 @@ typedef struct ga2d__step_context {
     int changed_capacity;        /* in 64-bit words */
     uint64_t *refits;            /* a bit per moving body whose tree leaf holds a new box */
     int refit_capacity;          /* in 64-bit words */
+    int *tally;                  /* a count per block of a split stage's items (a range writes
+                                    its first block's), summed after it */
+    int tally_capacity;
     ga2d_real rk4_at, rk4_weight; /* the RK4 stage under way: its time in substeps, its weight */
 } ga2d__step_context;
 
@@ -4766,6 +4791,30 @@ static void ga2d__run(ga2d__step_context *c, ga2d__range_fn *fn, int n)
 {
     if (n > 0) fn(c, 0, n);
 }
+
+/* A stage whose items write only their own data (and whole 64-bit words
+   of the step's bit sets) runs in ranges on the user's workers: the task
+   system sees blocks of GA2D__SPLIT_BLOCK items, so no two ranges share a
+   word.  Below GA2D__SPLIT_MIN items it is not worth a hand-off. */
+#define GA2D__SPLIT_BLOCK 64
+#define GA2D__SPLIT_MIN 256
+#define GA2D__SPLIT_MIN_BLOCKS 2
+typedef struct ga2d__task {
+    ga2d__step_context *c;
+    ga2d__range_fn *fn;
+    int n;
+} ga2d__task;
+
+static void ga2d__task_entry(int start, int end, int worker, void *context)
+{
+    const ga2d__task *t = (const ga2d__task *)context;
+    int begin = start * GA2D__SPLIT_BLOCK, stop = end * GA2D__SPLIT_BLOCK;
+    (void)worker;
+    if (stop > t->n) stop = t->n;
+    if (begin < stop) t->fn(t->c, begin, stop);
+}
+
+static void ga2d__run_split(ga2d__step_context *c, ga2d__range_fn *fn, int n);
 
 struct ga2d_world {
     ga2d_world_def def;          /* as resolved at creation, kept current */
@@ -4819,6 +4868,26 @@ struct ga2d_world {
     int *wake_queue;             /* one entry per body slot */
     int wake_capacity;
 };
+
+/* A split stage: on the user's workers when the world has them and the
+   stage is long enough, else here. */
+static void ga2d__run_split(ga2d__step_context *c, ga2d__range_fn *fn, int n)
+{
+    const ga2d_world *w = c->world;
+    ga2d__task t;
+    void *handle;
+    if (n <= 0) return;
+    if (w->def.worker_count <= 1 || !w->def.enqueue_task || n < GA2D__SPLIT_MIN) {
+        fn(c, 0, n);
+        return;
+    }
+    t.c = c;
+    t.fn = fn;
+    t.n = n;
+    handle = w->def.enqueue_task(ga2d__task_entry, (n + GA2D__SPLIT_BLOCK - 1) / GA2D__SPLIT_BLOCK, GA2D__SPLIT_MIN_BLOCKS, &t,
+                                 w->def.user_task_context);
+    if (handle) w->def.finish_task(handle, w->def.user_task_context);
+}
 
 /* Why a world refuses changes: the bits of ga2d_world.lock.  User code
    runs inside the library at four places (the force callback, the debug
@@ -5708,6 +5777,10 @@ static void ga2d__resolve_world_def(const ga2d_world_def *in, ga2d_world_def *ou
     GA2D__TAKE(pre_solve_context);
     GA2D__TAKE_NONZERO(hit_event_threshold);
     GA2D__TAKE(enable_continuous);
+    GA2D__TAKE(worker_count);
+    GA2D__TAKE(enqueue_task);
+    GA2D__TAKE(finish_task);
+    GA2D__TAKE(user_task_context);
 }
 
 /* |v| s, with |v| taken after scaling by the larger component: finite
@@ -5746,6 +5819,8 @@ static ga2d_result ga2d__world_def_check(const ga2d_world_def *d)
         d->restitution_threshold < 0 || d->hit_event_threshold < 0)
         return GA2D_ERR_INVALID_ARGUMENT;
     if ((d->allocator.alloc == NULL) != (d->allocator.free == NULL)) return GA2D_ERR_INVALID_ARGUMENT;
+    if (d->worker_count < 0 || d->worker_count > GA2D_MAX_WORKERS || (d->enqueue_task == NULL) != (d->finish_task == NULL))
+        return GA2D_ERR_INVALID_ARGUMENT;
     return GA2D_OK;
 }
 
@@ -7913,7 +7988,7 @@ static void ga2d__warm_points(const ga2d_manifold *last, ga2d_manifold *m, ga2d_
 static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
-    int ci;
+    int ci, carried = 0;
     for (ci = begin; ci < end; ++ci) {
         ga2d__contact *ct = &w->contacts[ci];
         const ga2d__body *a, *b;
@@ -7933,7 +8008,7 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
         xa = ga2d__body_xf(a);
         xb = ga2d__body_xf(b);
         if (ga2d__reuse_manifold(w, ct, a, b, xa, xb)) {
-            ++w->counters.manifolds_carried;
+            ++carried;
         } else {
             /* keep points as far apart as the pair can close in one step:
                speculative points only let bodies approach up to the gap */
@@ -7956,6 +8031,15 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
         if (ct->touching && (!a->awake || !b->awake)) ct->flags |= GA2D__CONTACT_WAKES;
         if (ct->flags) c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
     }
+    c->tally[begin / GA2D__SPLIT_BLOCK] = carried; /* a range's own slot (ranges start on blocks) */
+}
+
+/* Book-keeping: the manifolds carried, summed over the ranges' slots. */
+static void ga2d__count_carried(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, n = (w->contact_used + GA2D__SPLIT_BLOCK - 1) / GA2D__SPLIT_BLOCK;
+    for (k = 0; k < n; ++k) w->counters.manifolds_carried += c->tally[k];
 }
 
 /* Book-keeping before the narrowphase: a clear bit for every pool contact.
@@ -7963,12 +8047,15 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
 static int ga2d__reserve_changes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
+    int blocks = (w->contact_used + GA2D__SPLIT_BLOCK - 1) / GA2D__SPLIT_BLOCK;
     if (!ga2d__grow(&w->mem, (void **)&c->changed, &c->changed_capacity, (w->contact_used + 63) / 64,
-                    sizeof *c->changed)) {
+                    sizeof *c->changed) ||
+        !ga2d__grow(&w->mem, (void **)&c->tally, &c->tally_capacity, blocks, sizeof *c->tally)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return 0;
     }
     ga2d__bits_zero(c->changed, w->contact_used);
+    if (blocks > 0) memset(c->tally, 0, (size_t)blocks * sizeof *c->tally);
     w->counters.manifolds_carried = 0;
     return 1;
 }
@@ -11138,6 +11225,7 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->sbodies, &c->sbody_capacity, sizeof *c->sbodies);
     ga2d__release(w, (void **)&c->last_group, &c->last_group_capacity, sizeof *c->last_group);
     ga2d__release(w, (void **)&c->changed, &c->changed_capacity, sizeof *c->changed);
+    ga2d__release(w, (void **)&c->tally, &c->tally_capacity, sizeof *c->tally);
 }
 
 /* Everything the context holds, freed with its world. */
@@ -11152,6 +11240,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->last_group, c->last_group_capacity);
     GA2D__FREE_ARRAY(a, c->changed, c->changed_capacity);
     GA2D__FREE_ARRAY(a, c->refits, c->refit_capacity);
+    GA2D__FREE_ARRAY(a, c->tally, c->tally_capacity);
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
 }
 
@@ -11980,17 +12069,18 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__step_begin(w, dt, h);
     /* collision: fat boxes, new pairs, manifolds */
     ga2d__bits_zero(c->refits, w->moving_count);
-    ga2d__run(c, ga2d__mark_refits, w->moving_count);
+    ga2d__run_split(c, ga2d__mark_refits, w->moving_count);
     ga2d__refit_proxies(c);
     ga2d__run(c, ga2d__find_pairs, w->move_count);
     ga2d__create_pairs(c);
     if (ga2d__reserve_changes(c)) {
-        ga2d__run(c, ga2d__collide_contacts, w->contact_used);
+        ga2d__run_split(c, ga2d__collide_contacts, w->contact_used);
+        ga2d__count_carried(c);
         ga2d__contact_changes(c);
     }
     /* constraints, the collision phase, the lanes */
     ga2d__order_constraints(c); /* and prepares them, a block at a time */
-    ga2d__run(c, ga2d__remember_start, w->moving_count);
+    ga2d__run_split(c, ga2d__remember_start, w->moving_count);
     if (w->def.enable_restitution) ga2d__restitute(c);
     ga2d__assign_lanes(c);
     ga2d__run(c, ga2d__pad_groups, c->group_count);
@@ -12015,7 +12105,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     else w->counters.continuous_bodies = w->counters.continuous_hits = 0;
     /* boxes for the queries between steps, and their pairs */
     ga2d__bits_zero(c->refits, w->moving_count);
-    ga2d__run(c, ga2d__mark_strays, w->moving_count);
+    ga2d__run_split(c, ga2d__mark_strays, w->moving_count);
     ga2d__refit_proxies(c);
     if (w->move_count > 0) {
         ga2d__run(c, ga2d__find_pairs, w->move_count);
@@ -13608,6 +13698,10 @@ GA2D_API ga2d_result ga2d_world_snapshot_load(ga2d_world *w, const void *buf, si
     d.force_context = w->def.force_context;
     d.pre_solve = w->def.pre_solve;
     d.pre_solve_context = w->def.pre_solve_context;
+    d.worker_count = w->def.worker_count;
+    d.enqueue_task = w->def.enqueue_task;
+    d.finish_task = w->def.finish_task;
+    d.user_task_context = w->def.user_task_context;
     if (d.internal_cookie != GA2D_DEF_COOKIE || ga2d__world_def_check(&d) != GA2D_OK || d.substeps == 0 ||
         d.length_units_per_meter == 0)
         return GA2D_ERR_BAD_SNAPSHOT;

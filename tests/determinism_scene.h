@@ -120,14 +120,15 @@ static inline int dscene_joints(dscene *s)
     return 1;
 }
 
-static inline int dscene_build(dscene *s)
+/* The scene in a world made from `wd` (the defaults, or the same with a
+   task system: tests/test_threads.c). */
+static inline int dscene_build_in(dscene *s, const ga2d_world_def *wd)
 {
-    ga2d_world_def wd = ga2d_default_world_def();
     ga2d_body_def d = ga2d_default_body_def();
     int i, j;
     memset(s, 0, sizeof *s);
     s->lcg = 12345u;
-    s->w = ga2d_world_create(&wd);
+    s->w = ga2d_world_create(wd);
     if (!s->w) return 0;
     d.polygon = ga2d_polygon_box(20, (ga2d_real)0.5);
     d.position = ga2d_vec_make(0, (ga2d_real)-0.5);
@@ -158,6 +159,12 @@ static inline int dscene_build(dscene *s)
     for (i = 0; i < s->count; ++i)
         if (ga2d_body_id_is_null(s->ids[i])) return 0;
     return dscene_joints(s);
+}
+
+static inline int dscene_build(dscene *s)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    return dscene_build_in(s, &wd);
 }
 
 /* Step `step` of the churn: from step 40 to 400, every 20 steps three

@@ -75,6 +75,7 @@ void suite_queries(void);
 void suite_continuous(void);
 void suite_mover(void);
 void suite_restitution_fast(void);
+void suite_threads(void);
 
 #ifdef __cplusplus
 }

@@ -102,6 +102,7 @@ int main(int argc, char **argv)
     suite_continuous();
     suite_mover();
     suite_restitution_fast();
+    suite_threads();
     suite_accepted();
     suite_determinism();
     suite_snapshot();

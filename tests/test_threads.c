@@ -1,0 +1,319 @@
+/* test_threads.c - the step on the user's task system (DESIGN §13): the
+   same bits for any worker count and any way of cutting and ordering the
+   ranges, the def's task fields checked, and a task system that calls the
+   world while a stage runs is refused.
+
+   Task systems: examples/task_pool.h with 1 to 4 workers (threads); one
+   that runs the ranges itself on this thread, last range first, at the
+   least range the step allows (so a stage that wrote another range's
+   items, or depended on their order, would show); one that runs them all
+   at once and returns NULL. */
+#include "test.h"
+#include "determinism_scene.h"
+#define TASK_POOL_IMPLEMENTATION
+#include "../examples/task_pool.h"
+
+/* ------------------------------------------------- a backwards system */
+typedef struct backwards {
+    int calls, ranges, items, bad;
+    int probe;          /* call the world from inside enqueue */
+    ga2d_world *world;
+    ga2d_result probed; /* what the world answered */
+} backwards;
+
+static void *backwards_enqueue(ga2d_task_fn *task, int count, int min_range, void *context, void *user)
+{
+    backwards *b = (backwards *)user;
+    int range = min_range < 1 ? 1 : min_range, ranges = (count + range - 1) / range, k, *seen;
+    ++b->calls;
+    if (b->probe && b->world) {
+        ga2d_body_def d = ga2d_default_body_def();
+        b->probed = ga2d_world_step(b->world, (ga2d_real)1 / 60);
+        if (ga2d_world_set_gravity(b->world, ga2d_vec_make(0, 0)) != GA2D_ERR_LOCKED) b->probed = GA2D_OK;
+        if (!ga2d_body_id_is_null(ga2d_body_create(b->world, &d))) b->probed = GA2D_OK;
+    }
+    seen = (int *)calloc((size_t)(count > 0 ? count : 1), sizeof *seen);
+    for (k = ranges - 1; k >= 0; --k) { /* last first; workers 0..3 in turn */
+        int start = k * range, end = start + range < count ? start + range : count, i;
+        task(start, end, k % 4, context);
+        for (i = start; seen && i < end; ++i) ++seen[i];
+        ++b->ranges;
+    }
+    for (k = 0; seen && k < count; ++k) b->bad += seen[k] != 1;
+    free(seen);
+    b->items += count;
+    return b; /* a handle: finish is called */
+}
+
+static void backwards_finish(void *task, void *user)
+{
+    if (task != user) ((backwards *)user)->bad += 1000;
+}
+
+/* runs every range at once, here, and returns NULL: finish must not be called */
+static void *inline_enqueue(ga2d_task_fn *task, int count, int min_range, void *context, void *user)
+{
+    (void)min_range;
+    ++*(int *)user;
+    task(0, count, 0, context);
+    return NULL;
+}
+
+static void inline_finish(void *task, void *user)
+{
+    (void)task;
+    *(int *)user += 1000000; /* never: enqueue returned NULL */
+}
+
+/* --------------------------------------------------- a big mixed scene */
+/* Enough of everything that every split stage is cut into many ranges: a
+   pyramid of base 30 (465 boxes, about 1 400 contacts), 60 discs dropped
+   on it, and a chain of 20 links on revolute joints swinging into it
+   from a post.  Hash: every body's state, as the determinism scene's. */
+#define BIG_BASE 30
+#define BIG_DISCS 60
+#define BIG_LINKS 20
+#define BIG_STEPS 240
+#define BIG_MAX (1 + BIG_BASE * (BIG_BASE + 1) / 2 + BIG_DISCS + BIG_LINKS + 1)
+
+static uint64_t big_hash(ga2d_world *w, const ga2d_body_id *ids, int n)
+{
+    uint64_t h = 14695981039346656037ull;
+    int i;
+    for (i = 0; i < n; ++i) {
+        ga2d_vec x = ga2d_body_position(w, ids[i]), v = ga2d_body_velocity(w, ids[i]);
+        ga2d_rotor q = ga2d_body_rotor(w, ids[i]);
+        ga2d_real om = ga2d_body_angular_velocity(w, ids[i]);
+        h = dscene_fnv(h, &x, sizeof x);
+        h = dscene_fnv(h, &q, sizeof q);
+        h = dscene_fnv(h, &v, sizeof v);
+        h = dscene_fnv(h, &om, sizeof om);
+    }
+    return h;
+}
+
+/* Steps the big scene in a world made from wd; returns its hash (0: not
+   built) and the manifolds carried over the run in *carried. */
+static uint64_t big_run(const ga2d_world_def *wd, long *carried)
+{
+    ga2d_world *w = ga2d_world_create(wd);
+    ga2d_body_id *ids = (ga2d_body_id *)malloc(sizeof *ids * BIG_MAX);
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    uint64_t h = 0;
+    int n = 0, row, i, ok = w != NULL && ids != NULL;
+    *carried = 0;
+    if (ok) {
+        d.polygon = ga2d_polygon_box(40, (ga2d_real)0.5);
+        d.position = ga2d_vec_make(0, (ga2d_real)-0.5);
+        ids[n++] = ga2d_body_create(w, &d);
+        d.type = GA2D_BODY_DYNAMIC;
+        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+        for (row = 0; row < BIG_BASE; ++row)
+            for (i = 0; i < BIG_BASE - row; ++i) {
+                d.position = ga2d_vec_make((ga2d_real)(i - 0.5 * (BIG_BASE - row - 1)) * (ga2d_real)1.05, (ga2d_real)(0.5 + row));
+                ids[n++] = ga2d_body_create(w, &d);
+            }
+        d.polygon.count = 0;
+        for (i = 0; i < BIG_DISCS; ++i) {
+            ga2d_circle c;
+            c.center = ga2d_vec_make(0, 0);
+            c.radius = (ga2d_real)0.3;
+            d.position = ga2d_vec_make((ga2d_real)(-9 + 0.3 * i), (ga2d_real)(BIG_BASE + 3 + (i % 3)));
+            ids[n] = ga2d_body_create(w, &d);
+            ga2d_shape_create_circle(w, ids[n++], &sd, &c);
+        }
+        /* the chain: a post, then links to the left of the pyramid */
+        d.type = GA2D_BODY_STATIC;
+        d.position = ga2d_vec_make(-25, 25);
+        ids[n++] = ga2d_body_create(w, &d);
+        d.type = GA2D_BODY_DYNAMIC;
+        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.1);
+        for (i = 0; i < BIG_LINKS; ++i) {
+            ga2d_revolute_joint_def j = ga2d_default_revolute_joint_def();
+            d.position = ga2d_vec_make((ga2d_real)(-24.5 + i), 25);
+            ids[n] = ga2d_body_create(w, &d);
+            j.body_a = ids[n - 1];
+            j.body_b = ids[n];
+            j.local_anchor_a = ga2d_vec_make(i == 0 ? 0 : (ga2d_real)0.5, 0);
+            j.local_anchor_b = ga2d_vec_make((ga2d_real)-0.5, 0);
+            ok = ok && !ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &j));
+            ++n;
+        }
+        for (i = 0; ok && i < BIG_STEPS; ++i) {
+            ok = ga2d_world_step(w, (ga2d_real)1 / 60) == GA2D_OK;
+            *carried += ga2d_world_get_counters(w).manifolds_carried;
+        }
+        if (ok) h = big_hash(w, ids, n);
+    }
+    ga2d_world_destroy(w);
+    free(ids);
+    return h;
+}
+
+static ga2d_world_def with_pool(task_pool *p)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    wd.worker_count = task_pool_workers(p);
+    wd.enqueue_task = task_pool_enqueue;
+    wd.finish_task = task_pool_finish;
+    wd.user_task_context = p;
+    return wd;
+}
+
+static ga2d_world_def with_backwards(backwards *b)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    memset(b, 0, sizeof *b);
+    wd.worker_count = 4;
+    wd.enqueue_task = backwards_enqueue;
+    wd.finish_task = backwards_finish;
+    wd.user_task_context = b;
+    return wd;
+}
+
+/* The determinism scene (with churn, 600 steps) gives the one hash with
+   1 to 4 pooled workers, backwards and inline as without a task system. */
+static void any_worker_count_same_bits(void)
+{
+    int asleep, workers, calls = 0;
+    uint64_t want = dscene_run(1, &asleep);
+    backwards b;
+    ga2d_world_def wd;
+    CHECK(want != 0);
+    for (workers = 1; workers <= 4; ++workers) {
+        task_pool *p = task_pool_create(workers);
+        dscene s;
+        int step;
+        CHECK(p != NULL);
+        if (!p) continue;
+        wd = with_pool(p);
+        CHECK(dscene_build_in(&s, &wd));
+        for (step = 0; step < DSCENE_STEPS; ++step) {
+            dscene_churn(&s, step);
+            ga2d_world_step(s.w, (ga2d_real)1 / 60);
+        }
+        if (dscene_hash(&s) != want)
+            test_fail(__FILE__, __LINE__, "%d workers: hash %016llx, %016llx without", workers, (unsigned long long)dscene_hash(&s),
+                      (unsigned long long)want);
+        ga2d_world_destroy(s.w);
+        task_pool_destroy(p);
+    }
+    {
+        dscene s;
+        int step;
+        wd = with_backwards(&b);
+        CHECK(dscene_build_in(&s, &wd));
+        for (step = 0; step < DSCENE_STEPS; ++step) {
+            dscene_churn(&s, step);
+            ga2d_world_step(s.w, (ga2d_real)1 / 60);
+        }
+        CHECK(dscene_hash(&s) == want);
+        CHECK(b.bad == 0);
+        ga2d_world_destroy(s.w);
+        wd = ga2d_default_world_def();
+        wd.worker_count = 2;
+        wd.enqueue_task = inline_enqueue;
+        wd.finish_task = inline_finish;
+        wd.user_task_context = &calls;
+        CHECK(dscene_build_in(&s, &wd));
+        for (step = 0; step < DSCENE_STEPS; ++step) {
+            dscene_churn(&s, step);
+            ga2d_world_step(s.w, (ga2d_real)1 / 60);
+        }
+        CHECK(dscene_hash(&s) == want);
+        CHECK(calls < 1000000); /* finish never called after a NULL handle */
+        ga2d_world_destroy(s.w);
+    }
+}
+
+/* The big scene: the same bits and the same count of carried manifolds
+   with every task system, and the stages really were cut (the backwards
+   system saw many ranges, each item once). */
+static void big_scene_same_bits(void)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    long carried, want_carried;
+    uint64_t want = big_run(&wd, &want_carried);
+    backwards b;
+    int workers;
+    CHECK(want != 0);
+    CHECK(want_carried > 0); /* the counter the split stage sums is exercised */
+    for (workers = 2; workers <= 4; ++workers) {
+        task_pool *p = task_pool_create(workers);
+        CHECK(p != NULL);
+        if (!p) continue;
+        wd = with_pool(p);
+        if (big_run(&wd, &carried) != want || carried != want_carried)
+            test_fail(__FILE__, __LINE__, "%d workers: the big scene differs (carried %ld, %ld without)", workers, carried, want_carried);
+        task_pool_destroy(p);
+    }
+    wd = with_backwards(&b);
+    CHECK(big_run(&wd, &carried) == want);
+    CHECK(carried == want_carried);
+    CHECK(b.bad == 0);
+    CHECK(b.calls > BIG_STEPS); /* several stages a step were handed over */
+    CHECK(b.ranges > 4 * b.calls); /* and cut: at least the narrowphase's ~22 blocks */
+}
+
+/* The def's task fields: a negative or too large worker count, or one of
+   enqueue and finish without the other, is refused (validate and create);
+   a task system that calls the world from inside a stage gets LOCKED and
+   the step goes on (the same bits). */
+static void task_fields_checked(void)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    backwards b;
+    long carried;
+    uint64_t want;
+    wd.worker_count = -1;
+    CHECK_RESULT(ga2d_world_def_validate(&wd), GA2D_ERR_INVALID_ARGUMENT);
+    CHECK(ga2d_world_create(&wd) == NULL);
+    wd.worker_count = GA2D_MAX_WORKERS + 1;
+    CHECK_RESULT(ga2d_world_def_validate(&wd), GA2D_ERR_INVALID_ARGUMENT);
+    wd.worker_count = GA2D_MAX_WORKERS;
+    CHECK_RESULT(ga2d_world_def_validate(&wd), GA2D_OK);
+    wd.enqueue_task = backwards_enqueue;
+    CHECK_RESULT(ga2d_world_def_validate(&wd), GA2D_ERR_INVALID_ARGUMENT);
+    CHECK(ga2d_world_create(&wd) == NULL);
+    wd.enqueue_task = NULL;
+    wd.finish_task = backwards_finish;
+    CHECK_RESULT(ga2d_world_def_validate(&wd), GA2D_ERR_INVALID_ARGUMENT);
+    wd.enqueue_task = backwards_enqueue;
+    CHECK_RESULT(ga2d_world_def_validate(&wd), GA2D_OK);
+    /* the world called from its task system */
+    wd = ga2d_default_world_def();
+    want = big_run(&wd, &carried);
+    wd = with_backwards(&b);
+    b.probe = 1;
+    b.probed = GA2D_ERR_LOCKED;
+    {
+        ga2d_world *w = ga2d_world_create(&wd);
+        ga2d_body_def d = ga2d_default_body_def();
+        int i;
+        CHECK(w != NULL);
+        if (!w) return;
+        b.world = w;
+        d.type = GA2D_BODY_DYNAMIC;
+        d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+        for (i = 0; i < 400; ++i) { /* enough bodies that the step hands stages over */
+            d.position = ga2d_vec_make((ga2d_real)(i % 20), (ga2d_real)(i / 20));
+            ga2d_body_create(w, &d);
+        }
+        CHECK_RESULT(ga2d_world_step(w, (ga2d_real)1 / 60), GA2D_OK);
+        CHECK(b.calls > 0);
+        CHECK_RESULT(b.probed, GA2D_ERR_LOCKED);
+        CHECK(ga2d_world_body_count(w) == 400);
+        ga2d_world_destroy(w);
+    }
+    b.probe = 0;
+    b.world = NULL;
+    CHECK(big_run(&wd, &carried) == want);
+}
+
+void suite_threads(void)
+{
+    test_run("threads: the determinism scene's hash with 1-4 workers, backwards and inline", any_worker_count_same_bits);
+    test_run("threads: a big mixed scene's bits and counters with every task system", big_scene_same_bits);
+    test_run("threads: task fields checked; the world refuses its task system", task_fields_checked);
+}
