@@ -4675,6 +4675,7 @@ typedef struct ga2d__shape {
    them by pointer. */
 typedef struct ga2d__contact_constraint ga2d__contact_constraint;
 typedef struct ga2d__group ga2d__group;
+typedef struct ga2d__fill { int count, skip; } ga2d__fill;
 typedef struct ga2d__group_extra ga2d__group_extra;
 typedef struct ga2d__sbody ga2d__sbody;
 typedef struct ga2d__joint ga2d__joint;
@@ -4758,6 +4759,9 @@ typedef struct ga2d__step_context {
     int constraint_count, constraint_capacity;
     ga2d__group *groups;         /* the lane solver's, live during the substeps */
     int group_count, group_capacity;
+    ga2d__fill *fill;            /* beside each group while lanes are assigned: its lanes in use,
+                                    and when full a later group to look at first */
+    int fill_capacity;
     ga2d__group_extra *group_extras; /* beside the groups, when a constraint needs them */
     int group_extra_capacity, group_extras_on;
     ga2d__sbody *sbodies;        /* its body state, by slot (one dummy past the end) */
@@ -8271,7 +8275,6 @@ struct ga2d__group {
     unsigned char hits;     /* a lane reports hits (x->npeak) */
     unsigned char extras;   /* x's fields are written (ga2d__lane_extras) */
     int count;              /* lanes in use */
-    int skip;               /* when full: a later group to look at first */
     ga2d__group_extra *x;   /* its extras while any lane of the step needs them, else NULL */
     int contact[GA2D__LANES];   /* the lane's contact (pool index), -1 in an empty lane */
     ga2d__wmask move_a, move_b; /* all ones where the lane moves A, B */
@@ -9229,17 +9232,19 @@ static void ga2d__lane_put(ga2d__step_context *c, ga2d__group *g, int ci)
 static void ga2d__group_open(ga2d__group *g)
 {
     g->count = 0;
-    g->skip = 0;
     g->extras = g->round = g->conveyor = g->rolling = g->hits = 0;
 }
 
-/* The first group from gi on with a free lane (or group_count): full
-   groups point past themselves, and the path is halved as it is walked. */
+/* The first group from gi on with a free lane (or group_count): a full
+   group points past itself (skip), and the path is halved as it is
+   walked.  It reads the groups' fill beside them, not the groups (a
+   kilobyte each: a probe of theirs was a cache miss). */
 static int ga2d__group_free(ga2d__step_context *c, int gi)
 {
-    while (gi < c->group_count && c->groups[gi].count == GA2D__LANES) {
-        int next = c->groups[gi].skip;
-        if (next < c->group_count && c->groups[next].count == GA2D__LANES) c->groups[gi].skip = c->groups[next].skip;
+    ga2d__fill *f = c->fill;
+    while (gi < c->group_count && f[gi].count == GA2D__LANES) {
+        int next = f[gi].skip;
+        if (next < c->group_count && f[next].count == GA2D__LANES) f[gi].skip = f[next].skip;
         gi = next;
     }
     return gi;
@@ -9295,16 +9300,19 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
         if (mb && last[cc->b] >= gi) gi = last[cc->b] + 1;
         gi = ga2d__group_free(c, gi);
         if (gi == c->group_count) {
-            if (!ga2d__grow(&w->mem, (void **)&c->groups, &c->group_capacity, c->group_count + 1, sizeof *c->groups)) {
+            if (!ga2d__grow(&w->mem, (void **)&c->groups, &c->group_capacity, c->group_count + 1, sizeof *c->groups) ||
+                !ga2d__grow(&w->mem, (void **)&c->fill, &c->fill_capacity, c->group_count + 1, sizeof *c->fill)) {
                 c->group_count = 0;
                 c->error = GA2D_ERR_OUT_OF_MEMORY;
                 return;
             }
+            c->fill[c->group_count].count = c->fill[c->group_count].skip = 0;
             ga2d__group_open(&c->groups[c->group_count++]);
         }
         g = &c->groups[gi];
         ga2d__lane_put(c, g, i);
-        if (g->count == GA2D__LANES) g->skip = gi + 1;
+        c->fill[gi].count = g->count;
+        if (g->count == GA2D__LANES) c->fill[gi].skip = gi + 1;
         if (ma) last[cc->a] = gi;
         if (mb) last[cc->b] = gi;
         extras |= cc->needs_extras;
@@ -11220,6 +11228,7 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->constraints, &c->constraint_capacity, sizeof *c->constraints);
     c->constraint_count = 0;
     ga2d__release(w, (void **)&c->groups, &c->group_capacity, sizeof *c->groups);
+    ga2d__release(w, (void **)&c->fill, &c->fill_capacity, sizeof *c->fill);
     c->group_count = 0;
     ga2d__release(w, (void **)&c->group_extras, &c->group_extra_capacity, sizeof *c->group_extras);
     ga2d__release(w, (void **)&c->sbodies, &c->sbody_capacity, sizeof *c->sbodies);
@@ -11235,6 +11244,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->order, c->order_capacity);
     GA2D__FREE_ARRAY(a, c->constraints, c->constraint_capacity);
     GA2D__FREE_ARRAY(a, c->groups, c->group_capacity);
+    GA2D__FREE_ARRAY(a, c->fill, c->fill_capacity);
     GA2D__FREE_ARRAY(a, c->group_extras, c->group_extra_capacity);
     GA2D__FREE_ARRAY(a, c->sbodies, c->sbody_capacity);
     GA2D__FREE_ARRAY(a, c->last_group, c->last_group_capacity);
