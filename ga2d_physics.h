@@ -4757,6 +4757,7 @@ typedef struct ga2d__step_context {
     int order_capacity;
     ga2d__contact_constraint *constraints; /* theirs, in that order */
     int constraint_count, constraint_capacity;
+    int bouncy;                  /* of them, those with restitution: none, and the bounce passes are skipped */
     ga2d__group *groups;         /* the lane solver's, live during the substeps */
     int group_count, group_capacity;
     ga2d__fill *fill;            /* beside each group while lanes are assigned: its lanes in use,
@@ -8487,7 +8488,7 @@ static void ga2d__order_constraints(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     int slot, link, prepared = 0;
-    c->constraint_count = 0;
+    c->constraint_count = c->bouncy = 0;
     /* room for every contact at once (each has at most one constraint);
        the order is kept apart from the constraints, so that listing it
        does not pass over their memory once more */
@@ -8503,6 +8504,7 @@ static void ga2d__order_constraints(ga2d__step_context *c)
             if (!ga2d__solver_moves(&w->bodies[ct->a]) && !ga2d__solver_moves(&w->bodies[ct->b])) continue;
             if (w->def.pre_solve && !ga2d__pre_solve(w, ct)) continue;
             c->order[c->constraint_count++] = link >> 1;
+            c->bouncy += ct->restitution != 0;
             if (c->constraint_count - prepared < GA2D__PREPARE_BLOCK) continue;
             ga2d__prepare_listed(c, prepared);
             if (c->constraint_count == 0) return;
@@ -9558,8 +9560,8 @@ static void ga2d__restitute(ga2d__step_context *c)
     ga2d_world *w = c->world;
     ga2d_real threshold = w->def.restitution_threshold * w->def.length_units_per_meter;
     ga2d_real h = c->h, look = c->dt + h;
-    int i, k, pass, busy = 1, euler = w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER;
-    for (pass = 0; pass < GA2D__RESTITUTION_PASSES && busy; ++pass) {
+    int i, k, pass, busy = c->bouncy > 0, euler = w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER;
+    for (pass = 0; pass < GA2D__RESTITUTION_PASSES && busy; ++pass) { /* none bouncy: no pass */
         busy = 0;
         for (i = 0; i < c->constraint_count; ++i) {
             ga2d__contact_constraint *cc = &c->constraints[i];
