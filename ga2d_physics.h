@@ -2082,10 +2082,13 @@ GA2D_API ga2d_transform ga2d_transform_mul(ga2d_transform a, ga2d_transform b)
 {
     return ga2d_transform_make(ga2d_transform_apply(a, b.p), ga2d_rotor_mul(a.q, b.q));
 }
-GA2D_API ga2d_transform ga2d_transform_inv_mul(ga2d_transform a, ga2d_transform b)
+/* a^-1 b inlined where every contact asks for it each step (the carried
+   manifolds); the public one is this. */
+static GA2D__HOT ga2d_transform ga2d__inv_mul(ga2d_transform a, ga2d_transform b)
 {
     return ga2d_transform_make(ga2d_transform_apply_inv(a, b.p), ga2d_rotor_mul(ga2d_rotor_inverse(a.q), b.q));
 }
+GA2D_API ga2d_transform ga2d_transform_inv_mul(ga2d_transform a, ga2d_transform b) { return ga2d__inv_mul(a, b); }
 
 /* ------------------------------------------------------------------ turns */
 /* exp(a e12) = cos a + sin a e12, without libm so that a step gives the
@@ -5551,7 +5554,7 @@ static int ga2d__reuse_manifold(const ga2d_world *w, ga2d__contact *c, const ga2
                                 ga2d_transform xa, ga2d_transform xb)
 {
     const ga2d__held *hd = &c->held;
-    ga2d_transform t = ga2d_transform_mul(ga2d_transform_inv_mul(xa, xb), ga2d_transform_inverse(hd->rel));
+    ga2d_transform t = ga2d_transform_mul(ga2d__inv_mul(xa, xb), ga2d_transform_inverse(hd->rel));
     ga2d_real eps = GA2D__R(0.5) * w->slop, reach = 2 * (a->extent < b->extent ? a->extent : b->extent);
     ga2d_vec moved[2], d_ab = ga2d_vec_sub(xb.p, xa.p);
     ga2d_manifold *m = &c->manifold;
@@ -5581,7 +5584,7 @@ static int ga2d__reuse_manifold(const ga2d_world *w, ga2d__contact *c, const ga2
 static void ga2d__hold_manifold(ga2d__held *hd, ga2d_transform xa, ga2d_transform xb, const ga2d_manifold *m)
 {
     int k;
-    hd->rel = ga2d_transform_inv_mul(xa, xb);
+    hd->rel = ga2d__inv_mul(xa, xb);
     hd->normal = ga2d_rotate_inv(xa.q, m->normal);
     for (k = 0; k < m->count; ++k) {
         hd->point[k] = ga2d_rotate_inv(xa.q, m->points[k].anchor_a);
