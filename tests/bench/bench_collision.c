@@ -287,8 +287,8 @@ static void tree_find_pairs(tree_bp *bp)
         ga2d_aabb box = tree_of(bp, i)->nodes[bp->proxy[i]].box;
         q.bp = bp;
         q.self = i;
-        ga2d__tree_query(&bp->trees[1], box, tree_pair_found, &q);
-        if (!bp->sc->is_static[i]) ga2d__tree_query(&bp->trees[0], box, tree_pair_found, &q);
+        ga2d__tree_query(&bp->trees[1], box, GA2D__ALL_CATEGORIES, tree_pair_found, &q);
+        if (!bp->sc->is_static[i]) ga2d__tree_query(&bp->trees[0], box, GA2D__ALL_CATEGORIES, tree_pair_found, &q);
     }
     if (bp->new_count > 1) qsort(bp->new_pairs, (size_t)bp->new_count, sizeof *bp->new_pairs, ga2d__cmp_u64);
     for (k = 0, n = bp->new_count; k < n; ++k) {
@@ -335,7 +335,7 @@ static void tree_build(tree_bp *bp, const scene *sc)
     bp->w = ga2d_world_create(NULL);
     if (!bp->w) exit(2);
     for (i = 0; i < n; ++i) {
-        bp->proxy[i] = ga2d__tree_create(tree_of(bp, i), ga2d__fatten(body_aabb(sc, i), MARGIN), i);
+        bp->proxy[i] = ga2d__tree_create(tree_of(bp, i), ga2d__fatten(body_aabb(sc, i), MARGIN), i, 1u); /* category 1, as a default shape */
         tree_buffer_move(bp, i);
     }
     tree_find_pairs(bp);
