@@ -1,12 +1,16 @@
-/* bench_peers.cpp - ga2d against Box2D 2.4.1 and Chipmunk 7 on the
-   benchmark scenes of tests/bench/scenes.h (`make bench-peers`).
+/* bench_peers.cpp - ga2d against Box2D 2.4.1 and Chipmunk 7, and Box2D v3
+   when peers.mk is given its sources (B2V3_SRC), on the benchmark scenes
+   of tests/bench/scenes.h (`make bench-peers`).
 
-   Every engine builds the same list of bodies: boxes, or (joint_grid)
-   bodies of one circle at their origin, and the scene's revolute joints
-   (Box2D's b2RevoluteJoint, Chipmunk's pivot joint); for each scene the three
-   engines run alternately (run r: ga2d, Box2D, Chipmunk, each with a fresh
-   world; then ga2d built with -mavx2, where the CPU has AVX2), so a slow
-   spell of the machine hits all of them.  Only the world
+   Every engine builds the same list of bodies: boxes, bodies of their own
+   shapes (joint_grid's circles; spinner's capsules, circles, boxes and
+   rounded bar), the scene's chain loop and its revolute joints, with
+   motors (Box2D's b2RevoluteJoint, Chipmunk's pivot joint; Chipmunk sits
+   out scenes with other shapes, a chain or a motor).  ga2d and Box2D v3
+   are C units reached through ga2d_peer.h.  For each scene the engines run
+   alternately (run r: ga2d, Box2D, Chipmunk, Box2D v3 where built, each
+   with a fresh world; then ga2d built with -mavx2, where the CPU has
+   AVX2), so a slow spell of the machine hits all of them.  Only the world
    step is timed, and not the first 10 steps (the first broadphase pass and
    warm-up); building, the tumbler's wall velocities and the accuracy
    figure are outside the clock.  Prints a table per scene and writes a CSV.
