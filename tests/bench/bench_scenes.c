@@ -29,7 +29,16 @@
 
    writes the CSV when given a path, and runs only the named scenes (of
    the table's names) when given any.  Exit status 0 when every scene ran
-   and every run agreed. */
+   and every run agreed.
+
+   With a CSV path, each scenes.h scene also gets <scene>.csv beside it
+   (make bench: build/bench/large_pyramid.csv, ...) in the form of Box2D
+   v3's published benchmark results (its benchmark/<machine>/<scene>.csv,
+   written by its benchmark/main.c): the line "threads,ms", then one line
+   per worker count, "1,1234.5": the fastest run's time in ms of every step
+   but the first, summed (Box2D's measure: its runs step the scene's steps
+   and time all but the first; so do these, 500 for large_pyramid as
+   there).  The worker counts are WORKER_COUNTS'. */
 #define _POSIX_C_SOURCE 199309L
 #define GA2D_IMPLEMENTATION
 #include "ga2d_physics.h"
@@ -39,12 +48,58 @@
 #define DEFAULT_RUNS 3
 #define MAX_RUNS 64
 
+/* The worker counts each scenes.h scene runs at (set_workers), the first
+   the table's; each gets a line of the scene's threads,ms CSV. */
+static const int WORKER_COUNTS[] = {1};
+#define WORKER_COUNT_N ((int)(sizeof WORKER_COUNTS / sizeof WORKER_COUNTS[0]))
+#define MAX_PATH 1024
+
+/* Sets the world def to step with `workers` workers; 0 when it cannot
+   (the world def has no worker count yet: one worker, the calling
+   thread's, is all there is). */
+static int set_workers(ga2d_world_def *wd, int workers)
+{
+    (void)wd;
+    return workers == 1;
+}
+
+/* Writes <dir>/<scene>.csv: "threads,ms" and a line per worker count of
+   the least run_ms over its runs (ms[w][r], runs each); 0 when it cannot
+   be written. */
+static int write_threads_csv(const char *dir, const char *scene, const int *workers, int n,
+                             double ms[][MAX_RUNS], int runs)
+{
+    char path[MAX_PATH];
+    FILE *f;
+    int i;
+    if (snprintf(path, sizeof path, "%s/%s.csv", dir, scene) >= (int)sizeof path) return 0;
+    f = fopen(path, "w");
+    if (!f) return 0;
+    fprintf(f, "threads,ms\n");
+    for (i = 0; i < n; ++i) fprintf(f, "%d,%g\n", workers[i], sr_min(ms[i], runs));
+    return fclose(f) == 0;
+}
+
+/* The directory part of path ("." when it has none), into dir. */
+static void directory_of(const char *path, char *dir, size_t size)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n = slash ? (size_t)(slash - path) : 0;
+    if (!slash) {
+        snprintf(dir, size, ".");
+        return;
+    }
+    if (n >= size) n = size - 1;
+    memcpy(dir, path, n);
+    dir[n] = 0;
+}
+
 /* BENCH_BOXES_ONLY: the box scenes only, in a build that works with a
    header from before shapes (ab_header.sh) */
 static const char *const SCENES[] = {
     "large_pyramid", "many_pyramids", "smash", "tumbler", "pyramid20", "stack10",
 #ifndef BENCH_BOXES_ONLY
-    "rain",          "mixed_pile",    "joint_grid",
+    "rain",          "mixed_pile",    "joint_grid",    "spinner",
 #endif
 };
 #define SCENE_COUNT ((int)(sizeof SCENES / sizeof SCENES[0]))
@@ -110,13 +165,15 @@ int main(int argc, char **argv)
 {
     const int asked = sr_runs_from_env("BENCH_RUNS", DEFAULT_RUNS), runs = asked < MAX_RUNS ? asked : MAX_RUNS;
     FILE *csv = argc > 1 ? fopen(argv[1], "w") : NULL;
-    double ms[MAX_RUNS], start = sr_now_ms();
+    double ms[MAX_RUNS], run_ms[WORKER_COUNT_N][MAX_RUNS], start = sr_now_ms();
+    char csv_dir[MAX_PATH];
     solved joint = {0, 0, 0, 0}, contact = {0, 0, 0, 0};
-    int i, r, bad = 0;
+    int i, r, c, bad = 0;
     if (argc > 1 && !csv) {
         fprintf(stderr, "bench_scenes: cannot write %s\n", argv[1]);
         return 1;
     }
+    if (csv) directory_of(argv[1], csv_dir, sizeof csv_dir);
     printf("bench_scenes (ga2d_real %s): defaults, dt = 1/60; ms per ga2d_world_step over %d runs\n",
            sizeof(ga2d_real) == sizeof(double) ? "double" : "float", runs);
     printf("%-14s %7s %12s %10s  %-26s %s\n", "scene", "bodies", "ms/step med", "min", "figure", "value");
@@ -135,22 +192,35 @@ int main(int argc, char **argv)
             fprintf(stderr, "bench_scenes: cannot make %s\n", SCENES[i]);
             return 1;
         }
-        wd = sr_scene_def(&s, ga2d_default_world_def());
-        for (r = 0; r < runs; ++r) {
-            sr_result res;
-            failed |= !sr_run_scene(&s, wd, 0, &res);
-            ms[r] = res.ms;
-            if (r == 0) {
-                figure = res.figure;
-                gap = res.joint_gap;
-                v.contacts = res.contacts;
-                v.joints = res.joints;
-            } else {
-                differ |= memcmp(&figure, &res.figure, sizeof figure) != 0;
+        /* every worker count's runs in turn; the table gives the first's,
+           and every count must give the first's figure bit for bit */
+        for (c = 0; c < WORKER_COUNT_N; ++c) {
+            wd = sr_scene_def(&s, ga2d_default_world_def());
+            if (!set_workers(&wd, WORKER_COUNTS[c])) {
+                fprintf(stderr, "bench_scenes: cannot step with %d workers\n", WORKER_COUNTS[c]);
+                return 1;
+            }
+            for (r = 0; r < runs; ++r) {
+                sr_result res;
+                failed |= !sr_run_scene(&s, wd, 0, &res);
+                if (c == 0) ms[r] = res.ms;
+                run_ms[c][r] = res.run_ms;
+                if (c == 0 && r == 0) {
+                    figure = res.figure;
+                    gap = res.joint_gap;
+                    v.contacts = res.contacts;
+                    v.joints = res.joints;
+                } else {
+                    differ |= memcmp(&figure, &res.figure, sizeof figure) != 0;
+                }
             }
         }
         bad |= report(csv, s.name, s.peak, ms, runs, bench_scene_figure_name(&s), figure, failed, differ,
                       (sr_now_ms() - t0) / 1e3, &v);
+        if (csv && !failed && !write_threads_csv(csv_dir, s.name, WORKER_COUNTS, WORKER_COUNT_N, run_ms, runs)) {
+            fprintf(stderr, "bench_scenes: cannot write %s/%s.csv\n", csv_dir, s.name);
+            bad = 1;
+        }
         if (s.joint_count > 0)
             printf("%-14s %7s %d joints, %.0f solved per step; worst joint separation at the end %.3e m\n", "", "",
                    s.joint_count, v.joints, gap);

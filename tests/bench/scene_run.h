@@ -86,6 +86,8 @@ static ga2d_vec sr__vec(double x, double y) { return ga2d_vec_make((ga2d_real)x,
 /* What one run reports. */
 typedef struct sr_result {
     double ms;        /* ms per ga2d_world_step after the warm-up */
+    double run_ms;    /* ms of every ga2d_world_step but the first, summed: Box2D's
+                         benchmark's measure (its benchmark/main.c; scenes.h scenes) */
     double figure;    /* the scene's accuracy figure */
     double contacts;  /* contacts the timed steps solved, per step (mean; counters.constraint_count) */
     double joints;    /* joints the timed steps solved, per step (mean; counters.joints_solved) */
@@ -110,7 +112,7 @@ static ga2d_body_def sr__body_def(const bench_body *b, int fixed_rotation)
                                           : GA2D_BODY_STATIC;
     d.position = sr__vec(b->x, b->y);
     if (b->angle != 0) d.rotor = ga2d_rotor_from_angle((ga2d_real)b->angle);
-    if (b->shape_count == 0) d.polygon = ga2d_polygon_box((ga2d_real)b->hx, (ga2d_real)b->hy);
+    if (b->shape_count == 0 && b->hx > 0) d.polygon = ga2d_polygon_box((ga2d_real)b->hx, (ga2d_real)b->hy);
     d.velocity = sr__vec(b->vx, b->vy);
     d.angular_velocity = (ga2d_real)b->w;
     d.density = (ga2d_real)b->density;
@@ -136,6 +138,7 @@ static int sr__add_shape(ga2d_world *w, ga2d_body_id id, const bench_shape *sh)
     ga2d_shape_id made = ga2d_shape_id_null();
     d.density = (ga2d_real)sh->density;
     d.friction = (ga2d_real)sh->friction;
+    d.restitution = (ga2d_real)sh->restitution;
     d.filter.category_bits = sh->category;
     d.filter.mask_bits = sh->mask;
     d.filter.group_index = sh->group;
@@ -163,8 +166,37 @@ static int sr__add_shape(ga2d_world *w, ga2d_body_id id, const bench_shape *sh)
 #endif
 }
 
-/* Body i of s in w: its box, or a body with its own shapes; the null id
-   when ga2d refuses it. */
+/* The scene's chain loop on body id (scenes.h winds it clockwise, solid
+   to the right; a ga2d segment pushes to its left, so the points go in
+   backwards); 0 when ga2d refuses it or out of memory. */
+static int sr__add_chain(ga2d_world *w, ga2d_body_id id, const bench_scene *s)
+{
+#ifdef BENCH_BOXES_ONLY
+    (void)w;
+    (void)id;
+    (void)s;
+    return 0;
+#else
+    ga2d_chain_def d = ga2d_default_chain_def();
+    ga2d_vec *pts = (ga2d_vec *)malloc((size_t)s->chain_count * sizeof *pts);
+    int i, ok;
+    if (!pts) return 0;
+    for (i = 0; i < s->chain_count; ++i)
+        pts[i] = sr__vec(s->chain_x[s->chain_count - 1 - i], s->chain_y[s->chain_count - 1 - i]);
+    d.points = pts;
+    d.count = s->chain_count;
+    d.is_loop = 1;
+    d.friction = (ga2d_real)s->chain_friction;
+    ok = ga2d_chain_create(w, id, &d).index1 != 0; /* zero: the null id */
+    free(pts);
+    return ok;
+#endif
+}
+
+/* Body i of s in w: its box, or a body with its own shapes (and the
+   scene's chain, when it is the chain's body); the null id when ga2d
+   refuses it.  ga2d has no per-body sleep switch, so never_sleeps is
+   not modelled (spinner's bar turns at 5 rad/s and never rests). */
 static ga2d_body_id sr__make_body(ga2d_world *w, const bench_scene *s, int i, int fixed_rotation)
 {
     const bench_body *b = &s->bodies[i];
@@ -173,6 +205,8 @@ static ga2d_body_id sr__make_body(ga2d_world *w, const bench_scene *s, int i, in
     int k;
     for (k = 0; k < b->shape_count && !ga2d_body_id_is_null(id); ++k)
         if (!sr__add_shape(w, id, &s->shapes[b->shape_first + k])) id = ga2d_body_id_null();
+    if (s->chain_count > 0 && i == s->chain_body && !ga2d_body_id_is_null(id) && !sr__add_chain(w, id, s))
+        id = ga2d_body_id_null();
     return id;
 }
 
@@ -194,6 +228,9 @@ static int sr__make_joints(ga2d_world *w, const bench_scene *s, const ga2d_body_
         d.body_b = ids[j->b];
         d.local_anchor_a = sr__vec(j->ax, j->ay);
         d.local_anchor_b = sr__vec(j->bx, j->by);
+        d.enable_motor = j->motor;
+        d.motor_speed = (ga2d_real)j->motor_speed;
+        d.max_motor_torque = (ga2d_real)j->max_motor_torque;
         if (ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &d))) return 0;
     }
     return 1;
@@ -306,7 +343,8 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
     sr__death *deaths = (sr__death *)malloc((size_t)(s->count > 0 ? s->count : 1) * sizeof *deaths);
     ga2d_contact_data *contacts = NULL;
     const ga2d_real dt = (ga2d_real)s->dt;
-    double p0[2] = {0, 0}, total = 0, deepest = 0, contacts_solved = 0, joints_solved = 0;
+    double p0[2] = {0, 0}, total = 0, run_ms = 0, deepest = 0, contacts_solved = 0, joints_solved = 0, angle = 0,
+           turn = 0;
     ga2d_vec start = ga2d_vec_make(0, 0);
     int i, k, capacity = 0, born = 0, dead = 0, dying = 0, through = 0, ok = w != NULL && ids != NULL && deaths != NULL;
     memset(out, 0, sizeof *out);
@@ -326,9 +364,10 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
     /* joints join bodies made with the world (scenes.h) */
     if (ok) ok = sr__make_joints(w, s, ids);
     if (ok && (s->figure == BENCH_FIG_DRIFT || s->figure == BENCH_FIG_SAG)) start = ga2d_body_center(w, ids[s->probe]);
+    if (ok && s->figure == BENCH_FIG_LAG) angle = (double)ga2d_body_angle(w, ids[s->probe]);
     if (ok && s->figure == BENCH_FIG_MOMENTUM) sr__momentum(w, s, ids, p0);
     for (k = 0; ok && k < s->steps; ++k) {
-        double t0;
+        double t0, step_ms;
         ga2d_result r;
         for (; ok && dead < dying && deaths[dead].step <= k; ++dead) {
             ga2d_body_id *id = &ids[deaths[dead].index];
@@ -352,8 +391,10 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
         if (!ok) break;
         t0 = sr_now_ms();
         r = ga2d_world_step(w, dt);
+        step_ms = sr_now_ms() - t0;
+        if (k >= 1) run_ms += step_ms;
         if (k >= SR_WARMUP) {
-            total += sr_now_ms() - t0;
+            total += step_ms;
             contacts_solved += ga2d_world_get_counters(w).constraint_count;
             joints_solved += sr__joints_solved(w);
         }
@@ -362,9 +403,15 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
             double d = sr__deepest(w, &contacts, &capacity);
             if (!(d <= deepest)) deepest = d; /* a NaN sticks */
         }
+        if (s->figure == BENCH_FIG_LAG) {
+            double now = (double)ga2d_body_angle(w, ids[s->probe]);
+            turn += bench_scene_turn(angle, now);
+            angle = now;
+        }
     }
     if (ok) {
         out->ms = total / (s->steps - SR_WARMUP);
+        out->run_ms = run_ms;
         out->contacts = contacts_solved / (s->steps - SR_WARMUP);
         out->joints = joints_solved / (s->steps - SR_WARMUP);
         out->joint_gap = sr__joint_gap(w, s, ids);
@@ -381,6 +428,8 @@ SR_FN int sr_run_scene(const bench_scene *s, ga2d_world_def wd, int fixed_rotati
             for (i = 0; i < born; ++i)
                 if (!ga2d_body_id_is_null(ids[i])) through += sr__through(w, &s->bodies[i], ids[i]);
             out->figure = through;
+        } else if (s->figure == BENCH_FIG_LAG) {
+            out->figure = bench_scene_lag(s, turn);
         } else {
             out->figure = deepest;
         }

@@ -13,8 +13,9 @@
 
    A body is a box (hx, hy) unless it lists shapes of its own (shape_count
    > 0: circles, capsules, convex polygons with an optional rounding, in
-   the body's frame; s.shapes).  The first six scenes are boxes only; the
-   peer runner builds those and joint_grid (bodies of one circle).  Two scenes use the shapes, and bodies
+   the body's frame; s.shapes), or has neither (hx = hy = 0: a chain's
+   body).  The first six scenes are boxes only; the peer runner builds
+   those, joint_grid (bodies of one circle) and spinner.  Two scenes use the shapes, and bodies
    that come and go: a body is made just before step `birth` and, when
    `death` > 0, destroyed just before step `death`.  Bodies are listed in
    order of birth, so a driver walks them with one cursor:
@@ -27,11 +28,15 @@
 
    A scene may also list joints (s.joints): revolute joints (pins), each
    between two of its bodies at a local anchor on each, made with the
-   world after the bodies, in list order; no limit, motor or spring, and
-   the joined bodies do not collide.  One scene has them:
+   world after the bodies, in list order; no limit or spring, a motor
+   where it says so, and the joined bodies do not collide.  Two scenes
+   have them:
      joint_grid  Box2D v3's joint grid: 100 x 100 circles, each pinned to
                  its neighbour above and to its left, hanging from seven
-                 static bodies in the middle of the top row.
+                 static bodies in the middle of the top row;
+     spinner     Box2D v3's spinner: a bar turned by a motor inside a
+                 static loop of segments (s.chain_*), stirring 6 076
+                 capsules, circles and boxes.
 
    Every scene has one accuracy figure, which every driver measures the
    same way (s.figure):
@@ -48,7 +53,14 @@
                             falls past them all, and is not counted);
      BENCH_FIG_SAG          how far the probe body ends below where it
                             started (start y - end y; joint_grid's bottom
-                            corner), m.
+                            corner), m;
+     BENCH_FIG_LAG          how far the probe body's turn over the run
+                            falls short of its motor's: the first
+                            joint's motor_speed times the run's time
+                            (steps dt) less the turn, the sum of each
+                            step's change of angle wrapped into
+                            (-pi, pi] (a step turns it far less), rad;
+                            positive: behind (spinner's bar).
    A scene with joints also has their worst separation: the largest
    distance between a joint's two anchors in the world at the end of the
    run (bench_scene_joint_gap, from each engine's poses).
@@ -64,7 +76,8 @@
 #include <string.h>
 
 enum { BENCH_STATIC = 0, BENCH_KINEMATIC = 1, BENCH_DYNAMIC = 2 };
-enum { BENCH_FIG_DRIFT = 0, BENCH_FIG_MOMENTUM = 1, BENCH_FIG_PENETRATION = 2, BENCH_FIG_THROUGH = 3, BENCH_FIG_SAG = 4 };
+enum { BENCH_FIG_DRIFT = 0, BENCH_FIG_MOMENTUM = 1, BENCH_FIG_PENETRATION = 2, BENCH_FIG_THROUGH = 3, BENCH_FIG_SAG = 4,
+       BENCH_FIG_LAG = 5 };
 enum { BENCH_SHAPE_CIRCLE = 1, BENCH_SHAPE_CAPSULE = 2, BENCH_SHAPE_POLYGON = 3 };
 #define BENCH_MAX_VERTICES 8
 
@@ -75,7 +88,8 @@ typedef struct bench_shape {
     double radius;                 /* circle, capsule; polygon: its rounding (0: sharp) */
     int count;                     /* polygon: vertices, counter-clockwise */
     double px[BENCH_MAX_VERTICES], py[BENCH_MAX_VERTICES];
-    double density, friction;      /* restitution 0 */
+    double density, friction;
+    double restitution;            /* 0 but in spinner; pairs mix as the larger */
     int group;                     /* filter, as Box2D's: a negative group never */
     unsigned category, mask;       /* collides with itself; else category & mask */
 } bench_shape;
@@ -90,6 +104,7 @@ typedef struct bench_body {
     double friction;  /* a box's own; pairs mix as sqrt(mu_a mu_b) */
     double linear_damping; /* 1/s */
     int asleep;       /* created asleep (smash's squares) */
+    int never_sleeps; /* this body may not sleep (spinner's bar; where the engine has the switch) */
     int shape_first, shape_count; /* its shapes in s.shapes; count 0: the box hx, hy */
     int birth;        /* made just before this step (0: with the world) */
     int death;        /* destroyed just before this step; 0: never */
@@ -103,6 +118,9 @@ typedef struct bench_body {
 typedef struct bench_joint {
     int a, b;
     double ax, ay, bx, by;
+    int motor;                      /* a motor drives b's turn relative to a's */
+    double motor_speed;             /* toward this, rad/s (counter-clockwise) */
+    double max_motor_torque;        /* with at most this, N m */
 } bench_joint;
 
 typedef struct bench_scene {
@@ -119,7 +137,16 @@ typedef struct bench_scene {
     bench_joint *joints;
     int peak;           /* the most bodies alive at once (count, if none come or go) */
     int figure;         /* BENCH_FIG_* */
-    int probe;          /* BENCH_FIG_DRIFT: the body whose drift is measured */
+    int probe;          /* BENCH_FIG_DRIFT, _SAG, _LAG: the body measured */
+    /* a closed loop of one-sided segments on body chain_body (a static
+       body with no shape of its own: hx = hy = 0, shape_count 0), its
+       points (chain_x[i], chain_y[i]) in the body's frame wound as Box2D
+       winds them: clockwise, solid to the right of each segment, so it
+       holds bodies inside (an engine whose segments push to their left
+       walks the points backwards); chain_count 0: none */
+    int chain_body, chain_count;
+    double *chain_x, *chain_y;
+    double chain_friction;
     /* kinematic walls turn at pivot_w rad/s about (pivot_x, pivot_y) */
     double pivot_x, pivot_y, pivot_w;
     int body_cap, shape_cap, joint_cap, failed; /* building: room, and no memory */
@@ -224,6 +251,7 @@ static void bench__joint(bench_scene *s, int a, int b, double ax, double ay, dou
     }
     s->joints = grown;
     j = &s->joints[s->joint_count++];
+    memset(j, 0, sizeof *j); /* no motor */
     j->a = a;
     j->b = b;
     j->ax = ax;
@@ -249,9 +277,13 @@ static void bench_scene_free(bench_scene *s)
     free(s->bodies);
     free(s->shapes);
     free(s->joints);
+    free(s->chain_x);
+    free(s->chain_y);
     s->bodies = NULL;
     s->shapes = NULL;
     s->joints = NULL;
+    s->chain_x = s->chain_y = NULL;
+    s->chain_count = 0;
     s->count = s->shape_count = s->body_cap = s->shape_cap = s->joint_count = s->joint_cap = 0;
 }
 
@@ -281,9 +313,12 @@ static void bench_scene_kinematic_velocity(const bench_scene *s, double x, doubl
    that collides with the ground only; friction 0.2 (feet 0.05); linear
    damping 0.1 on the head and forearms; human i of every group in
    filter group -(i + 1), so humans of one index never meet, as there.
-   Not taken: the joints (ga2d has none), so each bone is a free body, a
-   human's 11 bones falling together and scattering where they land; the
-   per-body sleep threshold of 0.1 m/s (ga2d has one for the world).  The
+   Not taken: the joints (ga2d had none when this scene was written; it
+   has revolute joints now, but the human's ten hinges carry angle
+   limits, a 5 Hz spring toward the standing pose and joint friction, so
+   they are still left out), so each bone is a free body, a human's 11
+   bones falling together and scattering where they land; the per-body
+   sleep threshold of 0.1 m/s (ga2d has one for the world).  The
    peak is 11 000 bones (+ the ground) as in Box2D, 34 375 over the run. */
 #define BENCH_RAIN_FLOORS 5
 #define BENCH_RAIN_COLUMNS 40
@@ -509,6 +544,103 @@ static double bench_scene_joint_gap(const bench_scene *s, const double *x, const
     return worst;
 }
 
+/* ------------------------------------------------------------ spinner */
+/* After Box2D v3's "spinner" benchmark (erincatto/box2d,
+   shared/benchmarks.c, CreateSpinner / StepSpinner; its benchmark/main.c
+   runs it 500 steps at 1/60 s, 4 substeps, sleep on): a static loop of
+   360 one-sided segments through points 40 m from (0, 32), the first at
+   (40, 32), each next one 1 degree further clockwise (from cos and sin;
+   Box2D turns one point 1 degree at a time in float: the two differ by
+   its rounding), friction 0.1; a
+   bar, a box of half-extents 0.4 x 20 rounded by 0.2 (density 1,
+   friction 0), centred at (0, 12), that may never sleep, pinned to the
+   loop's body at its centre and turned by a motor at 5 rad/s with no
+   torque limit (Box2D's FLT_MAX); and 2 x 3038 bodies of density 0.25,
+   friction 0.1, restitution 0.1, laid in rows from (-23, 2): 0.5 m apart
+   along x, a new row 0.5 m higher once x reaches 23 (92 a row), body i a
+   capsule (centres (+-0.25, 0), radius 0.25) when i mod 3 is 0, a circle
+   of radius 0.35 when 1, a box of half-extent 0.35 when 2.  They start
+   overlapping (0.7 m wide, 0.5 m apart), as in Box2D, and are pushed
+   apart in the first steps.  The figure: the bar's lag on its motor
+   (BENCH_FIG_LAG). */
+#define BENCH_SPIN_POINTS 360
+#define BENCH_SPIN_RADIUS 40.0
+#define BENCH_SPIN_CENTRE_Y 32.0
+#define BENCH_SPIN_BODIES (2 * 3038)
+#define BENCH_SPIN_SPEED 5.0             /* the motor's, rad/s */
+#define BENCH_SPIN_TORQUE 3.40282347e38  /* no limit: the largest float, Box2D's FLT_MAX */
+#define BENCH_SPIN_GAP 0.5               /* between bodies, along a row and between rows */
+
+static void bench__spinner(bench_scene *s)
+{
+    const double pi = 3.14159265358979323846;
+    double x = -23, y = 2;
+    int ground = bench__push(s, BENCH_STATIC, 0, 0, 0, 0), bar, i;
+    bench_shape *sh;
+    s->chain_x = (double *)malloc(BENCH_SPIN_POINTS * sizeof *s->chain_x);
+    s->chain_y = (double *)malloc(BENCH_SPIN_POINTS * sizeof *s->chain_y);
+    if (!s->chain_x || !s->chain_y || ground < 0) {
+        s->failed = 1;
+        return;
+    }
+    s->chain_body = ground;
+    s->chain_count = BENCH_SPIN_POINTS;
+    s->chain_friction = 0.1;
+    for (i = 0; i < BENCH_SPIN_POINTS; ++i) {
+        double a = -2 * pi * i / BENCH_SPIN_POINTS; /* clockwise */
+        s->chain_x[i] = BENCH_SPIN_RADIUS * cos(a);
+        s->chain_y[i] = BENCH_SPIN_RADIUS * sin(a) + BENCH_SPIN_CENTRE_Y;
+    }
+    bar = bench__push(s, BENCH_DYNAMIC, 0, 12, 0, 0);
+    sh = bench__shape_box(s, bar, 0, 0, 0.4, 20);
+    if (!sh) return;
+    sh->radius = 0.2;
+    sh->friction = 0;
+    s->bodies[bar].never_sleeps = 1;
+    bench__joint(s, ground, bar, 0, 12, 0, 0);
+    if (s->failed) return;
+    s->joints[0].motor = 1;
+    s->joints[0].motor_speed = BENCH_SPIN_SPEED;
+    s->joints[0].max_motor_torque = BENCH_SPIN_TORQUE;
+    s->probe = bar;
+    for (i = 0; i < BENCH_SPIN_BODIES; ++i) {
+        int k = bench__push(s, BENCH_DYNAMIC, x, y, 0, 0);
+        if (i % 3 == 0)
+            sh = bench__shape_capsule(s, k, -0.25, 0, 0.25, 0, 0.25);
+        else if (i % 3 == 1)
+            sh = bench__shape(s, k, BENCH_SHAPE_CIRCLE);
+        else
+            sh = bench__shape_box(s, k, 0, 0, 0.35, 0.35);
+        if (!sh) return;
+        if (i % 3 == 1) sh->radius = 0.35;
+        sh->density = 0.25;
+        sh->friction = 0.1;
+        sh->restitution = 0.1;
+        x += BENCH_SPIN_GAP;
+        if (x >= 23) {
+            x = -23;
+            y += BENCH_SPIN_GAP;
+        }
+    }
+}
+
+/* One step's change of a body's angle, from `before` to `after`, wrapped
+   into (-pi, pi]: summed over the steps, the turn (BENCH_FIG_LAG). */
+static double bench_scene_turn(double before, double after)
+{
+    const double pi = 3.14159265358979323846;
+    double d = fmod(after - before, 2 * pi);
+    if (d > pi) d -= 2 * pi;
+    if (d <= -pi) d += 2 * pi;
+    return d;
+}
+
+/* BENCH_FIG_LAG's figure from the turn summed over the run. */
+static double bench_scene_lag(const bench_scene *s, double turn)
+{
+    return s->joints[0].motor_speed * s->steps * s->dt - turn;
+}
+
 /* The most bodies alive at once. */
 static int bench__peak(const bench_scene *s)
 {
@@ -529,7 +661,7 @@ static int bench__peak(const bench_scene *s)
 
 /* Fills *s with the named scene; returns 0, or -1 for an unknown name or
    no memory.  Names: large_pyramid, many_pyramids, smash, tumbler,
-   pyramid20, stack10, rain, mixed_pile, joint_grid. */
+   pyramid20, stack10, rain, mixed_pile, joint_grid, spinner. */
 static int bench_scene_make(const char *name, bench_scene *s)
 {
     int i, j;
@@ -614,6 +746,12 @@ static int bench_scene_make(const char *name, bench_scene *s)
         s->steps = 1000;
         s->figure = BENCH_FIG_PENETRATION;
         bench__mixed_pile(s);
+    } else if (strcmp(name, "spinner") == 0) {
+        s->name = "spinner";
+        s->steps = 500;
+        s->sleep = 1;
+        s->figure = BENCH_FIG_LAG;
+        bench__spinner(s);
     } else if (strcmp(name, "joint_grid") == 0) {
         s->name = "joint_grid";
         s->steps = 500;
@@ -633,8 +771,8 @@ static int bench_scene_make(const char *name, bench_scene *s)
 /* The accuracy figure's name, for tables. */
 static const char *bench_scene_figure_name(const bench_scene *s)
 {
-    static const char *names[5] = {"top box drift (m)", "momentum error (rel.)", "deepest penetration (m)",
-                                   "bodies through a floor", "bottom corner's sag (m)"};
+    static const char *names[6] = {"top box drift (m)",       "momentum error (rel.)",   "deepest penetration (m)",
+                                   "bodies through a floor",  "bottom corner's sag (m)", "bar's lag on its motor (rad)"};
     return names[s->figure];
 }
 

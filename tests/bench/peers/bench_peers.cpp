@@ -1,19 +1,26 @@
-/* bench_peers.cpp - ga2d against Box2D 2.4.1 and Chipmunk 7 on the
-   benchmark scenes of tests/bench/scenes.h (`make bench-peers`).
+/* bench_peers.cpp - ga2d against Box2D 2.4.1 and Chipmunk 7, and Box2D v3
+   when peers.mk is given its sources (B2V3_SRC), on the benchmark scenes
+   of tests/bench/scenes.h (`make bench-peers`).
 
-   Every engine builds the same list of bodies: boxes, or (joint_grid)
-   bodies of one circle at their origin, and the scene's revolute joints
-   (Box2D's b2RevoluteJoint, Chipmunk's pivot joint); for each scene the three
-   engines run alternately (run r: ga2d, Box2D, Chipmunk, each with a fresh
-   world; then ga2d built with -mavx2, where the CPU has AVX2), so a slow
-   spell of the machine hits all of them.  Only the world
+   Every engine builds the same list of bodies: boxes, bodies of their own
+   shapes (joint_grid's circles; spinner's capsules, circles, boxes and
+   rounded bar), the scene's chain loop and its revolute joints, with
+   motors (Box2D's b2RevoluteJoint, Chipmunk's pivot joint; Chipmunk sits
+   out scenes with other shapes, a chain or a motor).  ga2d and Box2D v3
+   are C units reached through ga2d_peer.h.  For each scene the engines run
+   alternately (run r: ga2d, Box2D, Chipmunk, Box2D v3 where built, each
+   with a fresh world; then ga2d built with -mavx2, where the CPU has
+   AVX2), so a slow spell of the machine hits all of them.  Only the world
    step is timed, and not the first 10 steps (the first broadphase pass and
    warm-up); building, the tumbler's wall velocities and the accuracy
    figure are outside the clock.  Prints a table per scene and writes a CSV.
 
-     peers [scene] [csv]   scene: one of scenes.h's names, or "all" (the
-                           default); csv defaults to build/bench/peers.csv.
-     BENCH_RUNS=n          runs per engine and scene (default 3). */
+     peers [scenes] [csv]  scenes: "all" (the default), or scenes.h's names
+                           separated by commas (large_pyramid,joint_grid);
+                           csv defaults to build/bench/peers.csv.
+     BENCH_RUNS=n          runs per engine and scene (default 3).
+     PEERS_MAX_RUN_S=s     a run stops once its steps took s seconds (default
+                           120); the engine's row says so, with no median. */
 #include <box2d/box2d.h>
 #include <chipmunk/chipmunk.h>
 
@@ -34,6 +41,16 @@
 /* 1 when the Makefile also built ga2d with -mavx2 (the CPU has AVX2) */
 #ifndef PEERS_AVX2
 #define PEERS_AVX2 0
+#endif
+/* 1 when the Makefile built Box2D v3 from B2V3_SRC (b2v3_peer.c) */
+#ifndef PEERS_B2V3
+#define PEERS_B2V3 0
+#endif
+#ifndef PEERS_B2V3_CFLAGS
+#define PEERS_B2V3_CFLAGS ""
+#endif
+#ifndef PEERS_B2V3_SRC
+#define PEERS_B2V3_SRC ""
 #endif
 
 /* given by peers.mk: the flags, and Box2D's package version (its 2.4.1
@@ -64,6 +81,9 @@ static const double kDeepOverlap = 0.1;
    (Chipmunk 7's pivot grid passes it at about step 180; its broadphase
    then takes a second a step.) */
 static const double kBlownUpSpeed = 200;
+/* A run stops once its steps have taken this long (PEERS_MAX_RUN_S, s;
+   default 120): Box2D 2.4.1 on spinner would take many minutes a run. */
+static double g_max_run_ms = 120e3;
 
 static double now_ms()
 {
@@ -86,8 +106,8 @@ public:
 };
 
 /* The one shape of body b when it is a circle at the body's origin (the
-   bodies with shapes the runner builds); NULL for a box (no shapes of its
-   own) or anything else (then the world is not built). */
+   bodies with shapes Chipmunk's world builds); NULL for a box (no shapes
+   of its own) or anything else. */
 static const bench_shape *lone_circle(const bench_scene &s, const bench_body &b)
 {
     if (b.shape_count != 1) return NULL;
@@ -95,53 +115,79 @@ static const bench_shape *lone_circle(const bench_scene &s, const bench_body &b)
     return sh->kind == BENCH_SHAPE_CIRCLE && sh->x1 == 0 && sh->y1 == 0 ? sh : NULL;
 }
 
-/* A body the runner cannot build: shapes other than one centred circle. */
-static bool unsupported(const bench_scene &s, const bench_body &b) { return b.shape_count > 0 && !lone_circle(s, b); }
+/* Whether Chipmunk's world builds the scene (else it sits it out): boxes
+   and centred circles, pins, no chain and no motor (spinner has both). */
+static bool chipmunk_builds(const bench_scene &s)
+{
+    for (int i = 0; i < s.joint_count; ++i)
+        if (s.joints[i].motor) return false;
+    for (int i = 0; i < s.count; ++i)
+        if (s.bodies[i].shape_count > 0 && !lone_circle(s, s.bodies[i])) return false;
+    return s.chain_count == 0;
+}
 
-/* One build of ga2d_peer.c: the generic one, or the -mavx2 one. */
-struct Ga2dBuild {
-    ga2d_peer *(*create)(double gx, double gy, int sleep, int capacity);
-    int (*add_box)(ga2d_peer *p, int type, double x, double y, double hx, double hy, double vx, double vy, double w,
+/* A body of shapes: shape_count > 0, or none at all (a chain's body). */
+static bool has_own_shapes(const bench_body &b) { return b.shape_count > 0 || b.hx <= 0; }
+
+/* One engine reached through ga2d_peer.h's C functions (T: its world):
+   ga2d's generic build, its -mavx2 build, Box2D v3. */
+template <class T> struct CBuild {
+    T *(*create)(double gx, double gy, int sleep, int capacity);
+    int (*add_box)(T *p, int type, double x, double y, double hx, double hy, double vx, double vy, double w,
                    double density, double friction, int asleep);
-    int (*add_circle)(ga2d_peer *p, int type, double x, double y, double radius, double density, double friction,
-                      unsigned category, unsigned mask);
-    int (*add_revolute)(ga2d_peer *p, int a, int b, double ax, double ay, double bx, double by);
-    int (*step)(ga2d_peer *p, double dt);
-    void (*pose)(const ga2d_peer *p, int i, double *x, double *y, double *angle);
-    void (*velocity)(const ga2d_peer *p, int i, double *vx, double *vy);
-    int (*is_awake)(const ga2d_peer *p, int i);
-    void (*set_velocity)(ga2d_peer *p, int i, double vx, double vy, double w);
-    void (*destroy)(ga2d_peer *p);
+    int (*add_body)(T *p, int type, double x, double y, double angle, double vx, double vy, double w,
+                    double linear_damping, int asleep, int never_sleeps);
+    int (*add_shape)(T *p, int i, int kind, double x1, double y1, double x2, double y2, double radius, int count,
+                     const double *px, const double *py, double density, double friction, double restitution,
+                     int group, unsigned category, unsigned mask);
+    int (*add_chain_loop)(T *p, int i, int count, const double *x, const double *y, double friction);
+    int (*add_revolute)(T *p, int a, int b, double ax, double ay, double bx, double by, int motor,
+                        double motor_speed, double max_motor_torque);
+    int (*step)(T *p, double dt);
+    void (*pose)(const T *p, int i, double *x, double *y, double *angle);
+    void (*velocity)(const T *p, int i, double *vx, double *vy);
+    int (*is_awake)(const T *p, int i);
+    void (*set_velocity)(T *p, int i, double vx, double vy, double w);
+    void (*destroy)(T *p);
 };
 
-#define GA2D_BUILD(P)                                                                                               \
-    {P##create,   P##add_box,  P##add_circle,   P##add_revolute, P##step,                                          \
-     P##pose,     P##velocity, P##is_awake,     P##set_velocity, P##destroy}
-static const Ga2dBuild kGa2dGeneric = GA2D_BUILD(ga2d_peer_);
+#define PEER_BUILD(P)                                                                                               \
+    {P##create,   P##add_box,  P##add_body,  P##add_shape,     P##add_chain_loop, P##add_revolute,                 \
+     P##step,     P##pose,     P##velocity,  P##is_awake,      P##set_velocity,   P##destroy}
+static const CBuild<ga2d_peer> kGa2dGeneric = PEER_BUILD(ga2d_peer_);
 #if PEERS_AVX2
-static const Ga2dBuild kGa2dAvx2 = GA2D_BUILD(ga2d_peer_avx2_);
+static const CBuild<ga2d_peer> kGa2dAvx2 = PEER_BUILD(ga2d_peer_avx2_);
+#endif
+#if PEERS_B2V3
+static const CBuild<b2v3_peer> kB2v3 = PEER_BUILD(b2v3_peer_);
 #endif
 
-class Ga2dWorld : public World {
+template <class T> class CWorld : public World {
 public:
-    Ga2dWorld(const bench_scene &s, const Ga2dBuild &f) : f_(f), p_(f.create(s.gx, s.gy, s.sleep, s.count)), ok_(p_ != NULL)
+    CWorld(const bench_scene &s, const CBuild<T> &f) : f_(f), p_(f.create(s.gx, s.gy, s.sleep, s.count)), ok_(p_ != NULL)
     {
         for (int i = 0; ok_ && i < s.count; ++i) {
             const bench_body &b = s.bodies[i];
-            const bench_shape *c = lone_circle(s, b);
-            if (unsupported(s, b))
-                ok_ = false;
-            else if (c)
-                ok_ = f_.add_circle(p_, b.type, b.x, b.y, c->radius, c->density, c->friction, c->category, c->mask) == i;
-            else
+            if (!has_own_shapes(b)) {
                 ok_ = f_.add_box(p_, b.type, b.x, b.y, b.hx, b.hy, b.vx, b.vy, b.w, b.density, b.friction, b.asleep) == i;
+                continue;
+            }
+            ok_ = f_.add_body(p_, b.type, b.x, b.y, b.angle, b.vx, b.vy, b.w, b.linear_damping, b.asleep,
+                              b.never_sleeps) == i;
+            for (int k = 0; ok_ && k < b.shape_count; ++k) {
+                const bench_shape &sh = s.shapes[b.shape_first + k];
+                ok_ = f_.add_shape(p_, i, sh.kind, sh.x1, sh.y1, sh.x2, sh.y2, sh.radius, sh.count, sh.px, sh.py,
+                                   sh.density, sh.friction, sh.restitution, sh.group, sh.category, sh.mask) == 0;
+            }
+            if (ok_ && s.chain_count > 0 && i == s.chain_body)
+                ok_ = f_.add_chain_loop(p_, i, s.chain_count, s.chain_x, s.chain_y, s.chain_friction) == 0;
         }
         for (int i = 0; ok_ && i < s.joint_count; ++i) {
             const bench_joint &j = s.joints[i];
-            ok_ = f_.add_revolute(p_, j.a, j.b, j.ax, j.ay, j.bx, j.by) == 0;
+            ok_ = f_.add_revolute(p_, j.a, j.b, j.ax, j.ay, j.bx, j.by, j.motor, j.motor_speed, j.max_motor_torque) == 0;
         }
     }
-    ~Ga2dWorld() { f_.destroy(p_); }
+    ~CWorld() { f_.destroy(p_); }
     bool ok() const { return ok_; }
     bool step(double dt) { return f_.step(p_, dt) == 0; }
     void pose(int i, double *x, double *y, double *angle) const { f_.pose(p_, i, x, y, angle); }
@@ -150,59 +196,114 @@ public:
     bool awake(int i) const { return f_.is_awake(p_, i) != 0; }
 
 private:
-    Ga2dWorld(const Ga2dWorld &);
-    Ga2dWorld &operator=(const Ga2dWorld &);
-    const Ga2dBuild &f_;
-    ga2d_peer *p_;
+    CWorld(const CWorld &);
+    CWorld &operator=(const CWorld &);
+    const CBuild<T> &f_;
+    T *p_;
     bool ok_;
 };
+
+/* Box2D 2.4.1 has no capsule and no rounded polygon.  A capsule is built
+   as the box between its two centres and a circle at each end, the circles
+   at half the density (the box covers half of each), which gives the
+   capsule's mass and centre exactly; its rotational inertia is then set to
+   the capsule's own (b2Body::SetMassData).  A rounded polygon becomes the
+   sharp polygon its rounded outline is inscribed in: each vertex moved out
+   to where the two neighbouring edges, pushed out by the radius, meet
+   (spinner's bar: a 0.6 x 20.2 box in place of 0.4 x 20 rounded by 0.2,
+   the corners 0.083 m further out). */
+struct Box2dMass {
+    double mass, mx, my, inertia; /* sums over a body's shapes; inertia about the body origin */
+};
+
+/* A capsule's mass, centroid and inertia about its centroid, as a solid
+   rectangle of length L = |c2 - c1| and width 2r plus two half discs. */
+static void capsule_mass(const bench_shape &sh, double *m, double *i_centre)
+{
+    double L = std::hypot(sh.x2 - sh.x1, sh.y2 - sh.y1), r = sh.radius, rho = sh.density;
+    double m_box = rho * 2 * r * L, m_caps = rho * kPi * r * r;
+    double h = 0.5 * L, d = 4 * r / (3 * kPi); /* a half disc's centroid from its flat side */
+    /* the two half discs about the capsule's centre: m_caps (r^2/2 + h^2 + 2 h d) (parallel axes) */
+    double i_caps = m_caps * (0.5 * r * r + h * h + 2 * h * d);
+    double i_box = m_box * (L * L + 4 * r * r) / 12;
+    *m = m_box + m_caps;
+    *i_centre = i_box + i_caps;
+}
+
+/* The polygon's vertices pushed out by r: vertex k moves to where the
+   edges before and after it, each moved out by r along its outward
+   normal, meet: v + r (n1 + n2) / (1 + n1.n2). */
+static void inflate_polygon(const bench_shape &sh, b2Vec2 *out)
+{
+    int n = sh.count;
+    for (int k = 0; k < n; ++k) {
+        int a = (k + n - 1) % n, b = (k + 1) % n;
+        double e1x = sh.px[k] - sh.px[a], e1y = sh.py[k] - sh.py[a], e2x = sh.px[b] - sh.px[k], e2y = sh.py[b] - sh.py[k];
+        double l1 = std::hypot(e1x, e1y), l2 = std::hypot(e2x, e2y);
+        double n1x = e1y / l1, n1y = -e1x / l1, n2x = e2y / l2, n2y = -e2x / l2; /* outward: counter-clockwise */
+        double f = sh.radius / (1 + n1x * n2x + n1y * n2y);
+        out[k].Set((float)(sh.px[k] + f * (n1x + n2x)), (float)(sh.py[k] + f * (n1y + n2y)));
+    }
+}
 
 class Box2dWorld : public World {
 public:
     explicit Box2dWorld(const bench_scene &s) : world_(b2Vec2((float)s.gx, (float)s.gy)), ok_(true)
     {
         world_.SetAllowSleeping(s.sleep != 0);
+        /* On spinner 2.4.1's continuous collision stalls: one run went
+           past 10 minutes with 97 % of the time in b2World::SolveTOI (it
+           sweeps every fast body against the loop and repeats after each
+           hit), so there it is off; everywhere else it is on, its default */
+        world_.SetContinuousPhysics(s.chain_count == 0);
         bodies_.reserve((size_t)s.count);
         for (int i = 0; i < s.count; ++i) {
             const bench_body &b = s.bodies[i];
             b2BodyDef bd;
             bd.type = b.type == BENCH_DYNAMIC ? b2_dynamicBody : b.type == BENCH_KINEMATIC ? b2_kinematicBody : b2_staticBody;
             bd.position.Set((float)b.x, (float)b.y);
+            bd.angle = (float)b.angle;
             bd.linearVelocity.Set((float)b.vx, (float)b.vy);
             bd.angularVelocity = (float)b.w;
+            bd.linearDamping = (float)b.linear_damping;
             bd.awake = !b.asleep;
+            bd.allowSleep = !b.never_sleeps;
             b2Body *body = world_.CreateBody(&bd);
-            const bench_shape *c = lone_circle(s, b);
-            b2PolygonShape box;
-            b2CircleShape circle;
-            b2FixtureDef fd;
-            ok_ = ok_ && !unsupported(s, b);
-            if (c) {
-                circle.m_radius = (float)c->radius;
-                fd.shape = &circle;
-                fd.density = (float)c->density;
-                fd.friction = (float)c->friction;
-                /* Box2D 2.4's filter bits are 16 wide; the scenes use the low ones */
-                fd.filter.categoryBits = (uint16)c->category;
-                fd.filter.maskBits = (uint16)c->mask;
-            } else {
+            bodies_.push_back(body);
+            if (!has_own_shapes(b)) {
+                b2PolygonShape box;
+                b2FixtureDef fd;
                 box.SetAsBox((float)b.hx, (float)b.hy);
                 fd.shape = &box;
                 fd.density = (float)b.density;
                 fd.friction = (float)b.friction; /* Box2D mixes pairs as sqrt(mu_a mu_b) */
+                fd.restitution = 0;
+                body->CreateFixture(&fd);
+                continue;
             }
-            fd.restitution = 0;
-            body->CreateFixture(&fd);
-            bodies_.push_back(body);
+            Box2dMass mass = {0, 0, 0, 0};
+            bool capsules = false;
+            for (int k = 0; k < b.shape_count; ++k) capsules = capsules || add_shape(body, s.shapes[b.shape_first + k], &mass);
+            if (capsules && b.type == BENCH_DYNAMIC && mass.mass > 0) {
+                b2MassData md;
+                md.mass = (float)mass.mass;
+                md.center.Set((float)(mass.mx / mass.mass), (float)(mass.my / mass.mass));
+                md.I = (float)mass.inertia; /* about the body origin, as Box2D 2.4 takes it */
+                body->SetMassData(&md);
+            }
+            if (s.chain_count > 0 && i == s.chain_body) add_loop(s);
         }
         for (int i = 0; ok_ && i < s.joint_count; ++i) {
             const bench_joint &j = s.joints[i];
-            b2RevoluteJointDef jd; /* collideConnected false, no limit or motor */
+            b2RevoluteJointDef jd; /* collideConnected false, no limit */
             jd.bodyA = bodies_[(size_t)j.a];
             jd.bodyB = bodies_[(size_t)j.b];
             jd.localAnchorA.Set((float)j.ax, (float)j.ay);
             jd.localAnchorB.Set((float)j.bx, (float)j.by);
             jd.referenceAngle = jd.bodyB->GetAngle() - jd.bodyA->GetAngle();
+            jd.enableMotor = j.motor != 0;
+            jd.motorSpeed = (float)j.motor_speed;
+            jd.maxMotorTorque = (float)j.max_motor_torque;
             world_.CreateJoint(&jd);
         }
     }
@@ -233,6 +334,102 @@ public:
     bool awake(int i) const { return bodies_[(size_t)i]->IsAwake(); }
 
 private:
+    /* The scene's loop as chain_count static bodies of one one-sided edge
+       each, its neighbours' points as the edge's ghosts: the segments a
+       b2ChainShape loop makes (clockwise, solid to the right, as 2.4's
+       one-sided edges push), on bodies of their own.  On one body, as
+       Box2D v3 has it, one spinner run took over 6 minutes: for every
+       pair b2ContactManager::AddPair scans the body's contact list, which
+       holds every contact of the loop. */
+    void add_loop(const bench_scene &s)
+    {
+        const bench_body &owner = s.bodies[s.chain_body]; /* its points are in this body's frame (unturned) */
+        int n = s.chain_count;
+        for (int k = 0; k < n; ++k) {
+            b2Vec2 v[4];
+            for (int e = 0; e < 4; ++e) {
+                int m = (k + e - 1 + n) % n;
+                v[e].Set((float)(s.chain_x[m] + owner.x), (float)(s.chain_y[m] + owner.y));
+            }
+            b2BodyDef bd;
+            bd.type = b2_staticBody;
+            b2Body *body = world_.CreateBody(&bd);
+            b2EdgeShape edge;
+            edge.SetOneSided(v[0], v[1], v[2], v[3]);
+            b2FixtureDef fd;
+            fd.shape = &edge;
+            fd.friction = (float)s.chain_friction;
+            body->CreateFixture(&fd);
+        }
+    }
+
+    /* One scene shape as fixtures (see inflate_polygon, capsule_mass); adds
+       its mass to *m; true for a capsule (the body's mass is then set). */
+    static bool add_shape(b2Body *body, const bench_shape &sh, Box2dMass *m)
+    {
+        b2FixtureDef fd;
+        fd.density = (float)sh.density;
+        fd.friction = (float)sh.friction;
+        fd.restitution = (float)sh.restitution; /* pairs take the larger */
+        /* Box2D 2.4's filter bits are 16 wide; the scenes use the low ones */
+        fd.filter.categoryBits = (uint16)sh.category;
+        fd.filter.maskBits = (uint16)sh.mask;
+        fd.filter.groupIndex = (int16)sh.group;
+        if (sh.kind == BENCH_SHAPE_CIRCLE) {
+            b2CircleShape c;
+            c.m_p.Set((float)sh.x1, (float)sh.y1);
+            c.m_radius = (float)sh.radius;
+            fd.shape = &c;
+            body->CreateFixture(&fd);
+            double mc = sh.density * kPi * sh.radius * sh.radius;
+            m->mass += mc;
+            m->mx += mc * sh.x1;
+            m->my += mc * sh.y1;
+            m->inertia += mc * (0.5 * sh.radius * sh.radius + sh.x1 * sh.x1 + sh.y1 * sh.y1);
+            return false;
+        }
+        if (sh.kind == BENCH_SHAPE_CAPSULE) {
+            double cx = 0.5 * (sh.x1 + sh.x2), cy = 0.5 * (sh.y1 + sh.y2);
+            double L = std::hypot(sh.x2 - sh.x1, sh.y2 - sh.y1), angle = std::atan2(sh.y2 - sh.y1, sh.x2 - sh.x1);
+            b2PolygonShape box;
+            box.SetAsBox((float)(0.5 * L), (float)sh.radius, b2Vec2((float)cx, (float)cy), (float)angle);
+            fd.shape = &box;
+            body->CreateFixture(&fd);
+            fd.density = (float)(0.5 * sh.density);
+            for (int e = 0; e < 2; ++e) {
+                b2CircleShape c;
+                c.m_p.Set((float)(e ? sh.x2 : sh.x1), (float)(e ? sh.y2 : sh.y1));
+                c.m_radius = (float)sh.radius;
+                fd.shape = &c;
+                body->CreateFixture(&fd);
+            }
+            double mc, ic;
+            capsule_mass(sh, &mc, &ic);
+            m->mass += mc;
+            m->mx += mc * cx;
+            m->my += mc * cy;
+            m->inertia += ic + mc * (cx * cx + cy * cy);
+            return true;
+        }
+        b2Vec2 v[b2_maxPolygonVertices];
+        int n = sh.count < b2_maxPolygonVertices ? sh.count : b2_maxPolygonVertices;
+        if (sh.radius > 0)
+            inflate_polygon(sh, v);
+        else
+            for (int k = 0; k < n; ++k) v[k].Set((float)sh.px[k], (float)sh.py[k]);
+        b2PolygonShape poly;
+        poly.Set(v, n);
+        fd.shape = &poly;
+        body->CreateFixture(&fd);
+        b2MassData md;
+        poly.ComputeMass(&md, fd.density);
+        m->mass += md.mass;
+        m->mx += md.mass * md.center.x;
+        m->my += md.mass * md.center.y;
+        m->inertia += md.I;
+        return false;
+    }
+
     b2World world_; /* owns the bodies and joints */
     std::vector<b2Body *> bodies_;
     bool ok_;
@@ -240,7 +437,7 @@ private:
 
 class ChipmunkWorld : public World {
 public:
-    explicit ChipmunkWorld(const bench_scene &s) : space_(cpSpaceNew()), ok_(true)
+    explicit ChipmunkWorld(const bench_scene &s) : space_(cpSpaceNew()), ok_(chipmunk_builds(s))
     {
         cpSpaceSetIterations(space_, kChipmunkIterations);
         cpSpaceSetGravity(space_, cpv(s.gx, s.gy));
@@ -253,7 +450,7 @@ public:
             const bench_body &b = s.bodies[i];
             const bench_shape *c = lone_circle(s, b);
             cpBody *body;
-            ok_ = ok_ && !unsupported(s, b);
+            ok_ = ok_ && (b.shape_count == 0 || c); /* chipmunk_builds said so */
             if (b.type == BENCH_DYNAMIC && c) {
                 double m = c->density * kPi * c->radius * c->radius;
                 body = cpBodyNew(m, cpMomentForCircle(m, 0, c->radius, cpvzero));
@@ -340,27 +537,39 @@ private:
 };
 
 template <class W> static World *build(const bench_scene &s) { return new W(s); }
-static World *build_ga2d(const bench_scene &s) { return new Ga2dWorld(s, kGa2dGeneric); }
+static World *build_ga2d(const bench_scene &s) { return new CWorld<ga2d_peer>(s, kGa2dGeneric); }
 #if PEERS_AVX2
-static World *build_ga2d_avx2(const bench_scene &s) { return new Ga2dWorld(s, kGa2dAvx2); }
+static World *build_ga2d_avx2(const bench_scene &s) { return new CWorld<ga2d_peer>(s, kGa2dAvx2); }
 #endif
+#if PEERS_B2V3
+static World *build_b2v3(const bench_scene &s) { return new CWorld<b2v3_peer>(s, kB2v3); }
+#endif
+
+static bool builds_all(const bench_scene &) { return true; }
 
 struct Engine {
     const char *name;
     World *(*build)(const bench_scene &s);
+    bool (*builds)(const bench_scene &s); /* false: the engine sits the scene out */
 };
 
-/* ga2d first (its median is every ratio's numerator); ga2d's AVX2 build,
-   where there is one, last, with its own ratios */
-static const Engine kEngines[] = {{"ga2d", build_ga2d},
-                                  {"Box2D", build<Box2dWorld>},
-                                  {"Chipmunk", build<ChipmunkWorld>},
+/* ga2d first (its median is every ratio's numerator); Box2D v3 where
+   B2V3_SRC gave its sources; ga2d's AVX2 build, where there is one, last,
+   with its own ratios */
+static const Engine kEngines[] = {{"ga2d", build_ga2d, builds_all},
+                                  {"Box2D", build<Box2dWorld>, builds_all},
+                                  {"Chipmunk", build<ChipmunkWorld>, chipmunk_builds},
+#if PEERS_B2V3
+                                  {"Box2D-v3", build_b2v3, builds_all},
+#endif
 #if PEERS_AVX2
-                                  {"ga2d-avx2", build_ga2d_avx2}
+                                  {"ga2d-avx2", build_ga2d_avx2, builds_all}
 #endif
 };
 static const int kEngineCount = (int)(sizeof kEngines / sizeof kEngines[0]);
 static const int kAvx2 = PEERS_AVX2 ? kEngineCount - 1 : -1; /* ga2d-avx2's index, -1 when not built */
+static const int kBox2d = 1;                                  /* Box2D 2.4.1's index */
+static const int kV3 = PEERS_B2V3 ? 3 : -1;                   /* Box2D v3's index, -1 when not built */
 
 /* ------------------------------------------------------- accuracy figures */
 /* The scene's boxes (their nominal size, no engine's skin) placed by an
@@ -566,6 +775,7 @@ struct RunResult {
     std::string check;  /* what says the scene behaved (see scene_check) */
     std::string failed; /* non-empty when the run could not finish */
     int blown_up;       /* a scene with joints: the step after which a body passed kBlownUpSpeed, else -1 */
+    int stopped;        /* the step after which the run passed g_max_run_ms of stepping, else -1 */
 };
 
 /* The fastest dynamic body's speed, m/s. */
@@ -585,6 +795,7 @@ static double fastest(const bench_scene &s, const World &w)
 struct RunStats {
     int asleep_wanted, asleep_at_start; /* bodies the scene creates asleep; of them, asleep after building */
     int deep_steps;                     /* steps whose deepest overlap passed kDeepOverlap */
+    double turn;                        /* BENCH_FIG_LAG: the probe's turn over the run, rad */
 };
 
 /* The worst joint separation at the end (bench_scene_joint_gap), m. */
@@ -611,6 +822,24 @@ static std::string scene_check(const bench_scene &s, const World &w, const RunSt
         }
         snprintf(line, sizeof line, "corner dx %+.3f dy %+.3f m; lowest body at y %.3f m; worst joint separation %.4f m",
                  x - s.bodies[s.probe].x, y - s.bodies[s.probe].y, lowest, joint_gap(s, w));
+    } else if (s.figure == BENCH_FIG_LAG) {
+        /* a body is out when its centre is beyond the loop's radius from
+           the loop's centre, the mean of its points */
+        double cx = 0, cy = 0, r2 = 0;
+        int out = 0;
+        for (int k = 0; k < s.chain_count; ++k) {
+            cx += s.chain_x[k] / s.chain_count;
+            cy += s.chain_y[k] / s.chain_count;
+        }
+        for (int k = 0; k < s.chain_count; ++k) r2 = std::max(r2, std::hypot(s.chain_x[k] - cx, s.chain_y[k] - cy));
+        for (int i = 0; i < s.count; ++i) {
+            double x, y, a;
+            if (s.bodies[i].type != BENCH_DYNAMIC) continue;
+            w.pose(i, &x, &y, &a);
+            out += !(std::hypot(x - cx, y - cy) <= r2);
+        }
+        snprintf(line, sizeof line, "bar turned %.2f rad (its motor: %.2f rad); bodies out of the loop: %d", st.turn,
+                 s.joints[0].motor_speed * s.steps * s.dt, out);
     } else if (s.figure == BENCH_FIG_DRIFT) {
         double x, y, angle;
         w.pose(s.probe, &x, &y, &angle);
@@ -657,6 +886,8 @@ static RunResult run_once(const Engine &e, const bench_scene &s)
     r.ms = 0;
     r.figure = 0;
     r.blown_up = -1;
+    r.stopped = -1;
+    double stepping = 0; /* every step's time, the untimed first ones too */
     StderrCatcher caught;
     World *w = e.build(s);
     if (!w->ok()) {
@@ -664,7 +895,7 @@ static RunResult run_once(const Engine &e, const bench_scene &s)
         delete w;
         return r;
     }
-    RunStats st = {0, 0, 0};
+    RunStats st = {0, 0, 0, 0};
     for (int i = 0; i < s.count; ++i)
         if (s.bodies[i].asleep) {
             ++st.asleep_wanted;
@@ -672,7 +903,11 @@ static RunResult run_once(const Engine &e, const bench_scene &s)
         }
     std::vector<PlacedBox> boxes;
     std::vector<int> order;
-    double total = 0, deepest = 0;
+    double total = 0, deepest = 0, probe_angle = 0;
+    if (s.figure == BENCH_FIG_LAG) {
+        double x, y;
+        w->pose(s.probe, &x, &y, &probe_angle);
+    }
     for (int step = 0; step < s.steps; ++step) {
         /* kinematic walls turn rigidly: each takes the velocity of the
            turning frame at its current centre */
@@ -695,17 +930,34 @@ static RunResult run_once(const Engine &e, const bench_scene &s)
             r.blown_up = step;
             break;
         }
+        stepping += t1 - t0;
+        if (stepping > g_max_run_ms && step + 1 < s.steps) {
+            r.stopped = step;
+            break;
+        }
         if (s.figure == BENCH_FIG_PENETRATION) {
             place_boxes(s, *w, boxes);
             double d = deepest_overlap(boxes, order);
             deepest = std::max(deepest, d);
             st.deep_steps += d > kDeepOverlap;
         }
+        if (s.figure == BENCH_FIG_LAG) {
+            double x, y, now;
+            w->pose(s.probe, &x, &y, &now);
+            st.turn += bench_scene_turn(probe_angle, now);
+            probe_angle = now;
+        }
     }
-    if (r.blown_up >= 0) {
-        char line[160];
-        snprintf(line, sizeof line, "blew up after step %d of %d: a body faster than %g m/s; no time, no figure",
-                 r.blown_up + 1, s.steps, kBlownUpSpeed);
+    if (r.blown_up >= 0 || r.stopped >= 0) {
+        char line[200];
+        if (r.blown_up >= 0)
+            snprintf(line, sizeof line, "blew up after step %d of %d: a body faster than %g m/s; no time, no figure",
+                     r.blown_up + 1, s.steps, kBlownUpSpeed);
+        else
+            snprintf(line, sizeof line,
+                     "stopped after step %d of %d: %.1f s of stepping (PEERS_MAX_RUN_S), %.3g ms/step; no figure",
+                     r.stopped + 1, s.steps, stepping / 1e3, stepping / (r.stopped + 1));
+        r.blown_up = 0; /* one way or the other, the engine's run ended early */
         r.check = line;
         delete w;
         r.check += caught.finish();
@@ -721,7 +973,9 @@ static RunResult run_once(const Engine &e, const bench_scene &s)
     }
     else if (s.figure == BENCH_FIG_MOMENTUM)
         r.figure = momentum_error(s, *w);
-    else if (s.figure != BENCH_FIG_SAG)
+    else if (s.figure == BENCH_FIG_LAG)
+        r.figure = bench_scene_lag(&s, st.turn);
+    else
         r.figure = deepest;
     r.check = scene_check(s, *w, st);
     delete w;
@@ -740,7 +994,7 @@ static double minimum(const std::vector<double> &v) { return *std::min_element(v
 
 /* ------------------------------------------------------------------ main */
 static const char *const kScenes[] = {"large_pyramid", "many_pyramids", "smash", "tumbler", "pyramid20", "stack10",
-                                     "joint_grid"};
+                                     "joint_grid",    "spinner"};
 static const int kSceneCount = (int)(sizeof kScenes / sizeof kScenes[0]);
 
 static const char *cxx_compiler()
@@ -761,7 +1015,7 @@ static void print_header(int runs)
     if (*PEERS_BOX2D_VERSION && strcmp(b2, PEERS_BOX2D_VERSION) != 0)
         snprintf(b2, sizeof b2, "%s (b2_version says %d.%d.%d)", PEERS_BOX2D_VERSION, b2_version.major,
                  b2_version.minor, b2_version.revision);
-    printf("bench-peers: ga2d vs Box2D %s vs Chipmunk %s\n", b2, cpVersionString);
+    printf("bench-peers: ga2d vs Box2D %s vs Chipmunk %s%s\n", b2, cpVersionString, PEERS_B2V3 ? " vs Box2D v3" : "");
     printf("  %d runs per engine and scene, engines alternating; dt = 1/60; ms/step = world step time over\n"
            "  the steps after the first %d (building, wall velocities and figures untimed)\n",
            runs, kUntimedSteps);
@@ -775,7 +1029,8 @@ static void print_header(int runs)
            "  restitution 0, sleep per scene; the scene's joints revolute, at the defaults):\n");
     printf("  ga2d      %s; sleep: bodies created with is_awake = 0\n", ga2d_peer_settings());
     printf("  Box2D     %d velocity + %d position iterations; SetAsBox (polygon skin %.3f m, linear slop %.3f m);\n"
-           "            friction mixes as sqrt; continuous collision on (default); sleep: bd.awake = false\n",
+           "            friction mixes as sqrt; continuous collision on (default; off on spinner, where its\n"
+           "            SolveTOI stalls); sleep: bd.awake = false\n",
            kBox2dVelocityIterations, kBox2dPositionIterations, (double)b2_polygonRadius, (double)b2_linearSlop);
     printf("            joints: b2RevoluteJoint (solved with the same iterations)\n");
     printf("  Chipmunk  %d iterations; cpBoxShapeNew radius 0; collision slop %.3f m; mass = density x area,\n"
@@ -783,7 +1038,17 @@ static void print_header(int runs)
            "            put to sleep with cpBodySleep after they are added; cpFloat = %s; the library is\n"
            "            built with its debug checks (see its banner above); its warnings are counted per run\n",
            kChipmunkIterations, kChipmunkSlop, kChipmunkSleepTime, sizeof(cpFloat) == sizeof(double) ? "double" : "float");
-    printf("            joints: cpPivotJointNew2 at the two anchors (default error bias, max force infinite)\n");
+    printf("            joints: cpPivotJointNew2 at the two anchors (default error bias, max force infinite);\n"
+           "            scenes with other shapes, a chain or a motor (spinner): left out\n");
+    printf("  Box2D (2.4.1) capsules: a box and two half-density circles, mass and inertia set to the capsule's;\n"
+           "            rounded polygons: the sharp polygon around the rounding; a chain loop: a static body per\n"
+           "            one-sided edge, the neighbours as ghosts (on one body AddPair makes a run take minutes)\n");
+#if PEERS_B2V3
+    printf("  Box2D-v3  %s;\n"
+           "            built from %s with %s %s\n"
+           "            (-I its include and src); shapes, chains and joints through its public API\n",
+           b2v3_peer_settings(), PEERS_B2V3_SRC, b2v3_peer_compiler(), PEERS_B2V3_CFLAGS);
+#endif
     printf("figures, measured alike in every engine from its poses and velocities:\n"
            "  drift: the top box's distance from its start at the end (m); Box2D's boxes rest on their skins,\n"
            "    so its stacks stand about 0.013 m per layer higher than they were built\n"
@@ -792,6 +1057,7 @@ static void print_header(int runs)
            "    nominal size (Box2D's 0.01 m skin is not part of the box), one of them dynamic (m)\n"
            "  sag: how far the joint grid's bottom corner ends below its start (m); the check gives the\n"
            "    worst joint separation at the end: the largest distance between a joint's two anchors\n"
+           "  lag: how far spinner's bar's turn over the run falls short of its motor's speed x time (rad)\n"
            "ratio = ga2d median / peer median: below 1, ga2d is faster\n");
 }
 
@@ -808,21 +1074,37 @@ int main(int argc, char **argv)
         }
         runs = (int)n;
     }
-    const char *only = argc > 1 && strcmp(argv[1], "all") != 0 ? argv[1] : NULL;
-    const char *csv_path = argc > 2 ? argv[2] : "build/bench/peers.csv";
-    if (only) {
-        bool known = false;
-        for (int k = 0; k < kSceneCount; ++k) known = known || strcmp(only, kScenes[k]) == 0;
-        if (!known) {
-            fprintf(stderr, "peers: unknown scene '%s'; scenes:", only);
-            for (int k = 0; k < kSceneCount; ++k) fprintf(stderr, " %s", kScenes[k]);
-            fprintf(stderr, " (or all)\n");
+    const char *max_run = getenv("PEERS_MAX_RUN_S");
+    if (max_run && *max_run) {
+        char *end;
+        double sec = strtod(max_run, &end);
+        if (*end || !(sec > 0)) {
+            fprintf(stderr, "peers: PEERS_MAX_RUN_S must be a positive number of seconds, not '%s'\n", max_run);
             return 2;
         }
+        g_max_run_ms = sec * 1e3;
     }
+    /* the scenes asked for: "all", or names separated by commas */
+    bool wanted[kSceneCount];
+    const char *asked = argc > 1 ? argv[1] : "all";
+    for (int k = 0; k < kSceneCount; ++k) wanted[k] = strcmp(asked, "all") == 0;
+    for (const char *name = asked; strcmp(asked, "all") != 0 && *name;) {
+        size_t n = strcspn(name, ",");
+        bool known = false;
+        for (int k = 0; k < kSceneCount; ++k)
+            if (strlen(kScenes[k]) == n && strncmp(name, kScenes[k], n) == 0) known = wanted[k] = true;
+        if (!known) {
+            fprintf(stderr, "peers: unknown scene '%.*s'; scenes:", (int)n, name);
+            for (int k = 0; k < kSceneCount; ++k) fprintf(stderr, " %s", kScenes[k]);
+            fprintf(stderr, " (or all; several: a,b)\n");
+            return 2;
+        }
+        name += n + (name[n] == ',');
+    }
+    const char *csv_path = argc > 2 ? argv[2] : "build/bench/peers.csv";
     FILE *csv = fopen(csv_path, "w");
     if (!csv) fprintf(stderr, "peers: cannot write %s; no CSV this time\n", csv_path);
-    if (csv) fprintf(csv, "scene,engine,ms_median,ms_min,figure_name,figure,ratio,ratio_avx2\n");
+    if (csv) fprintf(csv, "scene,engine,ms_median,ms_min,figure_name,figure,ratio,ratio_avx2,over_v3\n");
 
     /* Chipmunk greets on its first space; let that happen before the tables */
     cpSpaceFree(cpSpaceNew());
@@ -831,7 +1113,7 @@ int main(int argc, char **argv)
     double t_start = now_ms();
     int failures = 0;
     for (int k = 0; k < kSceneCount; ++k) {
-        if (only && strcmp(only, kScenes[k]) != 0) continue;
+        if (!wanted[k]) continue;
         bench_scene s;
         if (bench_scene_make(kScenes[k], &s) != 0) {
             fprintf(stderr, "peers: cannot make scene %s\n", kScenes[k]);
@@ -842,9 +1124,11 @@ int main(int argc, char **argv)
         fflush(stdout);
         std::vector<double> ms[kEngineCount], fig[kEngineCount];
         std::string check[kEngineCount], failed[kEngineCount], blown[kEngineCount];
+        bool left_out[kEngineCount];
+        for (int e = 0; e < kEngineCount; ++e) left_out[e] = !kEngines[e].builds(s);
         for (int r = 0; r < runs; ++r)
             for (int e = 0; e < kEngineCount; ++e) {
-                if (!failed[e].empty() || !blown[e].empty()) continue;
+                if (left_out[e] || !failed[e].empty() || !blown[e].empty()) continue;
                 RunResult res = run_once(kEngines[e], s);
                 if (!res.failed.empty()) {
                     failed[e] = res.failed;
@@ -862,8 +1146,17 @@ int main(int argc, char **argv)
                kAvx2 >= 0 ? "  ga2d-avx2/peer" : "");
         double ga2d_med = ms[0].empty() ? NAN : median(ms[0]);
         double avx2_med = kAvx2 < 0 || ms[kAvx2].empty() ? NAN : median(ms[kAvx2]);
+        double v3_med = kV3 < 0 || ms[kV3].empty() ? NAN : median(ms[kV3]);
         std::string notes;
         for (int e = 0; e < kEngineCount; ++e) {
+            if (left_out[e]) {
+                printf("  %-14s %-9s left out: the runner builds it boxes and centred circles with pins only\n", s.name,
+                       kEngines[e].name);
+                if (csv)
+                    fprintf(csv, "%s,%s,nan,nan,\"%s\",nan,nan,nan,nan\n", s.name, kEngines[e].name,
+                            bench_scene_figure_name(&s));
+                continue;
+            }
             if (!failed[e].empty()) {
                 printf("  %-14s %-9s FAILED: %s\n", s.name, kEngines[e].name, failed[e].c_str());
                 ++failures;
@@ -872,7 +1165,7 @@ int main(int argc, char **argv)
             if (!blown[e].empty()) {
                 printf("  %-14s %-9s %s\n", s.name, kEngines[e].name, blown[e].c_str());
                 if (csv)
-                    fprintf(csv, "%s,%s,nan,nan,\"%s\",nan,nan,nan\n", s.name, kEngines[e].name,
+                    fprintf(csv, "%s,%s,nan,nan,\"%s\",nan,nan,nan,nan\n", s.name, kEngines[e].name,
                             bench_scene_figure_name(&s));
                 continue;
             }
@@ -896,8 +1189,14 @@ int main(int argc, char **argv)
                 notes += varies;
             }
             if (csv)
-                fprintf(csv, "%s,%s,%.6f,%.6f,\"%s\",%.9g,%.6f,%.6f\n", s.name, kEngines[e].name, med, lo,
-                        bench_scene_figure_name(&s), f, own ? 1.0 : ratio, own || kAvx2 < 0 ? 1.0 : avx2_med / med);
+                fprintf(csv, "%s,%s,%.6f,%.6f,\"%s\",%.9g,%.6f,%.6f,%.6f\n", s.name, kEngines[e].name, med, lo,
+                        bench_scene_figure_name(&s), f, own ? 1.0 : ratio, own || kAvx2 < 0 ? 1.0 : avx2_med / med,
+                        med / v3_med);
+        }
+        if (kV3 >= 0) {
+            double b2_med = ms[kBox2d].empty() ? NAN : median(ms[kBox2d]);
+            printf("  %-14s ratios of medians: ga2d/v3 %.2f, v3/2.4.1 %.2f, ga2d/2.4.1 %.2f\n", s.name, ga2d_med / v3_med,
+                   v3_med / b2_med, ga2d_med / b2_med);
         }
         printf("  check (last run):\n%s", notes.c_str());
         fflush(stdout);
