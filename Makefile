@@ -172,9 +172,9 @@ mutants-apply:
 BENCH_SRC  := $(wildcard tests/bench/bench_*.c)
 BENCH_BINS := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
-$(BUILD)/bench/%: tests/bench/%.c $(HEADER)
+$(BUILD)/bench/%: tests/bench/%.c $(HEADER) examples/task_pool.h
 	@mkdir -p $(dir $@)
-	$(CC) -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS)
+	$(CC) -std=c99 $(OPT) $(WARN) $(INC) $< -o $@ $(LIBS) -pthread
 
 bench: $(BENCH_BINS)
 	@for b in $(BENCH_BINS); do echo "== $$b"; ./$$b $(BUILD)/bench/$$(basename $$b).csv || exit 1; done

@@ -39,9 +39,11 @@
    but the first, summed (Box2D's measure: its runs step the scene's steps
    and time all but the first; so do these, 500 for large_pyramid as
    there).  The worker counts are WORKER_COUNTS'. */
-#define _POSIX_C_SOURCE 199309L
+#define _POSIX_C_SOURCE 200112L
 #define GA2D_IMPLEMENTATION
 #include "ga2d_physics.h"
+#define TASK_POOL_IMPLEMENTATION
+#include "../../examples/task_pool.h"
 #include "scenes.h"
 #include "scene_run.h"
 
@@ -50,7 +52,7 @@
 
 /* The worker counts each scenes.h scene runs at (set_workers), the first
    the table's; each gets a line of the scene's threads,ms CSV. */
-static const int WORKER_COUNTS[] = {1};
+static const int WORKER_COUNTS[] = {1, 2};
 #define WORKER_COUNT_N ((int)(sizeof WORKER_COUNTS / sizeof WORKER_COUNTS[0]))
 #define MAX_PATH 1024
 
@@ -59,8 +61,16 @@ static const int WORKER_COUNTS[] = {1};
    thread's, is all there is). */
 static int set_workers(ga2d_world_def *wd, int workers)
 {
-    (void)wd;
-    return workers == 1;
+    static task_pool *pools[8];
+    if (workers == 1) return 1;
+    if (workers < 1 || workers > 8) return 0;
+    if (!pools[workers - 1]) pools[workers - 1] = task_pool_create(workers); /* kept for the run's life */
+    if (!pools[workers - 1]) return 0;
+    wd->worker_count = workers;
+    wd->enqueue_task = task_pool_enqueue;
+    wd->finish_task = task_pool_finish;
+    wd->user_task_context = pools[workers - 1];
+    return 1;
 }
 
 /* Writes <dir>/<scene>.csv: "threads,ms" and a line per worker count of
@@ -165,7 +175,7 @@ int main(int argc, char **argv)
 {
     const int asked = sr_runs_from_env("BENCH_RUNS", DEFAULT_RUNS), runs = asked < MAX_RUNS ? asked : MAX_RUNS;
     FILE *csv = argc > 1 ? fopen(argv[1], "w") : NULL;
-    double ms[MAX_RUNS], run_ms[WORKER_COUNT_N][MAX_RUNS], start = sr_now_ms();
+    double ms[MAX_RUNS], run_ms[WORKER_COUNT_N][MAX_RUNS], step_ms[WORKER_COUNT_N][MAX_RUNS], start = sr_now_ms();
     char csv_dir[MAX_PATH];
     solved joint = {0, 0, 0, 0}, contact = {0, 0, 0, 0};
     int i, r, c, bad = 0;
@@ -204,6 +214,7 @@ int main(int argc, char **argv)
                 sr_result res;
                 failed |= !sr_run_scene(&s, wd, 0, &res);
                 if (c == 0) ms[r] = res.ms;
+                step_ms[c][r] = res.ms;
                 run_ms[c][r] = res.run_ms;
                 if (c == 0 && r == 0) {
                     figure = res.figure;
@@ -220,6 +231,15 @@ int main(int argc, char **argv)
         if (csv && !failed && !write_threads_csv(csv_dir, s.name, WORKER_COUNTS, WORKER_COUNT_N, run_ms, runs)) {
             fprintf(stderr, "bench_scenes: cannot write %s/%s.csv\n", csv_dir, s.name);
             bad = 1;
+        }
+        for (c = 1; c < WORKER_COUNT_N && !failed; ++c) {
+            double one, more;
+            qsort(step_ms[0], (size_t)runs, sizeof step_ms[0][0], sr__cmp_double);
+            qsort(step_ms[c], (size_t)runs, sizeof step_ms[c][0], sr__cmp_double);
+            one = step_ms[0][runs / 2];
+            more = step_ms[c][runs / 2];
+            printf("%-14s %7s %d workers: %.3f ms/step median, %.2f times one worker's speed (the same bits: %s)\n", "", "",
+                   WORKER_COUNTS[c], more, one / more, differ ? "NO" : "yes");
         }
         if (s.joint_count > 0)
             printf("%-14s %7s %d joints, %.0f solved per step; worst joint separation at the end %.3e m\n", "", "",
