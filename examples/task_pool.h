@@ -16,7 +16,9 @@
    into ranges of at least min_range items, about four per worker, handed
    out in order to whoever asks first.  One job at a time (a ga2d step
    enqueues a stage and finishes it before the next); one world per pool
-   at a time.
+   at a time.  Idle workers spin a while before they sleep (jobs come
+   microseconds apart while a world steps): a pool costs its threads'
+   cores while a world is stepping, and a moment after.
 
    Another job system (enkiTS, a game's own) plugs in the same way: its
    enqueue runs task(start, end, worker, task_context) over ranges that
@@ -26,7 +28,7 @@
    results do not depend on how the ranges are cut or ordered.
 
    Header-only: define TASK_POOL_IMPLEMENTATION in one file (it needs
-   -pthread). */
+   -pthread, and gcc's or clang's atomics). */
 #ifndef TASK_POOL_H
 #define TASK_POOL_H
 
@@ -45,9 +47,29 @@ void task_pool_finish(void *user_task, void *user_context);
 
 #ifdef TASK_POOL_IMPLEMENTATION
 #include <pthread.h>
+#include <sched.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #define TASK_POOL_RANGES_PER_WORKER 4
+/* A step hands over many short jobs (a solver pass per colour), each a
+   few microseconds: a worker waiting on a condition variable takes about
+   as long to wake.  So an idle worker first spins on the job word,
+   pausing, then yields its core (more workers than cores), and only then
+   sleeps until the next job. */
+#define TASK_POOL_SPINS 2000  /* polls with a pause between */
+#define TASK_POOL_YIELDS 200  /* then polls with a yield between */
+
+/* The compiler's atomics (gcc, clang); another compiler brings its own. */
+#define TASK_POOL_LOAD(x) __atomic_load_n(&(x), __ATOMIC_ACQUIRE)
+#define TASK_POOL_STORE(x, v) __atomic_store_n(&(x), (v), __ATOMIC_RELEASE)
+#define TASK_POOL_ADD(x, v) __atomic_add_fetch(&(x), (v), __ATOMIC_ACQ_REL)
+#define TASK_POOL_CAS(x, old, new) __atomic_compare_exchange_n(&(x), &(old), (new), 0, __ATOMIC_ACQ_REL, __ATOMIC_ACQUIRE)
+#if defined(__x86_64__) || defined(__i386__)
+#define TASK_POOL_PAUSE() __builtin_ia32_pause()
+#else
+#define TASK_POOL_PAUSE() ((void)0)
+#endif
 
 typedef struct task_pool_thread {
     task_pool *pool;
@@ -57,55 +79,74 @@ typedef struct task_pool_thread {
 
 struct task_pool {
     pthread_mutex_t lock;
-    pthread_cond_t wake, done;
+    pthread_cond_t wake;
     task_pool_thread *threads;
-    int workers, started, quit;
-    /* the job under way */
+    int workers, started;
+    int quit, sleepers;
+    /* the job under way: `state` is its generation (high 32 bits) and
+       the next item to hand out (low 32), so a worker that read an old
+       job's fields claims nothing of a new one */
     ga2d_task_fn *task;
     void *context;
-    int count, range, next, running;
-    unsigned long generation; /* a new job was posted */
+    int count, range, done;
+    uint64_t state;
 };
 
-/* Takes the next range of the job, or returns 0 (all handed out). */
-static int task_pool__take(task_pool *p, int *start, int *end)
+/* Claims the next range of job `gen`, or returns 0 (all handed out, or
+   the job is no longer gen). */
+static int task_pool__take(task_pool *p, uint32_t gen, int count, int range, int *start, int *end)
 {
-    if (!p->task || p->next >= p->count) return 0;
-    *start = p->next;
-    *end = p->count - p->next > p->range ? p->next + p->range : p->count;
-    p->next = *end;
-    ++p->running;
-    return 1;
+    uint64_t v = TASK_POOL_LOAD(p->state);
+    for (;;) {
+        int next = (int)(uint32_t)v;
+        if ((uint32_t)(v >> 32) != gen || next >= count) return 0;
+        *start = next;
+        *end = count - next > range ? next + range : count;
+        if (TASK_POOL_CAS(p->state, v, ((uint64_t)gen << 32) | (uint32_t)*end)) return 1;
+    }
 }
 
-/* Runs ranges until none are left; called with the lock held, returns
-   with it held. */
-static void task_pool__work(task_pool *p, int worker)
+/* Runs ranges of job gen until none is left. */
+static void task_pool__work(task_pool *p, uint32_t gen, int worker)
 {
-    int start, end;
-    while (task_pool__take(p, &start, &end)) {
-        ga2d_task_fn *task = p->task;
-        void *context = p->context;
-        pthread_mutex_unlock(&p->lock);
+    ga2d_task_fn *task = (ga2d_task_fn *)TASK_POOL_LOAD(p->task);
+    void *context = TASK_POOL_LOAD(p->context);
+    int count = TASK_POOL_LOAD(p->count), range = TASK_POOL_LOAD(p->range), start, end;
+    while (task_pool__take(p, gen, count, range, &start, &end)) {
         task(start, end, worker, context);
-        pthread_mutex_lock(&p->lock);
-        if (--p->running == 0 && p->next >= p->count) pthread_cond_broadcast(&p->done);
+        TASK_POOL_ADD(p->done, end - start);
     }
+}
+
+/* Waits for a job other than `seen` (or quit): its generation. */
+static uint32_t task_pool__wait(task_pool *p, uint32_t seen)
+{
+    int i;
+    for (i = 0; i < TASK_POOL_SPINS + TASK_POOL_YIELDS; ++i) {
+        uint32_t gen = (uint32_t)(TASK_POOL_LOAD(p->state) >> 32);
+        if (gen != seen || TASK_POOL_LOAD(p->quit)) return gen;
+        if (i < TASK_POOL_SPINS) TASK_POOL_PAUSE();
+        else sched_yield();
+    }
+    pthread_mutex_lock(&p->lock);
+    __atomic_add_fetch(&p->sleepers, 1, __ATOMIC_SEQ_CST);
+    while ((uint32_t)(__atomic_load_n(&p->state, __ATOMIC_SEQ_CST) >> 32) == seen && !TASK_POOL_LOAD(p->quit))
+        pthread_cond_wait(&p->wake, &p->lock);
+    __atomic_sub_fetch(&p->sleepers, 1, __ATOMIC_SEQ_CST);
+    pthread_mutex_unlock(&p->lock);
+    return (uint32_t)(TASK_POOL_LOAD(p->state) >> 32);
 }
 
 static void *task_pool__main(void *arg)
 {
     task_pool_thread *t = (task_pool_thread *)arg;
     task_pool *p = t->pool;
-    unsigned long seen = 0;
-    pthread_mutex_lock(&p->lock);
+    uint32_t seen = 0;
     for (;;) {
-        while (!p->quit && p->generation == seen) pthread_cond_wait(&p->wake, &p->lock);
-        if (p->quit) break;
-        seen = p->generation;
-        task_pool__work(p, t->index);
+        seen = task_pool__wait(p, seen);
+        if (TASK_POOL_LOAD(p->quit)) break;
+        task_pool__work(p, seen, t->index);
     }
-    pthread_mutex_unlock(&p->lock);
     return NULL;
 }
 
@@ -117,7 +158,6 @@ task_pool *task_pool_create(int worker_count)
     p->workers = worker_count < 1 ? 1 : worker_count;
     pthread_mutex_init(&p->lock, NULL);
     pthread_cond_init(&p->wake, NULL);
-    pthread_cond_init(&p->done, NULL);
     p->threads = (task_pool_thread *)calloc((size_t)p->workers, sizeof *p->threads);
     if (!p->threads) {
         task_pool_destroy(p);
@@ -140,11 +180,10 @@ void task_pool_destroy(task_pool *pool)
     int i;
     if (!pool) return;
     pthread_mutex_lock(&pool->lock);
-    pool->quit = 1;
+    TASK_POOL_STORE(pool->quit, 1);
     pthread_cond_broadcast(&pool->wake);
     pthread_mutex_unlock(&pool->lock);
     for (i = 1; i <= pool->started; ++i) pthread_join(pool->threads[i].thread, NULL);
-    pthread_cond_destroy(&pool->done);
     pthread_cond_destroy(&pool->wake);
     pthread_mutex_destroy(&pool->lock);
     free(pool->threads);
@@ -157,33 +196,38 @@ void *task_pool_enqueue(ga2d_task_fn *task, int item_count, int min_range, void 
 {
     task_pool *p = (task_pool *)user_context;
     int range = item_count / (p->workers * TASK_POOL_RANGES_PER_WORKER);
+    uint32_t gen;
     if (range < min_range) range = min_range;
     if (range < 1) range = 1;
     if (p->workers == 1 || item_count <= range) { /* one range: run it here */
         task(0, item_count, 0, task_context);
         return NULL;
     }
-    pthread_mutex_lock(&p->lock);
-    p->task = task;
-    p->context = task_context;
-    p->count = item_count;
-    p->range = range;
-    p->next = 0;
-    p->running = 0;
-    ++p->generation;
-    pthread_cond_broadcast(&p->wake);
-    pthread_mutex_unlock(&p->lock);
+    /* the last job is finished (one at a time): no worker holds a range */
+    gen = (uint32_t)(TASK_POOL_LOAD(p->state) >> 32) + 1;
+    TASK_POOL_STORE(p->task, task);
+    TASK_POOL_STORE(p->context, task_context);
+    TASK_POOL_STORE(p->count, item_count);
+    TASK_POOL_STORE(p->range, range);
+    TASK_POOL_STORE(p->done, 0);
+    __atomic_store_n(&p->state, (uint64_t)gen << 32, __ATOMIC_SEQ_CST);
+    if (__atomic_load_n(&p->sleepers, __ATOMIC_SEQ_CST) > 0) {
+        pthread_mutex_lock(&p->lock);
+        pthread_cond_broadcast(&p->wake);
+        pthread_mutex_unlock(&p->lock);
+    }
     return p;
 }
 
 void task_pool_finish(void *user_task, void *user_context)
 {
     task_pool *p = (task_pool *)user_context;
+    uint32_t gen = (uint32_t)(TASK_POOL_LOAD(p->state) >> 32);
+    int count = TASK_POOL_LOAD(p->count), i = 0;
     (void)user_task;
-    pthread_mutex_lock(&p->lock);
-    task_pool__work(p, 0); /* the caller is worker 0 */
-    while (p->running > 0 || p->next < p->count) pthread_cond_wait(&p->done, &p->lock);
-    p->task = NULL;
-    pthread_mutex_unlock(&p->lock);
+    task_pool__work(p, gen, 0); /* the caller is worker 0 */
+    while (TASK_POOL_LOAD(p->done) < count)
+        if (++i < TASK_POOL_SPINS) TASK_POOL_PAUSE();
+        else sched_yield();
 }
 #endif
