@@ -754,12 +754,15 @@ typedef int ga2d_pre_solve_fn(ga2d_shape_id shape_a, ga2d_shape_id shape_b, cons
    [0, worker_count)), and returns a handle for finish_task, which waits
    for all of them; or it runs them itself and returns NULL (finish_task
    is then not called).  The step hands over ranges of the stages whose
-   items write only their own data, once a step each: the narrowphase and
-   the bodies' broadphase-box and start marks.  The solver's passes still
-   run on the calling thread (they are one chain until they are coloured),
-   so a second worker gains little yet.  Results are the same bits for any
-   worker count and any split.  The world is locked while a task runs: a
-   task system must not call it. */
+   items write only their own data: the narrowphase, the bodies' marks,
+   kicks and drifts, preparing the contacts and filling the solver's lanes,
+   and each colour of every solver pass (constraints are coloured so that
+   no two of a colour move one body), so a step makes a few hundred short
+   jobs: a task system whose workers sleep between jobs loses to one that
+   spins a moment first (examples/task_pool.h).  The joints, ordering the
+   contacts and colouring them still run on the calling thread.  Results
+   are the same bits for any worker count and any split.  The world is
+   locked while a task runs: a task system must not call it. */
 typedef void ga2d_task_fn(int start_index, int end_index, int worker_index, void *task_context);
 typedef void *ga2d_enqueue_task_fn(ga2d_task_fn *task, int item_count, int min_range, void *task_context, void *user_context);
 typedef void ga2d_finish_task_fn(void *user_task, void *user_context);
@@ -4680,6 +4683,8 @@ typedef struct ga2d__shape {
 typedef struct ga2d__contact_constraint ga2d__contact_constraint;
 typedef struct ga2d__group ga2d__group;
 typedef struct ga2d__fill { int count, skip; } ga2d__fill;
+/* What a stage over the bodies counts (ga2d__run_counted). */
+typedef struct ga2d__counts { int speed_caps, rotation_updates, integrated_bodies, unfinite; } ga2d__counts;
 typedef struct ga2d__group_extra ga2d__group_extra;
 typedef struct ga2d__sbody ga2d__sbody;
 typedef struct ga2d__joint ga2d__joint;
@@ -4773,6 +4778,8 @@ typedef struct ga2d__step_context {
     int sbody_capacity;
     int *last_group;             /* by slot: the last overflow group that moves the body */
     int last_group_capacity;
+    int *lane_constraints;       /* by lane (group * GA2D__LANES + lane): its constraint */
+    int lane_constraint_capacity;
     uint32_t *colour_masks;      /* by slot while lanes are assigned: the colours that move the body */
     int colour_mask_capacity;
     int colour_count;            /* colours in use this step */
@@ -4783,6 +4790,9 @@ typedef struct ga2d__step_context {
     int changed_capacity;        /* in 64-bit words */
     uint64_t *refits;            /* a bit per moving body whose tree leaf holds a new box */
     int refit_capacity;          /* in 64-bit words */
+    ga2d__counts *counts;        /* a body stage's counts per block (ga2d__run_counted) */
+    int counts_capacity, counts_split;
+    int unfinite;                /* bodies the last counted stage left with a velocity not finite */
     int *tally;                  /* a count per block of a split stage's items (a range writes
                                     its first block's), summed after it */
     int tally_capacity;
@@ -8415,7 +8425,6 @@ static void ga2d__constraint_extras(ga2d_world *w, const ga2d__contact *ct, ga2d
     ga2d_real rra = sa->rolling_resistance, rrb = sb->rolling_resistance;
     cc->round_a = sa->radius;
     cc->round_b = sb->radius;
-    if (cc->round_a != 0 || cc->round_b != 0) ++w->counters.round_contacts;
     cc->hits = sa->hit_events || sb->hit_events;
     /* A's surface slides along t = (ny, -nx) at its speed, B's (whose
        outward normal is -n) along -t: B relative to A, s_a + s_b less */
@@ -8479,9 +8488,9 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
     }
 }
 
-/* The constraints listed from `begin` on, prepared; out of memory, none
-   is left. */
-static void ga2d__prepare_listed(ga2d__step_context *c, int begin)
+/* The constraints listed from `begin` on, prepared (on the workers, if
+   `split`); out of memory, none is left. */
+static void ga2d__prepare_listed(ga2d__step_context *c, int begin, int split)
 {
     ga2d_world *w = c->world;
     if (!ga2d__grow(&w->mem, (void **)&c->constraints, &c->constraint_capacity, c->constraint_count,
@@ -8490,7 +8499,8 @@ static void ga2d__prepare_listed(ga2d__step_context *c, int begin)
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
-    ga2d__prepare_constraints(c, begin, c->constraint_count);
+    if (split) ga2d__run_split(c, ga2d__prepare_constraints, c->constraint_count);
+    else ga2d__prepare_constraints(c, begin, c->constraint_count);
 }
 
 /* Book-keeping: a constraint for every touching contact with an awake
@@ -8504,12 +8514,13 @@ static void ga2d__prepare_listed(ga2d__step_context *c, int begin)
    prepared (ga2d__prepare_constraints) a block at a time, while the
    contacts and bodies just read are still in cache: a world too large for
    the cache read them twice over when they were prepared after the whole
-   list.  Out of memory, the step reports it and solves no contact. */
+   list.  With workers, they are prepared after the whole list, on the
+   workers.  Out of memory, the step reports it and solves no contact. */
 #define GA2D__PREPARE_BLOCK 32 /* constraints listed, then prepared */
 static void ga2d__order_constraints(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    int slot, link, prepared = 0;
+    int slot, link, prepared = 0, split = w->def.worker_count > 1 && w->def.enqueue_task;
     c->constraint_count = c->bouncy = 0;
     /* room for every contact at once (each has at most one constraint);
        the order is kept apart from the constraints, so that listing it
@@ -8527,13 +8538,13 @@ static void ga2d__order_constraints(ga2d__step_context *c)
             if (w->def.pre_solve && !ga2d__pre_solve(w, ct)) continue;
             c->order[c->constraint_count++] = link >> 1;
             c->bouncy += ct->restitution != 0;
-            if (c->constraint_count - prepared < GA2D__PREPARE_BLOCK) continue;
-            ga2d__prepare_listed(c, prepared);
+            if (split || c->constraint_count - prepared < GA2D__PREPARE_BLOCK) continue;
+            ga2d__prepare_listed(c, prepared, 0);
             if (c->constraint_count == 0) return;
             prepared = c->constraint_count;
         }
     }
-    ga2d__prepare_listed(c, prepared);
+    ga2d__prepare_listed(c, prepared, split);
 }
 
 /* Stage, over the moving bodies: where each was when the step began (the
@@ -9241,7 +9252,7 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
 }
 
 /* Puts constraint ci into lane g->count of group g (its data is written
-   by ga2d__fill_lanes). */
+   by ga2d__fill_groups). */
 static void ga2d__lane_put(ga2d__step_context *c, ga2d__group *g, int ci)
 {
     ga2d__contact_constraint *cc = &c->constraints[ci];
@@ -9249,12 +9260,13 @@ static void ga2d__lane_put(ga2d__step_context *c, ga2d__group *g, int ci)
     g->a[l] = cc->a;
     g->b[l] = cc->b;
     g->contact[l] = cc->contact;
+    c->lane_constraints[(g - c->groups) * GA2D__LANES + l] = ci;
     GA2D__LANE(g->move_a, l) = -(cc->inv_ma != 0 || cc->inv_ia != 0);
     GA2D__LANE(g->move_b, l) = -(cc->inv_mb != 0 || cc->inv_ib != 0);
     cc->lane = (int)(g - c->groups) * GA2D__LANES + l;
 }
 
-/* A new group, no lane in use yet (ga2d__pad_groups fills what stays empty). */
+/* A new group, no lane in use yet (ga2d__fill_groups fills what stays empty). */
 static void ga2d__group_open(ga2d__group *g)
 {
     g->count = 0;
@@ -9290,6 +9302,21 @@ static int ga2d__reserve_sbodies(ga2d__step_context *c)
     memset(dummy, 0, sizeof *dummy);
     dummy->dqc = 1;
     return 1;
+}
+
+/* A body the solver does not move (static or asleep) is not gathered per
+   pass: it is seen as it is, at rest where the step began.  (Lanes that
+   share such a body write it the same values.) */
+static void ga2d__still_body(ga2d__step_context *c, int slot)
+{
+    const ga2d__body *b = &c->world->bodies[slot];
+    ga2d__sbody *s = &c->sbodies[slot];
+    if (b->move_index >= 0) return;
+    s->vx = b->sim.v.x;
+    s->vy = b->sim.v.y;
+    s->w = b->sim.w;
+    s->pad = s->dpx = s->dpy = s->dqs = 0;
+    s->dqc = 1;
 }
 
 /* The lowest and the highest colour in `set` (a nonzero mask). */
@@ -9330,7 +9357,9 @@ static int ga2d__open_group(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     if (!ga2d__grow(&w->mem, (void **)&c->groups, &c->group_capacity, c->group_count + 1, sizeof *c->groups) ||
-        !ga2d__grow(&w->mem, (void **)&c->fill, &c->fill_capacity, c->group_count + 1, sizeof *c->fill)) {
+        !ga2d__grow(&w->mem, (void **)&c->fill, &c->fill_capacity, c->group_count + 1, sizeof *c->fill) ||
+        !ga2d__grow(&w->mem, (void **)&c->lane_constraints, &c->lane_constraint_capacity,
+                    (c->group_count + 1) * GA2D__LANES, sizeof *c->lane_constraints)) {
         c->group_count = c->colour_count = 0;
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return 0;
@@ -9431,6 +9460,12 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
             if (mb) last[cc->b] = gi;
         }
         extras |= cc->needs_extras;
+        w->counters.round_contacts += cc->round_a != 0 || cc->round_b != 0;
+        /* a side the solver does not move gets its solver body here, once
+           per lane that has it (a moving one's is gathered before each
+           run of passes) */
+        if (!ga2d__moves_a(cc)) ga2d__still_body(c, cc->a);
+        if (!ga2d__moves_b(cc)) ga2d__still_body(c, cc->b);
     }
     c->group_extras_on = extras;
     if (extras && !ga2d__grow(&w->mem, (void **)&c->group_extras, &c->group_extra_capacity, c->group_count,
@@ -9440,25 +9475,12 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
     }
 }
 
-/* A body the solver does not move (static or asleep) is not gathered per
-   pass: it is seen as it is, at rest where the step began.  (Lanes that
-   share such a body write it the same values.) */
-static void ga2d__still_body(ga2d__step_context *c, int slot)
-{
-    const ga2d__body *b = &c->world->bodies[slot];
-    ga2d__sbody *s = &c->sbodies[slot];
-    if (b->move_index >= 0) return;
-    s->vx = b->sim.v.x;
-    s->vy = b->sim.v.y;
-    s->w = b->sim.w;
-    s->pad = s->dpx = s->dpy = s->dqs = 0;
-    s->dqc = 1;
-}
-
-/* Stage, over the groups: each learns where its extras are, and the lanes
-   it was closed without take the dummy slot and all zeros.  Before
-   ga2d__fill_lanes, which writes a group's extras. */
-static void ga2d__pad_groups(ga2d__step_context *c, int begin, int end)
+/* Stage, over the groups: each learns where its extras are, its lanes
+   take their constraints' data (and what only round shapes, conveyors
+   and rolling resistance use, over the anchors just written: a polygon
+   world writes none of it), and the lanes it was closed without take the
+   dummy slot and all zeros, so their masses are zero. */
+static void ga2d__fill_groups(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     ga2d__contact_constraint none;
@@ -9473,29 +9495,11 @@ static void ga2d__pad_groups(ga2d__step_context *c, int begin, int end)
             GA2D__LANE(g->move_a, l) = GA2D__LANE(g->move_b, l) = 0;
             ga2d__lane_write(g, l, &none, ga2d_vec_make(0, 0), &none);
         }
-    }
-}
-
-/* Stage, over the constraints: each one's data into its lane (in the
-   constraints' order, so the groups are written nearly in turn).  A side
-   the solver does not move gets its solver body here (a moving one's is
-   gathered before each run of passes). */
-static void ga2d__fill_lanes(ga2d__step_context *c, int begin, int end)
-{
-    ga2d__contact_constraint none;
-    int i;
-    memset(&none, 0, sizeof none);
-    for (i = begin; i < end; ++i) {
-        const ga2d__contact_constraint *cc = &c->constraints[i];
-        ga2d__group *g = &c->groups[cc->lane / GA2D__LANES];
-        int l = cc->lane % GA2D__LANES;
-        ga2d__lane_write(g, l, cc, cc->d, &none);
-        /* what only round shapes, conveyors and rolling resistance use
-           (the anchors of a round side, over the ones just written): a
-           polygon world writes none of it */
-        if (g->extras || cc->needs_extras) ga2d__lane_extras(g, l, cc, &none);
-        if (cc->inv_ma == 0 && cc->inv_ia == 0) ga2d__still_body(c, cc->a);
-        if (cc->inv_mb == 0 && cc->inv_ib == 0) ga2d__still_body(c, cc->b);
+        for (l = 0; l < g->count; ++l) {
+            const ga2d__contact_constraint *cc = &c->constraints[c->lane_constraints[gi * GA2D__LANES + l]];
+            ga2d__lane_write(g, l, cc, cc->d, &none);
+            if (g->extras || cc->needs_extras) ga2d__lane_extras(g, l, cc, &none);
+        }
     }
 }
 
@@ -11349,8 +11353,10 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->sbodies, &c->sbody_capacity, sizeof *c->sbodies);
     ga2d__release(w, (void **)&c->last_group, &c->last_group_capacity, sizeof *c->last_group);
     ga2d__release(w, (void **)&c->colour_masks, &c->colour_mask_capacity, sizeof *c->colour_masks);
+    ga2d__release(w, (void **)&c->lane_constraints, &c->lane_constraint_capacity, sizeof *c->lane_constraints);
     ga2d__release(w, (void **)&c->changed, &c->changed_capacity, sizeof *c->changed);
     ga2d__release(w, (void **)&c->tally, &c->tally_capacity, sizeof *c->tally);
+    ga2d__release(w, (void **)&c->counts, &c->counts_capacity, sizeof *c->counts);
 }
 
 /* Everything the context holds, freed with its world. */
@@ -11365,9 +11371,11 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->sbodies, c->sbody_capacity);
     GA2D__FREE_ARRAY(a, c->last_group, c->last_group_capacity);
     GA2D__FREE_ARRAY(a, c->colour_masks, c->colour_mask_capacity);
+    GA2D__FREE_ARRAY(a, c->lane_constraints, c->lane_constraint_capacity);
     GA2D__FREE_ARRAY(a, c->changed, c->changed_capacity);
     GA2D__FREE_ARRAY(a, c->refits, c->refit_capacity);
     GA2D__FREE_ARRAY(a, c->tally, c->tally_capacity);
+    GA2D__FREE_ARRAY(a, c->counts, c->counts_capacity);
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
 }
 
@@ -11418,15 +11426,15 @@ static void ga2d__damp(ga2d__body_sim *b, ga2d_real h)
    the bodies move in steps of u (2-5e-7 m within 8 m of the origin),
    which the soft springs turned into a floor of 5e-5 m/s, a drift of
    0.5 mm in 10 s and kicks that never settled. */
-static void ga2d__drift(ga2d_world *w, ga2d__body_sim *b, ga2d_real h)
+static void ga2d__drift(const ga2d_world *w, ga2d__body_sim *b, ga2d_real h, ga2d__counts *n)
 {
     b->dp = ga2d_vec_add(b->dp, ga2d_vec_scale(b->v, h));
     b->center = ga2d_vec_add(b->center0, b->dp);
     if (b->w != 0) {
         b->q = ga2d__turn(b->q, b->w * h, w->def.rotation_update);
-        ++w->counters.rotation_updates;
+        ++n->rotation_updates;
     }
-    ++w->counters.integrated_bodies;
+    ++n->integrated_bodies;
 }
 
 /* ----------------------------------------------- velocities and positions */
@@ -11507,11 +11515,11 @@ static int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
 /* The velocity cap and the largest turn per substep, as Box2D: beyond
    them a body is tunnelling anyway; each capped body counts in
    speed_caps.  Returns 0 for a velocity that is not finite. */
-static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body_sim *b, ga2d_real h)
+static int ga2d__clamp_velocity(const ga2d_world *w, ga2d__body_sim *b, ga2d_real h, int *caps)
 {
     if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) return 0;
-    w->counters.speed_caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
-    w->counters.speed_caps += ga2d__cap_turn(&b->w, GA2D__MAX_TURN / h);
+    *caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
+    *caps += ga2d__cap_turn(&b->w, GA2D__MAX_TURN / h);
     return 1;
 }
 
@@ -11519,7 +11527,53 @@ static int ga2d__clamp_velocity(ga2d_world *w, ga2d__body_sim *b, ga2d_real h)
    not finite. */
 static void ga2d__cap_body(ga2d__step_context *c, ga2d__body *b, int slot)
 {
-    if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(c->world, &b->sim, c->h)) ga2d__contain(c->world, slot);
+    if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(c->world, &b->sim, c->h, &c->world->counters.speed_caps))
+        ga2d__contain(c->world, slot);
+}
+
+/* A stage over the moving bodies that counts (ga2d__counts) rather than
+   writing the world's counters, and leaves a body whose velocity is no
+   longer finite to be contained after it: one body's update reads no
+   other's, so containing it later changes nothing, and the stage can run
+   in ranges on the workers.  A range hands its counts here. */
+static void ga2d__counts_add(ga2d__step_context *c, const ga2d__counts *n)
+{
+    ga2d_world *w = c->world;
+    w->counters.speed_caps += n->speed_caps;
+    w->counters.rotation_updates += n->rotation_updates;
+    w->counters.integrated_bodies += n->integrated_bodies;
+    c->unfinite += n->unfinite;
+}
+static void ga2d__counts_put(ga2d__step_context *c, int begin, const ga2d__counts *n)
+{
+    if (c->counts_split) c->counts[begin / GA2D__SPLIT_BLOCK] = *n; /* a range's own slot (ranges start on blocks) */
+    else ga2d__counts_add(c, n);
+}
+
+/* Runs a counting stage over the n moving bodies, on the workers when it
+   is long enough (and memory allows), then contains the bodies it left
+   with a velocity not finite. */
+static void ga2d__run_counted(ga2d__step_context *c, ga2d__range_fn *fn, int n)
+{
+    ga2d_world *w = c->world;
+    int blocks = (n + GA2D__SPLIT_BLOCK - 1) / GA2D__SPLIT_BLOCK, k;
+    c->unfinite = 0;
+    if (n >= GA2D__SPLIT_MIN && w->def.worker_count > 1 && w->def.enqueue_task &&
+        ga2d__grow(&w->mem, (void **)&c->counts, &c->counts_capacity, blocks, sizeof *c->counts)) {
+        memset(c->counts, 0, (size_t)blocks * sizeof *c->counts);
+        c->counts_split = 1;
+        ga2d__run_blocks(c, fn, 0, n, GA2D__SPLIT_BLOCK);
+        c->counts_split = 0;
+        for (k = 0; k < blocks; ++k) ga2d__counts_add(c, &c->counts[k]);
+    } else {
+        ga2d__run(c, fn, n);
+    }
+    for (k = 0; k < n && c->unfinite > 0; ++k) {
+        ga2d__body *b = &w->bodies[w->moving[k]];
+        if (b->type != GA2D_BODY_DYNAMIC || (ga2d__finite_vec(b->sim.v) && ga2d__finite(b->sim.w))) continue;
+        ga2d__contain(w, w->moving[k]);
+        --c->unfinite;
+    }
 }
 
 /* Stage, over the moving bodies: caches the field's acceleration (Verlet). */
@@ -11633,6 +11687,7 @@ static void ga2d__kick(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
     ga2d_real h = c->h;
+    ga2d__counts n = {0, 0, 0, 0};
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
@@ -11643,8 +11698,9 @@ static void ga2d__kick(ga2d__step_context *c, int begin, int end)
         b->sim.v = ga2d_vec_add(b->sim.v, ga2d_vec_scale(a, h));
         b->sim.w += alpha * h;
         ga2d__damp(&b->sim, h);
-        ga2d__cap_body(c, b, w->moving[k]);
+        n.unfinite += !ga2d__clamp_velocity(w, &b->sim, h, &n.speed_caps); /* contained after the stage */
     }
+    ga2d__counts_put(c, begin, &n);
 }
 
 /* Stage, over the moving bodies: a Verlet half kick, capped. */
@@ -11705,7 +11761,7 @@ static void ga2d__integrate_velocities(ga2d__step_context *c)
         ga2d__run(c, ga2d__open_kick, n);
     } else {
         ga2d__eval_field(w, c->t);
-        ga2d__run(c, ga2d__kick, n);
+        ga2d__run_counted(c, ga2d__kick, n);
     }
 }
 
@@ -11750,7 +11806,7 @@ static void ga2d__rk4_positions(ga2d__step_context *c, int begin, int end)
    a cap by more than the kick's own rounding of it (a rigid pass may
    take the speed back before the next kick sees it: a distance joint of
    absurd length pushing out at the cap, uncounted, for ever). */
-static void ga2d__cap_motion(ga2d_world *w, ga2d__body_sim *b, ga2d_real max_speed, ga2d_real max_turn_rate)
+static void ga2d__cap_motion(ga2d__body_sim *b, ga2d_real max_speed, ga2d_real max_turn_rate, ga2d__counts *n)
 {
     const ga2d_real slack = 1 + 16 * GA2D__EPS; /* above the kick's capped length, rounded */
     ga2d_vec v = b->v;
@@ -11765,7 +11821,7 @@ static void ga2d__cap_motion(ga2d_world *w, ga2d__body_sim *b, ga2d_real max_spe
     if (s < 1) {
         b->v = ga2d_vec_scale(b->v, s);
         b->w *= s;
-        ++w->counters.speed_caps;
+        ++n->speed_caps;
     }
 }
 
@@ -11773,12 +11829,14 @@ static void ga2d__cap_motion(ga2d_world *w, ga2d__body_sim *b, ga2d_real max_spe
 static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
+    ga2d__counts n = {0, 0, 0, 0};
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        if (b->type == GA2D_BODY_DYNAMIC) ga2d__cap_motion(w, &b->sim, GA2D__MAX_SPEED * w->def.length_units_per_meter, GA2D__MAX_TURN / c->h);
-        ga2d__drift(w, &b->sim, c->h);
+        if (b->type == GA2D_BODY_DYNAMIC) ga2d__cap_motion(&b->sim, GA2D__MAX_SPEED * w->def.length_units_per_meter, GA2D__MAX_TURN / c->h, &n);
+        ga2d__drift(w, &b->sim, c->h, &n);
     }
+    ga2d__counts_put(c, begin, &n);
 }
 
 /* The position phase of the world's integrator, ending the substep. */
@@ -11790,7 +11848,7 @@ static void ga2d__integrate_positions(ga2d__step_context *c)
         ga2d__run(c, ga2d__rk4_positions, n);
         return;
     }
-    ga2d__run(c, ga2d__drift_bodies, n);
+    ga2d__run_counted(c, ga2d__drift_bodies, n);
     if (w->def.integrator != GA2D_INTEGRATOR_VERLET) return;
     if (w->def.force_callback) {
         ga2d__eval_field(w, c->t + (double)c->h);
@@ -11806,8 +11864,8 @@ typedef void ga2d__stage_fn(ga2d__step_context *c);
 typedef struct ga2d__stage { ga2d__stage_fn *run; int repeat; } ga2d__stage;
 #define GA2D__MAX_STAGES 10
 
-static void ga2d__stage_gather(ga2d__step_context *c) { ga2d__run(c, ga2d__gather, c->world->moving_count); }
-static void ga2d__stage_scatter(ga2d__step_context *c) { ga2d__run(c, ga2d__scatter, c->world->moving_count); }
+static void ga2d__stage_gather(ga2d__step_context *c) { ga2d__run_split(c, ga2d__gather, c->world->moving_count); }
+static void ga2d__stage_scatter(ga2d__step_context *c) { ga2d__run_split(c, ga2d__scatter, c->world->moving_count); }
 /* A solver pass: the step's joints first (one at a time, here), then the
    contacts' lane groups colour by colour, each colour on the workers when
    it is long enough, and the overflow's groups last, here. */
@@ -12197,8 +12255,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__run_split(c, ga2d__remember_start, w->moving_count);
     if (w->def.enable_restitution) ga2d__restitute(c);
     ga2d__assign_lanes(c);
-    ga2d__run(c, ga2d__pad_groups, c->group_count);
-    ga2d__run(c, ga2d__fill_lanes, c->group_count > 0 ? c->constraint_count : 0);
+    ga2d__run_split(c, ga2d__fill_groups, c->group_count);
     ga2d__order_joints(c);
     if (c->joint_active > 0 && !ga2d__reserve_sbodies(c)) c->joint_active = 0;
     ga2d__run(c, ga2d__prepare_joints, c->joint_active);
@@ -12211,7 +12268,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
             for (r = 0; r < plan[i].repeat; ++r) plan[i].run(c);
     }
     /* impulses kept for the next step, bodies finished, sleep */
-    ga2d__run(c, ga2d__store_impulses, c->group_count);
+    ga2d__run_split(c, ga2d__store_impulses, c->group_count);
     c->group_count = c->colour_count = 0;
     if (w->hit_shapes > 0) ga2d__hit_events(c);
     ga2d__run(c, ga2d__finish_bodies, w->moving_count);

@@ -311,8 +311,49 @@ static void task_fields_checked(void)
     CHECK(big_run(&wd, &carried) == want);
 }
 
+/* ------------------------------------------------- the pool on its own */
+/* Every item of every job is done exactly once, by the time finish
+   returns: jobs of 2 to 38 items back to back, so a worker late for one
+   job meets the next one being posted (the pool once let such a worker
+   claim the next job's items with the last one's count, doing some
+   twice). */
+#define POOL_JOBS 20000
+#define POOL_MAX_ITEMS 38
+typedef struct pool_job { int items[POOL_MAX_ITEMS]; } pool_job;
+
+static void pool_count(int start, int end, int worker, void *context)
+{
+    pool_job *j = (pool_job *)context;
+    int i;
+    (void)worker;
+    for (i = start; i < end; ++i) ++j->items[i];
+}
+
+static void pool_every_item_once(void)
+{
+    int workers;
+    for (workers = 2; workers <= 4; ++workers) {
+        task_pool *p = task_pool_create(workers);
+        pool_job job;
+        int k, i, bad = 0;
+        CHECK(p != NULL);
+        if (!p) continue;
+        for (k = 0; k < POOL_JOBS; ++k) {
+            int n = 2 + k % (POOL_MAX_ITEMS - 1);
+            void *handle;
+            memset(&job, 0, sizeof job);
+            handle = task_pool_enqueue(pool_count, n, 1, &job, p);
+            if (handle) task_pool_finish(handle, p);
+            for (i = 0; i < n; ++i) bad += job.items[i] != 1;
+        }
+        if (bad) test_fail(__FILE__, __LINE__, "%d workers: %d items not done exactly once", workers, bad);
+        task_pool_destroy(p);
+    }
+}
+
 void suite_threads(void)
 {
+    test_run("threads: the example pool does every item of every job once", pool_every_item_once);
     test_run("threads: the determinism scene's hash with 1-4 workers, backwards and inline", any_worker_count_same_bits);
     test_run("threads: a big mixed scene's bits and counters with every task system", big_scene_same_bits);
     test_run("threads: task fields checked; the world refuses its task system", task_fields_checked);
