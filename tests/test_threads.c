@@ -69,12 +69,17 @@ static void inline_finish(void *task, void *user)
 /* Enough of everything that every split stage is cut into many ranges: a
    pyramid of base 30 (465 boxes, about 1 400 contacts), 60 discs dropped
    on it, and a chain of 20 links on revolute joints swinging into it
-   from a post.  Hash: every body's state, as the determinism scene's. */
+   from a post; and, on a ground of their own, 320 stacks of two small
+   boxes, so that the solver's first colours are long enough to be handed
+   over (each a stack's ground contacts, then their middle ones: 320
+   constraints, 80 groups, past GA2D__COLOUR_MIN).  Hash: every body's
+   state, as the determinism scene's. */
 #define BIG_BASE 30
 #define BIG_DISCS 60
 #define BIG_LINKS 20
+#define BIG_STACKS 320
 #define BIG_STEPS 240
-#define BIG_MAX (1 + BIG_BASE * (BIG_BASE + 1) / 2 + BIG_DISCS + BIG_LINKS + 1)
+#define BIG_MAX (1 + BIG_BASE * (BIG_BASE + 1) / 2 + BIG_DISCS + BIG_LINKS + 1 + 1 + 2 * BIG_STACKS)
 
 static uint64_t big_hash(ga2d_world *w, const ga2d_body_id *ids, int n)
 {
@@ -139,6 +144,17 @@ static uint64_t big_run(const ga2d_world_def *wd, long *carried)
             j.local_anchor_b = ga2d_vec_make((ga2d_real)-0.5, 0);
             ok = ok && !ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &j));
             ++n;
+        }
+        /* the stacks' ground, right of the pyramid, and the stacks */
+        d.type = GA2D_BODY_STATIC;
+        d.polygon = ga2d_polygon_box(100, (ga2d_real)0.5);
+        d.position = ga2d_vec_make(150, (ga2d_real)-0.5);
+        ids[n++] = ga2d_body_create(w, &d);
+        d.type = GA2D_BODY_DYNAMIC;
+        d.polygon = ga2d_polygon_box((ga2d_real)0.2, (ga2d_real)0.2);
+        for (i = 0; i < 2 * BIG_STACKS; ++i) {
+            d.position = ga2d_vec_make((ga2d_real)(55 + 0.6 * (i / 2)), (ga2d_real)(0.2 + 0.4 * (i % 2)));
+            ids[n++] = ga2d_body_create(w, &d);
         }
         for (i = 0; ok && i < BIG_STEPS; ++i) {
             ok = ga2d_world_step(w, (ga2d_real)1 / 60) == GA2D_OK;
