@@ -4756,8 +4756,13 @@ typedef struct ga2d__step_context {
     ga2d__soft soft, stiff;      /* contacts between moving bodies, and against a fixed one */
     ga2d__soft joint_soft;       /* a rigid joint's position feedback */
     int joint_bias_in_relax;     /* the PGS kinds' velocity passes push joints together too */
-    int *joint_order;            /* the step's joints (pool slots), in creation order */
+    int *joint_order;            /* the step's joints (pool slots): in creation order, then by colour */
     int joint_order_capacity, joint_active;
+    int *joint_sorted;           /* scratch while joints are coloured: the order by colour */
+    int joint_sorted_capacity;
+    int *joint_colours;          /* scratch while joints are coloured: each one's, in creation order */
+    int joint_colour_capacity;
+    int joint_start[GA2D__COLOURS + 1]; /* the joint each colour begins at; [colour_count]: the overflow's */
     ga2d_result error;           /* what the step will report */
     int end_lost;                /* a sensor end event since the last step found no room: reported
                                     as OUT_OF_MEMORY after the step, which runs in full (its
@@ -4819,15 +4824,19 @@ static void ga2d__run(ga2d__step_context *c, ga2d__range_fn *fn, int n)
    of the step's bit sets) runs in ranges on the user's workers: the task
    system sees blocks of GA2D__SPLIT_BLOCK items, so no two ranges share a
    word.  Below GA2D__SPLIT_MIN items it is not worth a hand-off.  A
-   colour of the solver's lane groups goes in blocks of GA2D__GROUP_BLOCK
-   groups (each GA2D__LANES constraints), when it has GA2D__COLOUR_MIN
-   groups: a group's pass takes about 0.1 us, a hand-off a few (pyramid20,
-   210 boxes, stepped at 0.42 times one worker's speed on two when every
-   colour of two blocks was handed over). */
+   colour of the solver's goes in blocks of GA2D__GROUP_BLOCK lane groups
+   (each GA2D__LANES constraints) and of GA2D__JOINT_BLOCK joints, when it
+   has GA2D__COLOUR_MIN groups' worth: a group's pass takes about 0.1 us
+   and a hinge's about 20 ns (joint_grid: 6.5 ms a step for 12 passes
+   over 19 794 joints), so a block of either is a couple of us, and a
+   hand-off a few (pyramid20, 210 boxes, stepped at 0.42 times one
+   worker's speed on two when every colour of two blocks was handed
+   over). */
 #define GA2D__SPLIT_BLOCK 64
 #define GA2D__SPLIT_MIN 256
 #define GA2D__SPLIT_MIN_BLOCKS 2
 #define GA2D__GROUP_BLOCK 4
+#define GA2D__JOINT_BLOCK 16
 #define GA2D__COLOUR_MIN 64
 typedef struct ga2d__task {
     ga2d__step_context *c;
@@ -9355,19 +9364,24 @@ static int ga2d__pick_colour(uint32_t taken)
     return ~below ? ga2d__lowest_bit(~below) : ga2d__highest_bit(~taken);
 }
 
-/* Room for one more group, opened (0 when memory runs out: the step
-   reports it and no contact is solved). */
+/* Out of memory while colouring: the step reports it, and solves no
+   contact and no joint.  0. */
+static int ga2d__solve_nothing(ga2d__step_context *c)
+{
+    c->group_count = c->colour_count = c->joint_active = 0;
+    c->error = GA2D_ERR_OUT_OF_MEMORY;
+    return 0;
+}
+
+/* Room for one more group, opened (0 when memory runs out). */
 static int ga2d__open_group(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     if (!ga2d__grow(&w->mem, (void **)&c->groups, &c->group_capacity, c->group_count + 1, sizeof *c->groups) ||
         !ga2d__grow(&w->mem, (void **)&c->fill, &c->fill_capacity, c->group_count + 1, sizeof *c->fill) ||
         !ga2d__grow(&w->mem, (void **)&c->lane_constraints, &c->lane_constraint_capacity,
-                    (c->group_count + 1) * GA2D__LANES, sizeof *c->lane_constraints)) {
-        c->group_count = c->colour_count = 0;
-        c->error = GA2D_ERR_OUT_OF_MEMORY;
-        return 0;
-    }
+                    (c->group_count + 1) * GA2D__LANES, sizeof *c->lane_constraints))
+        return ga2d__solve_nothing(c);
     c->fill[c->group_count].count = c->fill[c->group_count].skip = 0;
     ga2d__group_open(&c->groups[c->group_count++]);
     return 1;
@@ -9376,6 +9390,63 @@ static int ga2d__open_group(ga2d__step_context *c)
 /* Whether constraint cc moves its A, its B. */
 static int ga2d__moves_a(const ga2d__contact_constraint *cc) { return cc->inv_ma != 0 || cc->inv_ia != 0; }
 static int ga2d__moves_b(const ga2d__contact_constraint *cc) { return cc->inv_mb != 0 || cc->inv_ib != 0; }
+
+/* A colour for a constraint that moves bodies a (if ma) and b (if mb),
+   taken in their masks; GA2D__OVERFLOW when they have all the colours
+   between them. */
+#define GA2D__OVERFLOW GA2D__COLOURS
+static int ga2d__take_colour(uint32_t *mask, int a, int ma, int b, int mb)
+{
+    uint32_t taken = (ma ? mask[a] : 0) | (mb ? mask[b] : 0);
+    int k;
+    if (taken == ~(uint32_t)0) return GA2D__OVERFLOW;
+    k = ga2d__pick_colour(taken);
+    if (ma) mask[a] |= (uint32_t)1 << k;
+    if (mb) mask[b] |= (uint32_t)1 << k;
+    return k;
+}
+
+/* The joints' colours, first, in creation order, so that a body's joints
+   come before its contacts in a pass as they did when all the joints
+   went first (their colours are found as the contacts' are,
+   ga2d__pick_colour); a side the joint does not move gets its solver
+   body here.  Counts each colour's joints in `count`. */
+static void ga2d__colour_joints(ga2d__step_context *c, int *count)
+{
+    ga2d_world *w = c->world;
+    int i;
+    for (i = 0; i < c->joint_active; ++i) {
+        const ga2d__joint *j = &w->joints[c->joint_order[i]];
+        int ma = j->ima != 0 || j->iia != 0, mb = j->imb != 0 || j->iib != 0;
+        int k = ga2d__take_colour(c->colour_masks, j->body[0], ma, j->body[1], mb);
+        c->joint_colours[i] = k;
+        if (!ma) ga2d__still_body(c, j->body[0]);
+        if (!mb) ga2d__still_body(c, j->body[1]);
+        if (k == GA2D__OVERFLOW) continue;
+        ++count[k];
+        if (k + 1 > c->colour_count) c->colour_count = k + 1;
+    }
+}
+
+/* The joints in colour order (each colour's in creation order), the
+   overflow's last, where the colours' counts `count` say. */
+static void ga2d__sort_joints(ga2d__step_context *c, const int *count)
+{
+    int next[GA2D__COLOURS + 1], k, i, *swap, capacity;
+    c->joint_start[0] = 0;
+    for (k = 0; k < c->colour_count; ++k) c->joint_start[k + 1] = c->joint_start[k] + count[k];
+    for (k = 0; k <= c->colour_count; ++k) next[k] = c->joint_start[k];
+    for (i = 0; i < c->joint_active; ++i) {
+        k = c->joint_colours[i] == GA2D__OVERFLOW ? c->colour_count : c->joint_colours[i];
+        c->joint_sorted[next[k]++] = c->joint_order[i];
+    }
+    swap = c->joint_order;
+    c->joint_order = c->joint_sorted;
+    c->joint_sorted = swap;
+    capacity = c->joint_order_capacity;
+    c->joint_order_capacity = c->joint_sorted_capacity;
+    c->joint_sorted_capacity = capacity;
+}
 
 /* Book-keeping: colours the constraints, in their canonical order, so
    that no two of one colour move the same body (a graph colouring,
@@ -9389,43 +9460,44 @@ static int ga2d__moves_b(const ga2d__contact_constraint *cc) { return cc->inv_mb
    the overflow's groups come last and run on the calling thread, each
    constraint in the first group with a free lane after the last one that
    moves either of its bodies, so they keep their canonical order.  The
-   solver bodies and the groups are sized here; out of memory, the step
-   reports it and no contact is solved. */
-#define GA2D__OVERFLOW GA2D__COLOURS
+   step's joints take colours in the same masks first
+   (ga2d__colour_joints), and a joint that overflows is solved after the
+   colours, before the contacts that do.  The solver bodies and the groups
+   are sized here; out of memory, the step reports it and solves no
+   contact and no joint. */
 static void ga2d__assign_lanes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     int used = w->body_used, i, k, extras = 0, overflow = 0, count[GA2D__COLOURS], next[GA2D__COLOURS];
-    uint32_t *mask;
+    int joints[GA2D__COLOURS];
     int *last;
     c->group_count = c->colour_count = 0;
-    c->colour_start[0] = 0;
-    if (c->constraint_count == 0) return;
-    if (!ga2d__reserve_sbodies(c)) return;
-    if (!ga2d__grow(&w->mem, (void **)&c->colour_masks, &c->colour_mask_capacity, used, sizeof *c->colour_masks)) {
-        c->error = GA2D_ERR_OUT_OF_MEMORY;
+    c->colour_start[0] = c->joint_start[0] = 0;
+    if (c->constraint_count == 0 && c->joint_active == 0) return;
+    if (!ga2d__reserve_sbodies(c) ||
+        !ga2d__grow(&w->mem, (void **)&c->colour_masks, &c->colour_mask_capacity, used, sizeof *c->colour_masks) ||
+        !ga2d__grow(&w->mem, (void **)&c->joint_colours, &c->joint_colour_capacity, c->joint_active, sizeof *c->joint_colours) ||
+        !ga2d__grow(&w->mem, (void **)&c->joint_sorted, &c->joint_sorted_capacity, c->joint_active, sizeof *c->joint_sorted)) {
+        (void)ga2d__solve_nothing(c);
         return;
     }
-    mask = c->colour_masks;
-    memset(mask, 0, (size_t)used * sizeof *mask);
+    memset(c->colour_masks, 0, (size_t)used * sizeof *c->colour_masks);
     memset(count, 0, sizeof count);
-    /* the colours (held in `lane` until the lanes are put) */
+    memset(joints, 0, sizeof joints);
+    ga2d__colour_joints(c, joints);
+    /* the contacts' colours (held in `lane` until the lanes are put) */
     for (i = 0; i < c->constraint_count; ++i) {
         ga2d__contact_constraint *cc = &c->constraints[i];
-        int ma = ga2d__moves_a(cc), mb = ga2d__moves_b(cc);
-        uint32_t taken = (ma ? mask[cc->a] : 0) | (mb ? mask[cc->b] : 0);
-        if (taken == ~(uint32_t)0) {
-            cc->lane = GA2D__OVERFLOW;
+        k = ga2d__take_colour(c->colour_masks, cc->a, ga2d__moves_a(cc), cc->b, ga2d__moves_b(cc));
+        cc->lane = k;
+        if (k == GA2D__OVERFLOW) {
             ++overflow;
             continue;
         }
-        k = ga2d__pick_colour(taken);
-        if (ma) mask[cc->a] |= (uint32_t)1 << k;
-        if (mb) mask[cc->b] |= (uint32_t)1 << k;
-        cc->lane = k;
         ++count[k];
         if (k + 1 > c->colour_count) c->colour_count = k + 1;
     }
+    ga2d__sort_joints(c, joints);
     /* each colour's groups, in colour order */
     for (k = 0; k < c->colour_count; ++k) {
         int groups = (count[k] + GA2D__LANES - 1) / GA2D__LANES;
@@ -9437,8 +9509,7 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
     last = NULL;
     if (overflow > 0) {
         if (!ga2d__grow(&w->mem, (void **)&c->last_group, &c->last_group_capacity, used, sizeof *c->last_group)) {
-            c->group_count = c->colour_count = 0;
-            c->error = GA2D_ERR_OUT_OF_MEMORY;
+            (void)ga2d__solve_nothing(c);
             return;
         }
         last = c->last_group;
@@ -9473,10 +9544,8 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
     }
     c->group_extras_on = extras;
     if (extras && !ga2d__grow(&w->mem, (void **)&c->group_extras, &c->group_extra_capacity, c->group_count,
-                              sizeof *c->group_extras)) {
-        c->group_count = c->colour_count = 0;
-        c->error = GA2D_ERR_OUT_OF_MEMORY;
-    }
+                              sizeof *c->group_extras))
+        (void)ga2d__solve_nothing(c);
 }
 
 /* Stage, over the groups: each learns where its extras are, its lanes
@@ -10827,9 +10896,8 @@ static int ga2d__reads_angle(const ga2d__joint *j)
     }
 }
 
-/* Stage, over the step's joints: anchors, masses and the angle where the
-   step began; a side the solver does not move gets its solver body.  The
-   solver bodies must be there (ga2d__reserve_sbodies). */
+/* Stage, over the step's joints, before they are coloured: anchors,
+   masses and the angle where the step began. */
 static void ga2d__prepare_joints(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
@@ -10857,8 +10925,6 @@ static void ga2d__prepare_joints(ga2d__step_context *c, int begin, int end)
         j->linear_spring = ga2d__make_soft(ga2d__joint_hertz(c, j->linear_hertz), j->linear_damping_ratio, c->h);
         j->target = ga2d_rotate(a->sim.q, j->offset);
         if (!w->def.enable_warm_starting) ga2d__joint_forget(j);
-        ga2d__still_body(c, j->body[0]);
-        ga2d__still_body(c, j->body[1]);
     }
 }
 
@@ -10878,6 +10944,15 @@ static GA2D__HOT void ga2d__jstore(ga2d__sbody *s, ga2d__jbody b)
     s->vx = b.v.x;
     s->vy = b.v.y;
     s->w = b.w;
+}
+
+/* Both sides back, but only a side the joint moves: a body it does not
+   move (static, kinematic, asleep) may be read by another joint of the
+   same colour on another worker at the same time. */
+static GA2D__HOT void ga2d__jstore_moved(const ga2d__joint *j, ga2d__sbody *sa, ga2d__sbody *sb, ga2d__jbody A, ga2d__jbody B)
+{
+    if (j->ima != 0 || j->iia != 0) ga2d__jstore(sa, A);
+    if (j->imb != 0 || j->iib != 0) ga2d__jstore(sb, B);
 }
 
 /* An anchor r (from the centre, where the step began) turned as its body
@@ -10928,8 +11003,7 @@ static void ga2d__warm_start_joints(ga2d__step_context *c, int begin, int end)
         else if (j->type == GA2D_JOINT_DISTANCE) /* its impulses lie along its axis */
             ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_scale(ga2d__axis_of(ga2d__joint_span(sa, sb, j, ra, rb)), ga2d__joint_axial_impulse(j)), 0);
         else ga2d__japply(j, &A, &B, ra, rb, j->linear_impulse, ga2d__joint_axial_impulse(j));
-        ga2d__jstore(sa, A);
-        ga2d__jstore(sb, B);
+        ga2d__jstore_moved(j, sa, sb, A, B);
     }
 }
 
@@ -11031,8 +11105,7 @@ static void ga2d__solve_revolute(ga2d__step_context *c, ga2d__joint *j, int bias
     }
     ga2d__solve_point(c, j, &A, &B, ra, rb, bias ? ga2d__joint_span(sa, sb, j, ra, rb) : ga2d_vec_make(0, 0),
                       bias ? &c->joint_soft : NULL);
-    ga2d__jstore(sa, A);
-    ga2d__jstore(sb, B);
+    ga2d__jstore_moved(j, sa, sb, A, B);
 }
 
 /* An impulse along a distance joint's axis (its direction's mass m):
@@ -11084,8 +11157,7 @@ static void ga2d__solve_distance(ga2d__step_context *c, ga2d__joint *j, int bias
         j->motor_impulse = total < -cap ? -cap : (total > cap ? cap : total);
         ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_scale(axis, j->motor_impulse - old), 0);
     }
-    ga2d__jstore(sa, A);
-    ga2d__jstore(sb, B);
+    ga2d__jstore_moved(j, sa, sb, A, B);
 }
 
 /* A weld's pass: the angle, then the point, each rigid with the
@@ -11107,8 +11179,7 @@ static void ga2d__solve_weld(ga2d__step_context *c, ga2d__joint *j, int bias)
         B.w += j->iib * lambda;
     }
     ga2d__solve_point(c, j, &A, &B, ra, rb, linear ? ga2d__joint_span(sa, sb, j, ra, rb) : ga2d_vec_make(0, 0), linear);
-    ga2d__jstore(sa, A);
-    ga2d__jstore(sb, B);
+    ga2d__jstore_moved(j, sa, sb, A, B);
 }
 
 /* A motor joint's pass: the velocity that closes `correction` of the
@@ -11137,8 +11208,7 @@ static void ga2d__solve_motor(ga2d__step_context *c, ga2d__joint *j)
     if (ga2d_vec_length(P) > cap) P = ga2d_vec_scale(ga2d__axis_of(P), cap);
     j->linear_impulse = P;
     ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_sub(P, old), 0);
-    ga2d__jstore(sa, A);
-    ga2d__jstore(sb, B);
+    ga2d__jstore_moved(j, sa, sb, A, B);
 }
 
 /* A slider's frame now (prismatic, wheel): the anchors, B's anchor from
@@ -11245,8 +11315,7 @@ static void ga2d__solve_prismatic(ga2d__step_context *c, ga2d__joint *j, int bia
                         -ms * det * (k11 * r2 - k12 * r1) - is * j->linear_impulse.y);
     j->linear_impulse = ga2d_vec_add(j->linear_impulse, imp);
     ga2d__japply_levers(j, &A, &B, ga2d_vec_scale(f.perp, imp.x), imp.x * f.s1 + imp.y, imp.x * f.s2 + imp.y);
-    ga2d__jstore(sa, A);
-    ga2d__jstore(sb, B);
+    ga2d__jstore_moved(j, sa, sb, A, B);
 }
 
 /* A wheel joint's pass: the motor on the relative spin, the suspension
@@ -11275,8 +11344,7 @@ static void ga2d__solve_wheel(ga2d__step_context *c, ga2d__joint *j, int bias)
     lambda = -ms * m * (ga2d_dot(f.perp, ga2d_vec_sub(B.v, A.v)) + f.s2 * B.w - f.s1 * A.w + b) - is * j->impulse;
     j->impulse += lambda;
     ga2d__japply_levers(j, &A, &B, ga2d_vec_scale(f.perp, lambda), lambda * f.s1, lambda * f.s2);
-    ga2d__jstore(sa, A);
-    ga2d__jstore(sb, B);
+    ga2d__jstore_moved(j, sa, sb, A, B);
 }
 
 /* A slider's warm start: the axial impulses along the axis, the normal's
@@ -11358,6 +11426,8 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->last_group, &c->last_group_capacity, sizeof *c->last_group);
     ga2d__release(w, (void **)&c->colour_masks, &c->colour_mask_capacity, sizeof *c->colour_masks);
     ga2d__release(w, (void **)&c->lane_constraints, &c->lane_constraint_capacity, sizeof *c->lane_constraints);
+    ga2d__release(w, (void **)&c->joint_sorted, &c->joint_sorted_capacity, sizeof *c->joint_sorted);
+    ga2d__release(w, (void **)&c->joint_colours, &c->joint_colour_capacity, sizeof *c->joint_colours);
     ga2d__release(w, (void **)&c->changed, &c->changed_capacity, sizeof *c->changed);
     ga2d__release(w, (void **)&c->tally, &c->tally_capacity, sizeof *c->tally);
     ga2d__release(w, (void **)&c->counts, &c->counts_capacity, sizeof *c->counts);
@@ -11381,6 +11451,8 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->tally, c->tally_capacity);
     GA2D__FREE_ARRAY(a, c->counts, c->counts_capacity);
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
+    GA2D__FREE_ARRAY(a, c->joint_sorted, c->joint_sorted_capacity);
+    GA2D__FREE_ARRAY(a, c->joint_colours, c->joint_colour_capacity);
 }
 
 /* Runs the force callback at time t on the bodies' current state.  The
@@ -11870,20 +11942,69 @@ typedef struct ga2d__stage { ga2d__stage_fn *run; int repeat; } ga2d__stage;
 
 static void ga2d__stage_gather(ga2d__step_context *c) { ga2d__run_split(c, ga2d__gather, c->world->moving_count); }
 static void ga2d__stage_scatter(ga2d__step_context *c) { ga2d__run_split(c, ga2d__scatter, c->world->moving_count); }
-/* A solver pass: the step's joints first (one at a time, here), then the
-   contacts' lane groups colour by colour, each colour on the workers when
-   it is long enough, and the overflow's groups last, here. */
+/* A colour of a solver pass handed to the workers: its joints in blocks
+   of GA2D__JOINT_BLOCK, then its groups in blocks of GA2D__GROUP_BLOCK,
+   one run of block indices over both. */
+typedef struct ga2d__colour_task {
+    ga2d__step_context *c;
+    ga2d__range_fn *joints, *groups;
+    int joint_begin, joint_end, joint_blocks, group_begin, group_end;
+} ga2d__colour_task;
+
+static int ga2d__min_int(int a, int b) { return a < b ? a : b; }
+
+static void ga2d__colour_entry(int start, int end, int worker, void *context)
+{
+    const ga2d__colour_task *t = (const ga2d__colour_task *)context;
+    int jb = t->joint_blocks, first, stop;
+    (void)worker;
+    if (start < jb) {
+        first = t->joint_begin + start * GA2D__JOINT_BLOCK;
+        stop = ga2d__min_int(t->joint_begin + ga2d__min_int(end, jb) * GA2D__JOINT_BLOCK, t->joint_end);
+        t->joints(t->c, first, stop);
+    }
+    if (end > jb) {
+        first = t->group_begin + (start > jb ? start - jb : 0) * GA2D__GROUP_BLOCK;
+        stop = ga2d__min_int(t->group_begin + (end - jb) * GA2D__GROUP_BLOCK, t->group_end);
+        t->groups(t->c, first, stop);
+    }
+}
+
+/* Colour k of a solver pass: its joints, then its groups (they move no
+   body in common, so the order is only the bits'), on the workers when
+   there are GA2D__COLOUR_MIN groups' worth, else here. */
+static void ga2d__run_colour(ga2d__step_context *c, ga2d__range_fn *joints, ga2d__range_fn *groups, int k)
+{
+    const ga2d_world *w = c->world;
+    ga2d__colour_task t;
+    void *handle;
+    int blocks;
+    t.c = c;
+    t.joints = joints;
+    t.groups = groups;
+    t.joint_begin = c->joint_start[k];
+    t.joint_end = c->joint_start[k + 1];
+    t.group_begin = c->colour_start[k];
+    t.group_end = c->colour_start[k + 1];
+    t.joint_blocks = (t.joint_end - t.joint_begin + GA2D__JOINT_BLOCK - 1) / GA2D__JOINT_BLOCK;
+    blocks = t.joint_blocks + (t.group_end - t.group_begin + GA2D__GROUP_BLOCK - 1) / GA2D__GROUP_BLOCK;
+    if (w->def.worker_count <= 1 || !w->def.enqueue_task || blocks < GA2D__COLOUR_MIN / GA2D__GROUP_BLOCK) {
+        if (t.joint_end > t.joint_begin) joints(c, t.joint_begin, t.joint_end);
+        if (t.group_end > t.group_begin) groups(c, t.group_begin, t.group_end);
+        return;
+    }
+    handle = w->def.enqueue_task(ga2d__colour_entry, blocks, 1, &t, w->def.user_task_context);
+    if (handle) w->def.finish_task(handle, w->def.user_task_context);
+}
+
+/* A solver pass: colour by colour, each colour's joints and then its
+   contacts' lane groups; then the overflow's joints and groups, here. */
 static void ga2d__run_colours(ga2d__step_context *c, ga2d__range_fn *joints, ga2d__range_fn *groups)
 {
-    int k;
-    ga2d__run(c, joints, c->joint_active);
-    if (c->group_count == 0) return;
-    for (k = 0; k < c->colour_count; ++k) {
-        int begin = c->colour_start[k], end = c->colour_start[k + 1];
-        if (end - begin < GA2D__COLOUR_MIN) groups(c, begin, end);
-        else ga2d__run_blocks(c, groups, begin, end, GA2D__GROUP_BLOCK);
-    }
-    if (c->colour_start[c->colour_count] < c->group_count) groups(c, c->colour_start[c->colour_count], c->group_count);
+    int k, n = c->colour_count;
+    for (k = 0; k < n; ++k) ga2d__run_colour(c, joints, groups, k);
+    if (c->joint_start[n] < c->joint_active) joints(c, c->joint_start[n], c->joint_active);
+    if (c->colour_start[n] < c->group_count) groups(c, c->colour_start[n], c->group_count);
 }
 static void ga2d__joints_biased(ga2d__step_context *c, int begin, int end) { ga2d__solve_joints(c, begin, end, 1); }
 static void ga2d__joints_relaxed(ga2d__step_context *c, int begin, int end)
@@ -12261,12 +12382,11 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__order_constraints(c); /* and prepares them, a block at a time */
     ga2d__run_split(c, ga2d__remember_start, w->moving_count);
     if (w->def.enable_restitution) ga2d__restitute(c);
-    ga2d__assign_lanes(c);
-    ga2d__run_split(c, ga2d__fill_groups, c->group_count);
     ga2d__order_joints(c);
-    if (c->joint_active > 0 && !ga2d__reserve_sbodies(c)) c->joint_active = 0;
-    ga2d__run(c, ga2d__prepare_joints, c->joint_active);
+    ga2d__run_split(c, ga2d__prepare_joints, c->joint_active);
+    ga2d__assign_lanes(c); /* and colours the joints */
     w->counters.joints_solved = c->joint_active;
+    ga2d__run_split(c, ga2d__fill_groups, c->group_count);
     /* the substeps */
     stages = ga2d__plan_substep(w, plan);
     for (s = 0; s < w->def.substeps; ++s) {

@@ -382,6 +382,63 @@ static void reaction_hanging_mass(void)
     if (verbose()) printf("joints: hanging mass: |F - m g| / m g worst %.3g <= %.3g\n", worst, 8 * u);
 }
 
+/* A hub hangs from a static post by its centre and carries HUB_SPOKES
+   weights, each hinged to the hub's centre and hanging straight below it
+   (one group, so they never touch): the hub has more joints than the
+   solver has colours, and the last of them are solved after the colours
+   (the overflow).  At rest each weight's joint carries exactly its weight
+   and the post carries all of it.  Every substep the warm start gives
+   back the impulses that held the bodies last substep, so the passes see
+   only rounding.  The hub's velocity is the sum of HUB_SPOKES + 1
+   impulses on it (each rounded, each of at most the whole load L h), so
+   it is off by up to (HUB_SPOKES + 1) u L h / M (M the hub's mass).  A
+   weight's joint sees that, and corrects it with at most the weight's
+   mass: |F - m g| <= 8 u m g (its own rounding, as the hanging mass
+   above) + (HUB_SPOKES + 1) u m L / M.  The post's force balances the
+   hub: off by its own (HUB_SPOKES + 1 + 8) u L and the weights' errors.
+   Started at rest where it will hang, nothing swings. */
+#define HUB_SPOKES 40
+static void reaction_hub_past_the_colours(void)
+{
+    const double u = REAL_EPS / 2;
+    ga2d_world *w = make_world(0, -G, 0);
+    ga2d_body_id post = pivot_body(w, 0, 0), hub = box_body(w, 0, 0, 0, 0.5, 0.5, 1), weight[HUB_SPOKES];
+    ga2d_joint_id held = hinge(w, post, hub, 0, 0, 0, 0), spoke[HUB_SPOKES];
+    ga2d_body_def d = ga2d_default_body_def();
+    double load, hub_mass, worst = 0, post_bound;
+    ga2d_vec f;
+    int i;
+    d.type = GA2D_BODY_DYNAMIC;
+    d.polygon = ga2d_polygon_box((ga2d_real)0.1, (ga2d_real)0.1);
+    d.filter.group_index = -1;
+    hub_mass = (double)ga2d_body_mass_data(w, hub).mass;
+    load = hub_mass * G;
+    for (i = 0; i < HUB_SPOKES; ++i) {
+        d.position = v2(0, -1 - 0.1 * (i % 5)); /* five depths */
+        d.density = (ga2d_real)(1 + i % 3);    /* three masses */
+        weight[i] = ga2d_body_create(w, &d);
+        spoke[i] = hinge(w, hub, weight[i], 0, 0, 0, 1 + 0.1 * (i % 5));
+        load += (double)ga2d_body_mass_data(w, weight[i]).mass * G;
+    }
+    steps(w, 120);
+    post_bound = (HUB_SPOKES + 1 + 8) * u * load;
+    for (i = 0; i < HUB_SPOKES; ++i) {
+        double m = (double)ga2d_body_mass_data(w, weight[i]).mass, bound = 8 * u * m * G + (HUB_SPOKES + 1) * u * m * load / hub_mass;
+        f = ga2d_joint_reaction_force(w, spoke[i]);
+        CHECK_NEAR(f.y, m * G, bound);
+        CHECK_NEAR(f.x, 0, bound);
+        post_bound += bound;
+        if (fabs((double)f.y - m * G) / bound > worst) worst = fabs((double)f.y - m * G) / bound;
+    }
+    f = ga2d_joint_reaction_force(w, held);
+    CHECK_NEAR(f.y, load, post_bound);
+    CHECK_NEAR(f.x, 0, post_bound);
+    if (verbose())
+        printf("joints: hub of %d weights: worst weight |F - m g| %.3g of its bound, post |F - L| %.3g of its bound\n",
+               HUB_SPOKES, worst, fabs((double)f.y - load) / post_bound);
+    ga2d_world_destroy(w);
+}
+
 /* The bar spins about its end (gravity off) at w: the joint holds it on
    its circle with the centripetal force, pointing at the pivot.  Per
    substep the velocity turns by w h, an impulse of 2 m v sin(w h/2) =
@@ -1328,6 +1385,7 @@ void suite_joints(void)
     test_run("joints: compound pendulum, 5 degrees, 1000 periods", pendulum_small_amplitude);
     test_run("joints: compound pendulum, 90 degrees", pendulum_large_amplitude);
     test_run("joints: reaction of a hanging mass", reaction_hanging_mass);
+    test_run("joints: reaction of a hub with more joints than colours", reaction_hub_past_the_colours);
     test_run("joints: reaction of a spinning bar", reaction_spinning_bar);
     test_run("joints: motor of max torque on a disc", motor_max_torque);
     test_run("joints: limit on a disc", limit_disc);

@@ -72,14 +72,55 @@ static void inline_finish(void *task, void *user)
    from a post; and, on a ground of their own, 320 stacks of two small
    boxes, so that the solver's first colours are long enough to be handed
    over (each a stack's ground contacts, then their middle ones: 320
-   constraints, 80 groups, past GA2D__COLOUR_MIN).  Hash: every body's
-   state, as the determinism scene's. */
+   constraints, 80 groups, past GA2D__COLOUR_MIN); and far off, a net of
+   28 x 28 discs on revolute joints to their left and upper neighbours,
+   hung from its top row (static), whose joints' colours are long enough
+   to be handed over too (1 485 joints, about 370 a colour: 24 blocks of
+   GA2D__JOINT_BLOCK).  Hash: every body's state, as the determinism
+   scene's. */
 #define BIG_BASE 30
 #define BIG_DISCS 60
 #define BIG_LINKS 20
 #define BIG_STACKS 320
+#define BIG_NET 28
 #define BIG_STEPS 240
-#define BIG_MAX (1 + BIG_BASE * (BIG_BASE + 1) / 2 + BIG_DISCS + BIG_LINKS + 1 + 1 + 2 * BIG_STACKS)
+#define BIG_MAX (1 + BIG_BASE * (BIG_BASE + 1) / 2 + BIG_DISCS + BIG_LINKS + 1 + 1 + 2 * BIG_STACKS + BIG_NET * BIG_NET)
+
+/* The net: BIG_NET x BIG_NET discs 0.5 apart, each on a revolute joint
+   to its left and its upper neighbour at the point between them, the top
+   row static (and not joined along).  Its ids go to ids + *n.  0 if a joint was refused. */
+static int big_net(ga2d_world *w, ga2d_body_id *ids, int *n)
+{
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_circle disc;
+    int row, k, first = *n, ok = 1;
+    disc.center = ga2d_vec_make(0, 0);
+    disc.radius = (ga2d_real)0.15;
+    for (row = 0; row < BIG_NET; ++row)
+        for (k = 0; k < BIG_NET; ++k) {
+            ga2d_body_id id;
+            ga2d_revolute_joint_def j = ga2d_default_revolute_joint_def();
+            d.type = row == 0 ? GA2D_BODY_STATIC : GA2D_BODY_DYNAMIC;
+            d.position = ga2d_vec_make((ga2d_real)(-200 + 0.5 * k), (ga2d_real)(60 - 0.5 * row));
+            id = ids[(*n)++] = ga2d_body_create(w, &d);
+            ga2d_shape_create_circle(w, id, &sd, &disc);
+            j.body_b = id;
+            if (k > 0 && row > 0) { /* two static bodies take no joint */
+                j.body_a = ids[first + row * BIG_NET + k - 1];
+                j.local_anchor_a = ga2d_vec_make((ga2d_real)0.25, 0);
+                j.local_anchor_b = ga2d_vec_make((ga2d_real)-0.25, 0);
+                ok = ok && !ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &j));
+            }
+            if (row > 0) {
+                j.body_a = ids[first + (row - 1) * BIG_NET + k];
+                j.local_anchor_a = ga2d_vec_make(0, (ga2d_real)-0.25);
+                j.local_anchor_b = ga2d_vec_make(0, (ga2d_real)0.25);
+                ok = ok && !ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &j));
+            }
+        }
+    return ok;
+}
 
 static uint64_t big_hash(ga2d_world *w, const ga2d_body_id *ids, int n)
 {
@@ -156,6 +197,7 @@ static uint64_t big_run(const ga2d_world_def *wd, long *carried)
             d.position = ga2d_vec_make((ga2d_real)(55 + 0.6 * (i / 2)), (ga2d_real)(0.2 + 0.4 * (i % 2)));
             ids[n++] = ga2d_body_create(w, &d);
         }
+        ok = ok && big_net(w, ids, &n);
         for (i = 0; ok && i < BIG_STEPS; ++i) {
             ok = ga2d_world_step(w, (ga2d_real)1 / 60) == GA2D_OK;
             *carried += ga2d_world_get_counters(w).manifolds_carried;
