@@ -4763,6 +4763,7 @@ typedef struct ga2d__step_context {
     int *joint_colours;          /* scratch while joints are coloured: each one's, in creation order */
     int joint_colour_capacity;
     int joint_start[GA2D__COLOURS + 1]; /* the joint each colour begins at; [colour_count]: the overflow's */
+    int masses_stale;            /* the solver bodies have moved since a pass found the lanes' masses */
     ga2d_result error;           /* what the step will report */
     int end_lost;                /* a sensor end event since the last step found no room: reported
                                     as OUT_OF_MEMORY after the step, which runs in full (its
@@ -9025,6 +9026,7 @@ enum { GA2D__BIAS_NONE, GA2D__BIAS_SOFT, GA2D__BIAS_BAUMGARTE };
    constants. */
 typedef struct ga2d__pass {
     int bias_kind, friction;
+    int fresh;                  /* the bodies moved since the masses were found: find them again */
     ga2d__w zero, one, winv_h, low, slop, nslop, baumgarte;
     ga2d__w soft_rate, soft_mass, soft_impulse;    /* between moving bodies */
     ga2d__w stiff_rate, stiff_mass, stiff_impulse; /* against one the solver does not move */
@@ -9063,8 +9065,10 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
            the shared point of a wide speculative gap between fast bodies
            had moved a metre sideways (0.8 m of lever arm on a 0.1 m
            disc), and the step went to NaN in two substeps; NGS's moves
-           did the same with deep overlaps of small bodies */
-        g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
+           did the same with deep overlaps of small bodies.  Found once
+           per position of the bodies (ps->fresh): a pass over the same
+           positions finds the same bits */
+        if (ps->fresh) g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
         vn = ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny);
         if (bias_kind == GA2D__BIAS_SOFT) {
             /* the spring in impulse: its bias's push, and the part of
@@ -9108,7 +9112,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
         own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(vn, bias)), ga2d__wmul(impulse_scale, g->nimp[k])));
     }
-    g->k12 = ga2d__wcoupling(g, r);
+    if (ps->fresh) g->k12 = ga2d__wcoupling(g, r);
     ga2d__wblock(g, inv_a, own, lambda);
     for (k = 0; k < 2; ++k) {
         g->nimp[k] = ga2d__wadd(g->nimp[k], lambda[k]);
@@ -9121,7 +9125,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         } else {
             ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty);
             if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
-            g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
+            if (ps->fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
             dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
             total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
         }
@@ -9154,6 +9158,7 @@ static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int
     int gi;
     ps.bias_kind = bias_kind;
     ps.friction = w->def.enable_friction;
+    ps.fresh = c->masses_stale;
     ps.zero = ga2d__wsplat(0);
     ps.one = ga2d__wsplat(1);
     ps.winv_h = ga2d__wsplat(inv_h);
@@ -9264,26 +9269,15 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     }
 }
 
-/* Puts constraint ci into lane g->count of group g (its data is written
-   by ga2d__fill_groups). */
-static void ga2d__lane_put(ga2d__step_context *c, ga2d__group *g, int ci)
+/* Puts constraint ci into the next free lane of group gi: only the
+   lane's constraint and the group's count (beside it, in `fill`) are
+   written here, on the calling thread; ga2d__fill_groups writes the
+   groups themselves (a kilobyte each) on the workers. */
+static void ga2d__lane_put(ga2d__step_context *c, int gi, int ci)
 {
-    ga2d__contact_constraint *cc = &c->constraints[ci];
-    int l = g->count++;
-    g->a[l] = cc->a;
-    g->b[l] = cc->b;
-    g->contact[l] = cc->contact;
-    c->lane_constraints[(g - c->groups) * GA2D__LANES + l] = ci;
-    GA2D__LANE(g->move_a, l) = -(cc->inv_ma != 0 || cc->inv_ia != 0);
-    GA2D__LANE(g->move_b, l) = -(cc->inv_mb != 0 || cc->inv_ib != 0);
-    cc->lane = (int)(g - c->groups) * GA2D__LANES + l;
-}
-
-/* A new group, no lane in use yet (ga2d__fill_groups fills what stays empty). */
-static void ga2d__group_open(ga2d__group *g)
-{
-    g->count = 0;
-    g->extras = g->round = g->conveyor = g->rolling = g->hits = 0;
+    int lane = gi * GA2D__LANES + c->fill[gi].count++;
+    c->lane_constraints[lane] = ci;
+    c->constraints[ci].lane = lane;
 }
 
 /* The first group from gi on with a free lane (or group_count): a full
@@ -9383,7 +9377,7 @@ static int ga2d__open_group(ga2d__step_context *c)
                     (c->group_count + 1) * GA2D__LANES, sizeof *c->lane_constraints))
         return ga2d__solve_nothing(c);
     c->fill[c->group_count].count = c->fill[c->group_count].skip = 0;
-    ga2d__group_open(&c->groups[c->group_count++]);
+    ++c->group_count;
     return 1;
 }
 
@@ -9520,17 +9514,16 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
         int gi = c->colour_start[c->colour_count];
         k = cc->lane;
         if (k != GA2D__OVERFLOW) {
-            ga2d__lane_put(c, &c->groups[next[k]], i);
-            if (c->groups[next[k]].count == GA2D__LANES) ++next[k];
+            ga2d__lane_put(c, next[k], i);
+            if (c->fill[next[k]].count == GA2D__LANES) ++next[k];
         } else {
             int ma = ga2d__moves_a(cc), mb = ga2d__moves_b(cc);
             if (ma && last[cc->a] >= gi) gi = last[cc->a] + 1;
             if (mb && last[cc->b] >= gi) gi = last[cc->b] + 1;
             gi = ga2d__group_free(c, gi);
             if (gi == c->group_count && !ga2d__open_group(c)) return;
-            ga2d__lane_put(c, &c->groups[gi], i);
-            c->fill[gi].count = c->groups[gi].count;
-            if (c->groups[gi].count == GA2D__LANES) c->fill[gi].skip = gi + 1;
+            ga2d__lane_put(c, gi, i);
+            if (c->fill[gi].count == GA2D__LANES) c->fill[gi].skip = gi + 1;
             if (ma) last[cc->a] = gi;
             if (mb) last[cc->b] = gi;
         }
@@ -9548,11 +9541,12 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
         (void)ga2d__solve_nothing(c);
 }
 
-/* Stage, over the groups: each learns where its extras are, its lanes
-   take their constraints' data (and what only round shapes, conveyors
-   and rolling resistance use, over the anchors just written: a polygon
-   world writes none of it), and the lanes it was closed without take the
-   dummy slot and all zeros, so their masses are zero. */
+/* Stage, over the groups: each learns its count and where its extras
+   are, its lanes take their constraints' bodies and data (and what only
+   round shapes, conveyors and rolling resistance use, over the anchors
+   just written: a polygon world writes none of it), and the lanes it was
+   closed without take the dummy slot and all zeros, so their masses are
+   zero. */
 static void ga2d__fill_groups(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
@@ -9561,6 +9555,8 @@ static void ga2d__fill_groups(ga2d__step_context *c, int begin, int end)
     memset(&none, 0, sizeof none);
     for (gi = begin; gi < end; ++gi) {
         ga2d__group *g = &c->groups[gi];
+        g->count = c->fill[gi].count;
+        g->extras = g->round = g->conveyor = g->rolling = g->hits = 0;
         g->x = c->group_extras_on ? &c->group_extras[gi] : NULL;
         for (l = g->count; l < GA2D__LANES; ++l) {
             g->a[l] = g->b[l] = w->body_used;
@@ -9570,6 +9566,11 @@ static void ga2d__fill_groups(ga2d__step_context *c, int begin, int end)
         }
         for (l = 0; l < g->count; ++l) {
             const ga2d__contact_constraint *cc = &c->constraints[c->lane_constraints[gi * GA2D__LANES + l]];
+            g->a[l] = cc->a;
+            g->b[l] = cc->b;
+            g->contact[l] = cc->contact;
+            GA2D__LANE(g->move_a, l) = -ga2d__moves_a(cc);
+            GA2D__LANE(g->move_b, l) = -ga2d__moves_b(cc);
             ga2d__lane_write(g, l, cc, cc->d, &none);
             if (g->extras || cc->needs_extras) ga2d__lane_extras(g, l, cc, &none);
         }
@@ -11530,6 +11531,7 @@ static void ga2d__drift(const ga2d_world *w, ga2d__body_sim *b, ga2d_real h, ga2
 static void ga2d__contain(ga2d_world *w, int slot)
 {
     ga2d__body *b = &w->bodies[slot];
+    w->step.masses_stale = 1; /* it is back where the step began */
     b->sim.center = b->sim.center0;
     b->sim.dp = ga2d_vec_make(0, 0);
     b->sim.q = b->sim.q0;
@@ -11818,6 +11820,7 @@ static void ga2d__integrate_velocities(ga2d__step_context *c)
         static const ga2d_real at[4] = {0, GA2D__R(0.5), GA2D__R(0.5), 1};
         static const ga2d_real weight[4] = {1, 2, 2, 1};
         GA2D_ASSERT(c->rk4_capacity >= n);
+        c->masses_stale = 1; /* its stages move the bodies and put them back */
         ga2d__run(c, ga2d__rk4_begin, n);
         for (stage = 0; stage < 4; ++stage) {
             c->rk4_at = at[stage];
@@ -11920,6 +11923,7 @@ static void ga2d__integrate_positions(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     int n = w->moving_count;
+    c->masses_stale = 1;
     if (w->def.integrator == GA2D_INTEGRATOR_RK4) {
         ga2d__run(c, ga2d__rk4_positions, n);
         return;
@@ -12029,6 +12033,7 @@ static void ga2d__track_peaks(ga2d__step_context *c, int begin, int end)
 static void ga2d__run_pass(ga2d__step_context *c, ga2d__range_fn *joints, ga2d__range_fn *groups)
 {
     ga2d__run_colours(c, joints, groups);
+    c->masses_stale = 0; /* every group's, at the bodies' positions now */
     if (c->world->hit_shapes > 0) ga2d__run(c, ga2d__track_peaks, c->group_count);
 }
 static void ga2d__stage_solve(ga2d__step_context *c) { ga2d__run_pass(c, ga2d__joints_biased, ga2d__solve_soft); }
@@ -12036,6 +12041,7 @@ static void ga2d__stage_relax(ga2d__step_context *c) { ga2d__run_pass(c, ga2d__j
 static void ga2d__stage_baumgarte(ga2d__step_context *c) { ga2d__run_pass(c, ga2d__joints_biased, ga2d__solve_baumgarte); }
 static void ga2d__stage_push_apart(ga2d__step_context *c)
 {
+    c->masses_stale = 1;
     ga2d__run(c, ga2d__refresh_turns, c->world->moving_count);
     ga2d__run(c, ga2d__push_apart, c->constraint_count);
 }
@@ -12387,6 +12393,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__assign_lanes(c); /* and colours the joints */
     w->counters.joints_solved = c->joint_active;
     ga2d__run_split(c, ga2d__fill_groups, c->group_count);
+    c->masses_stale = 1;
     /* the substeps */
     stages = ga2d__plan_substep(w, plan);
     for (s = 0; s < w->def.substeps; ++s) {
