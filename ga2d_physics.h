@@ -4764,6 +4764,8 @@ typedef struct ga2d__step_context {
     int joint_colour_capacity;
     int joint_start[GA2D__COLOURS + 1]; /* the joint each colour begins at; [colour_count]: the overflow's */
     int masses_stale;            /* the solver bodies have moved since a pass found the lanes' masses */
+    int *kicked;                 /* by slot, in restitution: the impulses applied when it last took one */
+    int kicked_capacity;
     ga2d_result error;           /* what the step will report */
     int end_lost;                /* a sensor end event since the last step found no room: reported
                                     as OUT_OF_MEMORY after the step, which runs in full (its
@@ -8175,6 +8177,7 @@ struct ga2d__contact_constraint {
     unsigned char needs_extras;  /* round, conveyor or rolling: its group needs extras */
     unsigned char incident_b;    /* sharp sides: B's corners meet A's face (not A's B's) */
     int lane;                    /* group * GA2D__LANES + lane in the lane solver */
+    int seen;                    /* restitution: the impulses applied when it last looked */
     ga2d_real round_a, round_b;  /* the shapes' radii: their round parts (ga2d__point_now) */
     ga2d_real tangent_speed;     /* the surfaces' sliding along (ny, -nx): friction's target */
     ga2d_real rolling;           /* the largest torque impulse per unit normal impulse: c r */
@@ -9701,7 +9704,12 @@ static void ga2d__push_apart(ga2d__step_context *c, int begin, int end)
    gap: a pair still apart by s hits at v_i = sqrt(v^2 + 2 a s) and,
    turned around where it is, leaves at sqrt(e^2 v_i^2 - 2 a s), what it
    would have at height s after a true bounce.  Restitution mixes as the
-   larger of the two. */
+   larger of the two.  A pass after the first passes over a contact
+   neither of whose bodies took an impulse since it last looked: all it
+   reads (their velocities, where they are, its own points) is as it was
+   when it found nothing to do then, so it would find nothing again; the
+   bits are those of looking, and a pile with one bounce in it is not
+   looked over 32 times. */
 /* Where body b's shapes are after time t, moving as they move now (v,
    w and the free acceleration a). */
 static ga2d_transform ga2d__pose_after(const ga2d__body *b, ga2d_vec a, ga2d_real t)
@@ -9751,7 +9759,12 @@ static void ga2d__restitute(ga2d__step_context *c)
     ga2d_world *w = c->world;
     ga2d_real threshold = w->def.restitution_threshold * w->def.length_units_per_meter;
     ga2d_real h = c->h, look = c->dt + h;
-    int i, k, pass, busy = c->bouncy > 0, euler = w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER;
+    int i, k, pass, busy = c->bouncy > 0, euler = w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER, applied = 0;
+    int *kicked = NULL; /* out of memory: every pass looks at every contact (the same bits) */
+    if (busy && ga2d__grow(&w->mem, (void **)&c->kicked, &c->kicked_capacity, w->body_used, sizeof *c->kicked)) {
+        kicked = c->kicked;
+        memset(kicked, 0, (size_t)w->body_used * sizeof *kicked);
+    }
     for (pass = 0; pass < GA2D__RESTITUTION_PASSES && busy; ++pass) { /* none bouncy: no pass */
         busy = 0;
         for (i = 0; i < c->constraint_count; ++i) {
@@ -9760,6 +9773,8 @@ static void ga2d__restitute(ga2d__step_context *c)
             ga2d_real closing, vn[2], want[2], lambda[2];
             int hit = 0, apart = 1;
             if (cc->restitution == 0) continue;
+            if (kicked && pass > 0 && kicked[cc->a] <= cc->seen && kicked[cc->b] <= cc->seen) continue;
+            cc->seen = applied;
             closing = -ga2d_dot(ga2d_vec_sub(ga2d__free_accel(w, b), ga2d__free_accel(w, a)), cc->normal);
             closing = closing > 0 ? closing : 0;
             for (k = 0; k < cc->count; ++k) {
@@ -9818,6 +9833,7 @@ static void ga2d__restitute(ga2d__step_context *c)
             for (k = 0; k < cc->count; ++k) {
                 ga2d__apply_impulse(cc, &a->sim, &b->sim, cc->p[k].ra, cc->p[k].rb, ga2d_vec_scale(cc->normal, lambda[k]));
             }
+            if (kicked) kicked[cc->a] = kicked[cc->b] = ++applied;
         }
     }
     /* passes of a restitution above 1 multiply a speed: one that overflowed
@@ -11429,6 +11445,7 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->lane_constraints, &c->lane_constraint_capacity, sizeof *c->lane_constraints);
     ga2d__release(w, (void **)&c->joint_sorted, &c->joint_sorted_capacity, sizeof *c->joint_sorted);
     ga2d__release(w, (void **)&c->joint_colours, &c->joint_colour_capacity, sizeof *c->joint_colours);
+    ga2d__release(w, (void **)&c->kicked, &c->kicked_capacity, sizeof *c->kicked);
     ga2d__release(w, (void **)&c->changed, &c->changed_capacity, sizeof *c->changed);
     ga2d__release(w, (void **)&c->tally, &c->tally_capacity, sizeof *c->tally);
     ga2d__release(w, (void **)&c->counts, &c->counts_capacity, sizeof *c->counts);
@@ -11454,6 +11471,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
     GA2D__FREE_ARRAY(a, c->joint_sorted, c->joint_sorted_capacity);
     GA2D__FREE_ARRAY(a, c->joint_colours, c->joint_colour_capacity);
+    GA2D__FREE_ARRAY(a, c->kicked, c->kicked_capacity);
 }
 
 /* Runs the force callback at time t on the bodies' current state.  The
