@@ -1901,6 +1901,18 @@ static int ga2d__grow(const ga2d_allocator *a, void **arr, int *cap, int need, s
     return 1;
 }
 
+/* Two arrays of one kind trade places, capacities with them (a list
+   rebuilt into the spare one becomes the list). */
+static void ga2d__swap_arrays(void **a, int *cap_a, void **b, int *cap_b)
+{
+    void *p = *a;
+    int cap = *cap_a;
+    *a = *b;
+    *cap_a = *cap_b;
+    *b = p;
+    *cap_b = cap;
+}
+
 
 
 /* ---------------------------------------------------------------- vectors */
@@ -8619,7 +8631,7 @@ static int ga2d__cmp_touch(const void *x, const void *y)
 static int ga2d__update_touches(ga2d_world *w)
 {
     int i, j = 0, k, n = 0, fresh = 0;
-    ga2d__touch *out, *swap;
+    ga2d__touch *out;
     if (!w->touches_known) {
         w->touches_known = ga2d__walk_touches(w);
         return w->touches_known;
@@ -8650,12 +8662,7 @@ static int ga2d__update_touches(ga2d_world *w)
         out[n++] = *t;
     }
     while (j < fresh) out[n++] = out[w->touch_count + j++];
-    swap = w->touches;
-    w->touches = w->touches_next;
-    w->touches_next = swap;
-    k = w->touch_capacity;
-    w->touch_capacity = w->touch_next_capacity;
-    w->touch_next_capacity = k;
+    ga2d__swap_arrays((void **)&w->touches, &w->touch_capacity, (void **)&w->touches_next, &w->touch_next_capacity);
     w->touch_count = n;
     w->began_count = 0;
     return 1;
@@ -9553,7 +9560,7 @@ static void ga2d__colour_joints(ga2d__step_context *c, int *count)
    overflow's last, where the colours' counts `count` say. */
 static void ga2d__sort_joints(ga2d__step_context *c, const int *count)
 {
-    int next[GA2D__COLOURS + 1], k, i, *swap, capacity;
+    int next[GA2D__COLOURS + 1], k, i;
     c->joint_start[0] = 0;
     for (k = 0; k < c->colour_count; ++k) c->joint_start[k + 1] = c->joint_start[k] + count[k];
     for (k = 0; k <= c->colour_count; ++k) next[k] = c->joint_start[k];
@@ -9561,12 +9568,7 @@ static void ga2d__sort_joints(ga2d__step_context *c, const int *count)
         k = c->joint_colours[i] == GA2D__OVERFLOW ? c->colour_count : c->joint_colours[i];
         c->joint_sorted[next[k]++] = c->joint_order[i];
     }
-    swap = c->joint_order;
-    c->joint_order = c->joint_sorted;
-    c->joint_sorted = swap;
-    capacity = c->joint_order_capacity;
-    c->joint_order_capacity = c->joint_sorted_capacity;
-    c->joint_sorted_capacity = capacity;
+    ga2d__swap_arrays((void **)&c->joint_order, &c->joint_order_capacity, (void **)&c->joint_sorted, &c->joint_sorted_capacity);
 }
 
 /* Book-keeping: colours the constraints, in their canonical order, so
