@@ -9886,10 +9886,12 @@ static void ga2d__restitute(ga2d__step_context *c)
     ga2d_real threshold = w->def.restitution_threshold * w->def.length_units_per_meter;
     ga2d_real h = c->h, look = c->dt + h;
     int i, k, pass, busy = c->bouncy > 0, euler = w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER, applied = 0;
-    int *kicked = NULL; /* out of memory: every pass looks at every contact (the same bits) */
+    int *kicked = NULL; /* out of memory: reported, and every pass looks at every contact (the same bits) */
     if (busy && ga2d__grow(&w->mem, (void **)&c->kicked, &c->kicked_capacity, w->body_used, sizeof *c->kicked)) {
         kicked = c->kicked;
         memset(kicked, 0, (size_t)w->body_used * sizeof *kicked);
+    } else if (busy) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
     }
     for (pass = 0; pass < GA2D__RESTITUTION_PASSES && busy; ++pass) { /* none bouncy: no pass */
         busy = 0;
