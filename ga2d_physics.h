@@ -4782,7 +4782,8 @@ typedef struct ga2d__step_context {
     int *joint_colours;          /* scratch while joints are coloured: each one's, in creation order */
     int joint_colour_capacity;
     int joint_start[GA2D__COLOURS + 1]; /* the joint each colour begins at; [colour_count]: the overflow's */
-    int masses_stale;            /* the solver bodies have moved since a pass found the lanes' masses */
+    int masses_stale;            /* the solver bodies have moved since the warm start or a pass found
+                                    the lanes' anchors and masses (ga2d__wfind) */
     int *kicked;                 /* by slot, in restitution: the impulses applied when it last took one */
     int kicked_capacity;
     ga2d_result error;           /* what the step will report */
@@ -8359,6 +8360,9 @@ struct ga2d__group_extra {
     ga2d__w npeak[2];       /* hit events: the largest normal impulse any pass of the step left */
 };
 
+/* A point's anchors now, relative to each centre. */
+typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
+
 struct ga2d__group {
     int a[GA2D__LANES], b[GA2D__LANES];
     /* beside the body slots, which every pass reads first */
@@ -8380,6 +8384,9 @@ struct ga2d__group {
     ga2d__w nmass[2], tmass[2], nimp[2], timp[2];
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
     ga2d__w share;          /* where the point lies from A's anchor to B's (ga2d__share) */
+    /* found once per position of the bodies (ga2d__wfind), with the masses */
+    ga2d__wanchors at[2];   /* the points' anchors there */
+    ga2d__w sep[2];         /* their separations there */
 };
 
 /* A soft constraint seen by an implicit step (ga2d__make_soft). */
@@ -8790,8 +8797,6 @@ static GA2D__HOT ga2d_real ga2d__point_now(const ga2d__contact_constraint *c, co
 
 /* The lanes' bodies in registers. */
 typedef struct ga2d__wbody { ga2d__w vx, vy, w, pad, dpx, dpy, qc, qs; } ga2d__wbody;
-/* A point's anchors now, relative to each centre. */
-typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
 
 /* The lanes' bodies as whole rows: lane l's body, GA2D__LANES reals at a
    time, is row l of a square block; transposed in registers, row k holds
@@ -8860,20 +8865,25 @@ static GA2D__HOT void ga2d__wstore_block(ga2d__sbody *s, const int *slot, ga2d__
     GA2D__ROWS(GA2D__PUT);
 }
 
-/* The eight fields of the lanes' bodies, block by block of rows. */
-static GA2D__HOT void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__wbody *o)
+/* The eight fields of the lanes' bodies, block by block of rows; or
+   (`motion` 0) the first four only, the velocities: a pass that finds the
+   anchors kept (ga2d__wfind) reads no motion. */
+static GA2D__HOT void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__wbody *o, int motion)
 {
     ga2d__w f[8];
     ga2d__wload_block(s, slot, 0, f);
-    ga2d__wload_block(s, slot, GA2D__LANES, f);
 #if GA2D__LANES == 2
-    ga2d__wload_block(s, slot, 4, f);
-    ga2d__wload_block(s, slot, 6, f);
+    ga2d__wload_block(s, slot, 2, f);
 #endif
     o->vx = f[0];
     o->vy = f[1];
     o->w = f[2];
     o->pad = f[3];
+    if (!motion) return;
+    ga2d__wload_block(s, slot, 4, f);
+#if GA2D__LANES == 2
+    ga2d__wload_block(s, slot, 6, f);
+#endif
     o->dpx = f[4];
     o->dpy = f[5];
     o->qc = f[6];
@@ -8931,12 +8941,13 @@ static GA2D__HOT ga2d__w ga2d__wset(ga2d_real a, ga2d_real b)
 }
 #endif
 
-static GA2D__HOT void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__wbody *o)
+static GA2D__HOT void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__wbody *o, int motion)
 {
     o->vx = GA2D__GATHER(s, slot, vx);
     o->vy = GA2D__GATHER(s, slot, vy);
     o->w = GA2D__GATHER(s, slot, w);
     o->pad = GA2D__GATHER(s, slot, pad);
+    if (!motion) return;
     o->dpx = GA2D__GATHER(s, slot, dpx);
     o->dpy = GA2D__GATHER(s, slot, dpy);
     o->qc = GA2D__GATHER(s, slot, dqc);
@@ -9048,6 +9059,26 @@ static GA2D__HOT ga2d__w ga2d__wcoupling(const ga2d__group *g, const ga2d__wanch
     return ga2d__wmul(k, g->has2);
 }
 
+/* What depends on the bodies' positions alone, found once per position
+   (the first of the warm start and the passes to run there, while
+   c->masses_stale) and kept in the group: each point's anchors and
+   separation (ga2d__wpoint_now), its normal and tangent masses (the
+   tangent's only with friction) and their coupling.  The warm start and a
+   soft pass then run on the velocities alone, and the relax pass after the
+   drift finds them for the next substep's warm start and soft pass.  A
+   run over the same positions finds the same bits, so keeping them
+   changes none. */
+static GA2D__HOT void ga2d__wfind(ga2d__group *g, const ga2d__wbody *A, const ga2d__wbody *B, int friction, int extras)
+{
+    int k;
+    for (k = 0; k < 2; ++k) {
+        g->sep[k] = ga2d__wpoint_now(g, k, A, B, &g->at[k], extras);
+        g->nmass[k] = ga2d__weffective_mass(g, k, &g->at[k], g->nx, g->ny);
+        if (friction) g->tmass[k] = ga2d__weffective_mass(g, k, &g->at[k], g->ny, ga2d__wsub(ga2d__wsplat(0), g->nx));
+    }
+    g->k12 = ga2d__wcoupling(g, g->at);
+}
+
 /* The two normal points of each lane solved together, as the linear
    complementarity problem they are: accumulated impulses x = x0 + lambda
    >= 0, and where x_k = 0 the point separates (its speed, bias included,
@@ -9098,22 +9129,22 @@ static GA2D__HOT void ga2d__wblock(const ga2d__group *g, const ga2d__w *inv_a, c
 }
 
 /* One group's accumulated impulses applied again at its anchors now
-   (`extras` as in ga2d__solve_group). */
-static GA2D__HOT void ga2d__warm_group(ga2d__step_context *c, const ga2d__group *g, int extras)
+   (`extras` as in ga2d__solve_group; `find`, the anchors are found here
+   first: ga2d__wfind). */
+static GA2D__HOT void ga2d__warm_group(ga2d__step_context *c, ga2d__group *g, int extras, int find, int friction)
 {
     ga2d__wbody A, B, A0, B0;
     int k;
-    ga2d__wload(c->sbodies, g->a, &A);
-    ga2d__wload(c->sbodies, g->b, &B);
+    ga2d__wload(c->sbodies, g->a, &A, find);
+    ga2d__wload(c->sbodies, g->b, &B, find);
+    if (find) ga2d__wfind(g, &A, &B, friction, extras);
     A0 = A;
     B0 = B;
     for (k = 0; k < 2; ++k) {
-        ga2d__wanchors r;
         /* tangent (ny, -nx) */
         ga2d__w px = ga2d__wadd(ga2d__wmul(g->nx, g->nimp[k]), ga2d__wmul(g->ny, g->timp[k]));
         ga2d__w py = ga2d__wsub(ga2d__wmul(g->ny, g->nimp[k]), ga2d__wmul(g->nx, g->timp[k]));
-        ga2d__wpoint_now(g, k, &A, &B, &r, extras);
-        ga2d__wapply(g, &A, &B, &r, px, py);
+        ga2d__wapply(g, &A, &B, &g->at[k], px, py);
     }
     if (extras && g->rolling) { /* the rolling resistance's, as the points' */
         A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, g->x->rimp));
@@ -9127,11 +9158,12 @@ static GA2D__HOT void ga2d__warm_group(ga2d__step_context *c, const ga2d__group 
    at its anchors now. */
 static void ga2d__warm_start(ga2d__step_context *c, int begin, int end)
 {
-    int gi;
+    int gi, find = c->masses_stale, friction = c->world->def.enable_friction;
     for (gi = begin; gi < end; ++gi) {
-        const ga2d__group *g = &c->groups[gi];
-        if (g->extras) ga2d__warm_group(c, g, 1);
-        else ga2d__warm_group(c, g, 0);
+        ga2d__group *g = &c->groups[gi];
+        if (g->extras) ga2d__warm_group(c, g, 1, find, friction);
+        else if (find) ga2d__warm_group(c, g, 0, 1, friction);
+        else ga2d__warm_group(c, g, 0, 0, friction);
     }
 }
 
@@ -9167,18 +9199,21 @@ typedef struct ga2d__pass {
 } ga2d__pass;
 
 /* One group's pass; `extras` (a constant where it is inlined) leaves a
-   polygon world's groups without the round, conveyor and rolling code. */
-static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, int extras)
+   polygon world's groups without the round, conveyor and rolling code,
+   and `fresh` (ps->fresh, a constant too) finds the anchors and masses
+   first (ga2d__wfind). */
+static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, int extras, int fresh)
 {
     const ga2d__w zero = ps->zero, one = ps->one;
     const int bias_kind = ps->bias_kind;
+    const ga2d__wanchors *r = g->at;
     ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
     ga2d__wbody A, B, A0, B0;
-    ga2d__wanchors r[2];
     ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero, vn;
     int k;
-    ga2d__wload(c->sbodies, g->a, &A);
-    ga2d__wload(c->sbodies, g->b, &B);
+    ga2d__wload(c->sbodies, g->a, &A, fresh);
+    ga2d__wload(c->sbodies, g->b, &B, fresh);
+    if (fresh) ga2d__wfind(g, &A, &B, ps->friction, extras);
     A0 = A;
     B0 = B;
     if (bias_kind == GA2D__BIAS_SOFT) { /* the lanes that move both bodies are soft, the others stiff */
@@ -9188,10 +9223,10 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         soft_impulse = ga2d__wsel(both, ps->soft_impulse, ps->stiff_impulse);
     }
     for (k = 0; k < 2; ++k) {
-        ga2d__w s = ga2d__wpoint_now(g, k, &A, &B, &r[k], extras);
+        ga2d__w s = g->sep[k];
         ga2d__wmask apart = ga2d__wgt(s, zero);
         ga2d__w bias = zero, mass_scale = one, impulse_scale = zero;
-        /* the masses at the anchors the impulses act at now (they
+        /* the masses are at the anchors the impulses act at now (they
            follow the bodies: ga2d__point_now).  A mass m at a point whose
            true inverse mass is K changes its approach speed by a factor 1
            - m K a pass: the passes diverge, and push energy in, once m K >
@@ -9200,9 +9235,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
            had moved a metre sideways (0.8 m of lever arm on a 0.1 m
            disc), and the step went to NaN in two substeps; NGS's moves
            did the same with deep overlaps of small bodies.  Found once
-           per position of the bodies (ps->fresh): a pass over the same
-           positions finds the same bits */
-        if (ps->fresh) g->nmass[k] = ga2d__weffective_mass(g, k, &r[k], g->nx, g->ny);
+           per position of the bodies (ga2d__wfind) */
         vn = ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny);
         if (bias_kind == GA2D__BIAS_SOFT) {
             /* the spring in impulse: its bias's push, and the part of
@@ -9246,7 +9279,6 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
         own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(vn, bias)), ga2d__wmul(impulse_scale, g->nimp[k])));
     }
-    if (ps->fresh) g->k12 = ga2d__wcoupling(g, r);
     ga2d__wblock(g, inv_a, own, lambda);
     for (k = 0; k < 2; ++k) {
         g->nimp[k] = ga2d__wadd(g->nimp[k], lambda[k]);
@@ -9259,7 +9291,6 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         } else {
             ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty);
             if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
-            if (ps->fresh) g->tmass[k] = ga2d__weffective_mass(g, k, &r[k], tx, ty);
             dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
             total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
         }
@@ -9308,8 +9339,9 @@ static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int
     ps.stiff_impulse = ga2d__wsplat(c->stiff.impulse_scale);
     for (gi = begin; gi < end; ++gi) {
         ga2d__group *g = &c->groups[gi];
-        if (g->extras) ga2d__solve_group(c, g, &ps, 1);
-        else ga2d__solve_group(c, g, &ps, 0);
+        if (g->extras) ga2d__solve_group(c, g, &ps, 1, ps.fresh);
+        else if (ps.fresh) ga2d__solve_group(c, g, &ps, 0, 1);
+        else ga2d__solve_group(c, g, &ps, 0, 0);
     }
 }
 
@@ -9369,7 +9401,8 @@ static void ga2d__lane_extras(ga2d__group *g, int l, const ga2d__contact_constra
 
 /* Lane l of group g holds constraint c (d: B's centre less A's), every
    field a polygon world reads written: a point c lacks takes `none`'s (all
-   zero), and so does an empty lane (c = none), so their masses are zero.
+   zero), and so does an empty lane (c = none), so the masses ga2d__wfind
+   finds there are zero (it finds every mass before a pass reads one).
    The anchors are the points' own; a round side's are made core anchors
    by ga2d__lane_extras. */
 static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constraint *c, ga2d_vec d,
@@ -9385,7 +9418,6 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
     GA2D__LANE(g->iib, l) = c->inv_ib;
     GA2D__LANE(g->dx, l) = d.x;
     GA2D__LANE(g->dy, l) = d.y;
-    GA2D__LANE(g->k12, l) = c->count == 2 ? ga2d__coupling(c, c->p[0].ra, c->p[0].rb, c->p[1].ra, c->p[1].rb) : 0;
     GA2D__LANE(g->share, l) = ga2d__share(c);
     GA2D__LANE(g->has2, l) = c->count == 2 ? 1 : 0;
     for (k = 0; k < 2; ++k) {
@@ -9396,8 +9428,6 @@ static void ga2d__lane_write(ga2d__group *g, int l, const ga2d__contact_constrai
         GA2D__LANE(g->rby[k], l) = p->rb.y;
         GA2D__LANE(g->adjust[k], l) =
             p->separation - ((d.x + (p->rb.x - p->ra.x)) * c->normal.x + (d.y + (p->rb.y - p->ra.y)) * c->normal.y);
-        GA2D__LANE(g->nmass[k], l) = p->normal_mass;
-        GA2D__LANE(g->tmass[k], l) = p->tangent_mass;
         GA2D__LANE(g->nimp[k], l) = p->normal_impulse;
         GA2D__LANE(g->timp[k], l) = p->tangent_impulse;
     }
@@ -12161,7 +12191,11 @@ static void ga2d__joints_relaxed(ga2d__step_context *c, int begin, int end)
 {
     ga2d__solve_joints(c, begin, end, c->joint_bias_in_relax);
 }
-static void ga2d__stage_warm_start(ga2d__step_context *c) { ga2d__run_colours(c, ga2d__warm_start_joints, ga2d__warm_start); }
+static void ga2d__stage_warm_start(ga2d__step_context *c)
+{
+    ga2d__run_colours(c, ga2d__warm_start_joints, ga2d__warm_start);
+    c->masses_stale = 0; /* it found them (ga2d__wfind) */
+}
 /* Stage, over the groups, after each pass of a world with hit events:
    each point's largest normal impulse of the step so far (a body stopped
    in the first substep has none left by the last).  Kept out of the
