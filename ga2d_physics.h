@@ -8067,6 +8067,23 @@ static void ga2d__warm_points(const ga2d_manifold *last, ga2d_manifold *m, ga2d_
     }
 }
 
+/* Whether two bodies' shapes are all farther apart than `gap`: their
+   centres' distance less both extents (each bounds how far its shapes
+   reach from the centre) is beyond it by more than the rounding of that
+   sum, of the extents and of the narrowphase's own separations (a few
+   eps of the coordinates and extents involved; 64 as the polygon checks
+   allow).  Then the narrowphase, asked for points within `gap`, finds
+   none: skipping it changes no bit. */
+#define GA2D__BEYOND_ROUNDING 64
+static int ga2d__beyond(const ga2d__body *a, const ga2d__body *b, ga2d_real gap)
+{
+    ga2d_vec d = ga2d_vec_sub(b->sim.center, a->sim.center);
+    ga2d_real size = GA2D__FABS(a->sim.center.x) + GA2D__FABS(a->sim.center.y) + GA2D__FABS(b->sim.center.x) +
+                     GA2D__FABS(b->sim.center.y) + a->extent + b->extent;
+    ga2d_real apart = ga2d__length(d) - a->extent - b->extent;
+    return apart > gap + GA2D__R(GA2D__BEYOND_ROUNDING) * GA2D__EPS * size;
+}
+
 /* Stage, over the contact pool: each contact whose fat boxes still
    overlap gets a new manifold (or its last one carried along,
    ga2d__reuse_manifold), whose points take over the impulses of the old
@@ -8081,6 +8098,7 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
         const ga2d__body *a, *b;
         ga2d_transform xa, xb;
         ga2d_manifold m;
+        ga2d_real reach, margin;
         int touching;
         if (ct->next_free != -2) continue;
         a = &w->bodies[ct->a];
@@ -8092,17 +8110,21 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
             c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
             continue;
         }
+        /* keep points as far apart as the pair can close in one step:
+           speculative points only let bodies approach up to the gap */
+        reach = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
+                GA2D__FABS(b->sim.w) * b->extent;
+        margin = w->speculative + reach * c->dt;
+        /* most pairs of a tumbling pile are boxes that meet, not bodies:
+           one already apart that stays beyond the margin stays as it is */
+        if (!ct->touching && ga2d__beyond(a, b, margin)) continue;
         xa = ga2d__body_xf(a);
         xb = ga2d__body_xf(b);
         if (ga2d__reuse_manifold(w, ct, a, b, xa, xb)) {
             ++carried;
         } else {
-            /* keep points as far apart as the pair can close in one step:
-               speculative points only let bodies approach up to the gap */
-            ga2d_real reach = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
-                              GA2D__FABS(b->sim.w) * b->extent;
             ga2d__collide_geometries(&w->shapes[ct->shape_a].geom, xa, &w->shapes[ct->shape_b].geom, xb, w->slop,
-                                     w->speculative + reach * c->dt, &m);
+                                     margin, &m);
             ga2d__hold_manifold(&ct->held, xa, xb, &m);
             ga2d__warm_points(&ct->manifold, &m, GA2D__R(0.5) * w->slop);
             touching = m.count > 0;

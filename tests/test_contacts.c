@@ -319,6 +319,74 @@ static void teleport_and_new_static(void)
     ga2d_world_destroy(w);
 }
 
+/* A touching pair set apart, still within each other's fat boxes, ends at
+   the next step: the narrowphase skips pairs whose bodies are farther
+   apart than the step can close (ga2d__beyond), and only pairs that did
+   not touch.  Two bodies at rest side by side (zero gravity), a box, a
+   disc or a capsule each, 1 m across; one of them (either) is moved away
+   along the line by g, far less than the boxes' 0.1 m margins, so the
+   pair stays.  Within the speculative distance they still touch; past it
+   (g >= 1.25 of it, clear of the rounding) the touch ends, with its
+   event, whichever body moved. */
+static ga2d_body_id place_body(ga2d_world *w, int kind, double x)
+{
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_body_id id;
+    d.type = GA2D_BODY_DYNAMIC;
+    d.position = ga2d_vec_make((ga2d_real)x, 0);
+    if (kind == 0) d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+    id = ga2d_body_create(w, &d);
+    if (kind == 1) {
+        ga2d_circle c;
+        c.center = ga2d_vec_make(0, 0);
+        c.radius = (ga2d_real)0.5;
+        CHECK(!ga2d_shape_id_is_null(ga2d_shape_create_circle(w, id, &sd, &c)));
+    } else if (kind == 2) {
+        ga2d_capsule c;
+        c.center1 = ga2d_vec_make((ga2d_real)-0.25, 0);
+        c.center2 = ga2d_vec_make((ga2d_real)0.25, 0);
+        c.radius = (ga2d_real)0.25;
+        CHECK(!ga2d_shape_id_is_null(ga2d_shape_create_capsule(w, id, &sd, &c)));
+    }
+    return id;
+}
+
+static void parted_within_boxes_ends(void)
+{
+    static const double gaps[] = {0.005, 0.01, 0.015, 0.025, 0.04, 0.06, 0.09};
+    const double spec = GA2D_SPECULATIVE_DISTANCE;
+    int ka, kb, moved, gi;
+    for (ka = 0; ka < 3; ++ka)
+        for (kb = 0; kb < 3; ++kb)
+            for (moved = 0; moved < 2; ++moved)
+                for (gi = 0; gi < (int)(sizeof gaps / sizeof gaps[0]); ++gi) {
+                    ga2d_world_def wd = ga2d_default_world_def();
+                    ga2d_world *w;
+                    ga2d_body_id a, b;
+                    ga2d_contact_events e;
+                    double g = gaps[gi];
+                    wd.gravity = ga2d_vec_make(0, 0);
+                    w = ga2d_world_create(&wd);
+                    a = place_body(w, ka, 0);
+                    b = place_body(w, kb, 1);
+                    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+                    CHECK(ga2d_world_get_contacts(w, NULL, 0) == 1);
+                    if (moved) CHECK_RESULT(ga2d_body_set_transform(w, b, ga2d_vec_make((ga2d_real)(1 + g), 0), ga2d_rotor_identity()), GA2D_OK);
+                    else CHECK_RESULT(ga2d_body_set_transform(w, a, ga2d_vec_make((ga2d_real)-g, 0), ga2d_rotor_identity()), GA2D_OK);
+                    CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+                    e = ga2d_world_contact_events(w);
+                    CHECK(ga2d_world_get_pairs(w, NULL, 0) == 1);
+                    if (g < spec) {
+                        CHECK(ga2d_world_get_contacts(w, NULL, 0) == 1 && e.end_count == 0);
+                    } else if (g >= 1.25 * spec) {
+                        if (!(ga2d_world_get_contacts(w, NULL, 0) == 0 && e.end_count == 1))
+                            test_fail(__FILE__, __LINE__, "kinds %d/%d, %s moved by %g m: still touching", ka, kb, moved ? "B" : "A", g);
+                    }
+                    ga2d_world_destroy(w);
+                }
+}
+
 /* An allocator that fails its fail_from-th call only. */
 typedef struct failing { long calls, fail_from, live; } failing;
 static void *fail_alloc(size_t size, void *ctx)
@@ -574,6 +642,7 @@ void suite_contacts(void)
     test_run("contacts: no static-static or kinematic-only pairs", pair_rules);
     test_run("contacts: destroy and refilter end contacts", destroy_and_refilter);
     test_run("contacts: late static bodies and teleports", teleport_and_new_static);
+    test_run("contacts: a touching pair set apart within its boxes ends at once", parted_within_boxes_ends);
     test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory);
     test_run("contacts: debug draw", debug_draw);
     test_run("contacts: a resting pair's manifold is carried, and remade past half a slop", carried_manifolds);
