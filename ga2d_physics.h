@@ -4922,8 +4922,7 @@ struct ga2d_world {
     int touches_known;           /* 0: rebuilt by walking the bodies' lists at the next listing */
     int *began;                  /* contacts that began touching since the last listing */
     int began_count, began_capacity;
-    uint64_t *pair_keys;
-    int *pair_vals;
+    uint64_t *pair_keys;         /* the pair set (ga2d__pairs_has) */
     int pair_capacity;           /* holds contact_count keys: one per contact */
     ga2d_contact_data *begin_events, *end_events;
     int begin_count, end_count, begin_capacity, end_capacity;
@@ -5098,24 +5097,26 @@ static void ga2d__joint_free(ga2d_world *w, int k);
 static void ga2d__joints_forget(ga2d_world *w, int slot);
 
 /* ------------------------------------------------------------- pair set */
-/* Which body pairs have a contact: open addressing, linear probing, kept
-   at most half full; key 0 marks an empty slot (a real key has a < b). */
-static int ga2d__pairs_find(const ga2d_world *w, uint64_t key)
+/* Which shape pairs have a contact: a set of keys, open addressing,
+   linear probing, kept at most half full; key 0 marks an empty slot (a
+   real key has a < b).  Only whether a pair is there is ever asked (a
+   re-queried shape meets mostly the pairs it has), so the set holds the
+   keys alone: one cache line a look. */
+static int ga2d__pairs_has(const ga2d_world *w, uint64_t key)
 {
     uint32_t mask, i;
-    if (!w->pair_capacity) return -1;
+    if (!w->pair_capacity) return 0;
     mask = (uint32_t)w->pair_capacity - 1;
     for (i = ga2d__hash(key) & mask; w->pair_keys[i]; i = (i + 1) & mask)
-        if (w->pair_keys[i] == key) return w->pair_vals[i];
-    return -1;
+        if (w->pair_keys[i] == key) return 1;
+    return 0;
 }
 
-static void ga2d__pairs_put(uint64_t *keys, int *vals, int cap, uint64_t key, int val)
+static void ga2d__pairs_put(uint64_t *keys, int cap, uint64_t key)
 {
     uint32_t mask = (uint32_t)cap - 1, i;
     for (i = ga2d__hash(key) & mask; keys[i]; i = (i + 1) & mask) {}
     keys[i] = key;
-    vals[i] = val;
 }
 
 /* Room for one more pair; 0 when memory runs out (nothing changed). */
@@ -5123,26 +5124,19 @@ static int ga2d__pairs_reserve(ga2d_world *w)
 {
     int cap = w->pair_capacity ? w->pair_capacity : 64, i;
     uint64_t *keys;
-    int *vals;
     if (2 * (w->contact_count + 1) <= w->pair_capacity) return 1;
     while (2 * (w->contact_count + 1) > cap) cap *= 2;
     keys = (uint64_t *)ga2d__alloc(&w->mem, (size_t)cap * sizeof *keys);
-    vals = keys ? (int *)ga2d__alloc(&w->mem, (size_t)cap * sizeof *vals) : NULL;
-    if (!vals) {
-        ga2d__free(&w->mem, keys, (size_t)cap * sizeof *keys);
-        return 0;
-    }
+    if (!keys) return 0;
     memset(keys, 0, (size_t)cap * sizeof *keys);
     for (i = 0; i < w->pair_capacity; ++i)
-        if (w->pair_keys[i]) ga2d__pairs_put(keys, vals, cap, w->pair_keys[i], w->pair_vals[i]);
+        if (w->pair_keys[i]) ga2d__pairs_put(keys, cap, w->pair_keys[i]);
     {
         uint64_t *old_keys = w->pair_keys;
-        int *old_vals = w->pair_vals, old_cap = w->pair_capacity;
+        int old_cap = w->pair_capacity;
         w->pair_keys = keys;
-        w->pair_vals = vals;
         w->pair_capacity = cap;
         ga2d__free(&w->mem, old_keys, (size_t)old_cap * sizeof *keys);
-        ga2d__free(&w->mem, old_vals, (size_t)old_cap * sizeof *vals);
     }
     return 1;
 }
@@ -5157,7 +5151,6 @@ static void ga2d__pairs_remove(ga2d_world *w, uint64_t key)
         /* move j back to i unless its home lies cyclically in (i, j] */
         if (((j - home) & mask) >= ((j - i) & mask)) {
             w->pair_keys[i] = w->pair_keys[j];
-            w->pair_vals[i] = w->pair_vals[j];
             i = j;
         }
     }
@@ -5253,7 +5246,7 @@ static int ga2d__create_contact(ga2d_world *w, int sa, int sb)
                 pa->rolling_resistance != 0 || pb->rolling_resistance != 0 || pa->hit_events || pb->hit_events;
     ga2d__link_contact(w, ci, 0);
     ga2d__link_contact(w, ci, 1);
-    ga2d__pairs_put(w->pair_keys, w->pair_vals, w->pair_capacity, ga2d__pair_key(sa, sb), ci);
+    ga2d__pairs_put(w->pair_keys, w->pair_capacity, ga2d__pair_key(sa, sb));
     ++w->contact_count;
     return 1;
 }
@@ -5329,13 +5322,11 @@ static int ga2d__contacts_compact(ga2d_world *w)
     int n = w->contact_count, cap = 64, i, k = 0;
     ga2d__contact *pool = NULL, *old = w->contacts;
     uint64_t *keys, *old_keys = w->pair_keys;
-    int *vals, *old_vals = w->pair_vals, old_cap = w->contact_capacity, old_pairs = w->pair_capacity;
+    int old_cap = w->contact_capacity, old_pairs = w->pair_capacity;
     while (2 * n > cap) cap *= 2;
     keys = (uint64_t *)ga2d__alloc(&w->mem, (size_t)cap * sizeof *keys);
-    vals = keys ? (int *)ga2d__alloc(&w->mem, (size_t)cap * sizeof *vals) : NULL;
-    pool = vals && n > 0 ? (ga2d__contact *)ga2d__alloc(&w->mem, (size_t)n * sizeof *pool) : NULL;
-    if (!vals || (n > 0 && !pool)) {
-        ga2d__free(&w->mem, vals, (size_t)cap * sizeof *vals);
+    pool = keys && n > 0 ? (ga2d__contact *)ga2d__alloc(&w->mem, (size_t)n * sizeof *pool) : NULL;
+    if (!keys || (n > 0 && !pool)) {
         ga2d__free(&w->mem, keys, (size_t)cap * sizeof *keys);
         return 0;
     }
@@ -5343,13 +5334,12 @@ static int ga2d__contacts_compact(ga2d_world *w)
         if (old[i].next_free == -2) pool[k++] = old[i];
     if (n > 1) qsort(pool, (size_t)n, sizeof *pool, ga2d__cmp_contact_serial);
     memset(keys, 0, (size_t)cap * sizeof *keys);
-    for (i = 0; i < n; ++i) ga2d__pairs_put(keys, vals, cap, ga2d__pair_key(pool[i].shape_a, pool[i].shape_b), i);
+    for (i = 0; i < n; ++i) ga2d__pairs_put(keys, cap, ga2d__pair_key(pool[i].shape_a, pool[i].shape_b));
     w->contacts = pool;
     w->contact_capacity = n;
     w->contact_used = n;
     w->contact_free = -1;
     w->pair_keys = keys;
-    w->pair_vals = vals;
     w->pair_capacity = cap;
     for (i = 0; i < w->body_used; ++i) w->bodies[i].contact_head = w->bodies[i].contact_tail = -1;
     for (i = 0; i < n; ++i) {
@@ -5363,7 +5353,6 @@ static int ga2d__contacts_compact(ga2d_world *w)
     w->touch_count = w->began_count = w->touches_known = 0;
     ga2d__free(&w->mem, old, (size_t)old_cap * sizeof *old);
     ga2d__free(&w->mem, old_keys, (size_t)old_pairs * sizeof *keys);
-    ga2d__free(&w->mem, old_vals, (size_t)old_pairs * sizeof *vals);
     return 1;
 }
 
@@ -5596,7 +5585,7 @@ static void ga2d__pair_found(void *ctx, int other)
     if (other == q->self) return;
     /* both queued: the one queued first (smaller slot) finds the pair */
     if (w->shapes[other].in_move && other < q->self) return;
-    if (!ga2d__pair_wanted(w, a, b) || ga2d__pairs_find(w, ga2d__pair_key(a, b)) >= 0) return;
+    if (!ga2d__pair_wanted(w, a, b) || ga2d__pairs_has(w, ga2d__pair_key(a, b))) return;
     if (!ga2d__grow(&w->mem, (void **)&w->new_pairs, &w->new_pair_capacity, w->new_pair_count + 1,
                     sizeof *w->new_pairs)) {
         w->step.error = GA2D_ERR_OUT_OF_MEMORY;
@@ -5988,7 +5977,6 @@ static void ga2d__destroy_now(ga2d_world *w)
     GA2D__FREE_ARRAY(a, w->touches_next, w->touch_next_capacity);
     GA2D__FREE_ARRAY(a, w->began, w->began_capacity);
     GA2D__FREE_ARRAY(a, w->pair_keys, w->pair_capacity);
-    GA2D__FREE_ARRAY(a, w->pair_vals, w->pair_capacity);
     GA2D__FREE_ARRAY(a, w->begin_events, w->begin_capacity);
     GA2D__FREE_ARRAY(a, w->end_events, w->end_capacity);
     ga2d__step_free(a, &w->step);
@@ -14162,7 +14150,7 @@ static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__codec *k)
             c.friction < 0 || c.restitution < 0)
             return 0;
         if (!ga2d__pairs_reserve(t)) return -1;
-        if (ga2d__pairs_find(t, ga2d__pair_key(c.shape_a, c.shape_b)) >= 0) return 0; /* a pair twice */
+        if (ga2d__pairs_has(t, ga2d__pair_key(c.shape_a, c.shape_b))) return 0; /* a pair twice */
         if (!ga2d__create_contact(t, c.shape_a, c.shape_b)) return -1;
         ct = &t->contacts[t->contact_used - 1];
         ct->manifold = c.manifold;
