@@ -19,7 +19,9 @@
 #
 # COMMIT defaults to 21b9092 (before shapes), ROUNDS to 5, the scenes to
 # large_pyramid and many_pyramids.  AB_FULL=1 builds both drivers with every
-# scene (rain, mixed_pile, joint_grid too): for a COMMIT with joints.  Run from the repository's top.  Writes
+# scene (rain, mixed_pile, joint_grid too): for a COMMIT with joints; the
+# steps measure skips a scene whose bodies come and go (rain, mixed_pile)
+# or that has a chain (spinner), and says so.  Run from the repository's top.  Writes
 # $AB_DIR (default build/bench/ab): the two headers as built, the
 # binaries, ab.csv (runs: round, build, scene, ms/step, figure) and
 # steps.txt (steps: every round).

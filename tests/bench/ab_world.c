@@ -40,6 +40,17 @@ void AB_FN(free)(ab_world *a)
     free(a);
 }
 
+int AB_FN(holds)(const char *scene)
+{
+    bench_scene s;
+    int i, fixed;
+    if (bench_scene_make(scene, &s) != 0) return -1;
+    fixed = s.chain_count == 0;
+    for (i = 0; fixed && i < s.count; ++i) fixed = s.bodies[i].birth == 0 && s.bodies[i].death == 0;
+    bench_scene_free(&s);
+    return fixed;
+}
+
 ab_world *AB_FN(make)(const char *scene)
 {
     ab_world *a = (ab_world *)calloc(1, sizeof *a);

@@ -4,6 +4,10 @@
    copy of the header (-I its folder) with -DAB_SIDE=old or new and
    GA2D_STATIC, so the two builds' library functions stay private to their
    units and one program can step a world of each in turn.  Per build:
+     holds   whether make can build the named scene: 1 for a fixed list
+             of bodies, 0 for a scene whose bodies come and go or that
+             has a chain (rain, mixed_pile, spinner: ab_steps skips it,
+             saying so; the runs measure covers it), -1 for an unknown one;
      make    the named box scene of scenes.h (no bodies that come and go)
              in a world at the defaults with the scene's gravity and sleep
              switch; NULL for an unknown scene or a refused body;
@@ -20,6 +24,7 @@
 typedef struct ab_world ab_world;
 
 #define AB_WORLD_FUNCTIONS(P)                                                                                    \
+    int P##holds(const char *scene);                                                                             \
     ab_world *P##make(const char *scene);                                                                        \
     int P##steps(const ab_world *a);                                                                             \
     double P##step(ab_world *a);                                                                                 \
