@@ -2,12 +2,30 @@
 # Runs each test binary given, shows its failures and its summary, and ends
 # with the total over all of them: "N passed, N failed".  Exits non-zero if
 # any test failed or any binary crashed (a sanitizer report aborts it).
+# The binaries run TEST_JOBS at a time (default: the processor count; each
+# suite is one thread but for its thread-pool tests), their reports shown
+# in the order given.
+# sh run_all.sh --one <binary> <dir>: one binary, its output and status to
+# <dir>/<name>.out and <dir>/<name>.status (how the pool below runs each)
+if [ "$1" = --one ]; then
+    name=$(basename "$2")
+    ASAN_OPTIONS=abort_on_error=0:detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 "$2" > "$3/$name.out" 2>&1
+    echo $? > "$3/$name.status"
+    exit 0
+fi
+JOBS=${TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
 passed=0; failed=0; crashed=0
 start=$(date +%s)
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+# the sanitizer builds run slowest: they start first, so that no core
+# is left alone with one at the end
+{ printf '%s\n' "$@" | grep asan; printf '%s\n' "$@" | grep -v asan; } |
+    xargs -P "$JOBS" -I{} sh "$0" --one {} "$tmp"
 for bin in "$@"; do
     name=$(basename "$bin")
-    out=$(ASAN_OPTIONS=abort_on_error=0:detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 "$bin" 2>&1)
-    status=$?
+    out=$(cat "$tmp/$name.out" 2>/dev/null)
+    status=$(cat "$tmp/$name.status" 2>/dev/null || echo "not run")
     last=$(printf '%s\n' "$out" | tail -n 1)
     p=$(printf '%s\n' "$last" | sed -n 's/^\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed$/\1/p')
     f=$(printf '%s\n' "$last" | sed -n 's/^\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed$/\2/p')
@@ -25,6 +43,6 @@ for bin in "$@"; do
         failed=$((failed + 1))
     fi
 done
-echo "configurations: $#, crashed: $crashed, time: $(( $(date +%s) - start )) s"
+echo "configurations: $#, $JOBS at a time, crashed: $crashed, time: $(( $(date +%s) - start )) s"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

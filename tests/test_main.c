@@ -8,6 +8,9 @@ static int g_passed, g_failed, g_case_failures;
 static const char *g_case;
 static char **g_filters; /* argv: run only tests whose name holds one */
 static int g_filter_count;
+/* TEST_FIRST_FAILURE set (make mutate sets it): the tests after the first
+   that fails are skipped, since a planted bug is caught by one failure */
+static int g_first_failure_ends;
 
 static int selected(const char *name)
 {
@@ -34,6 +37,7 @@ void test_fail(const char *file, int line, const char *fmt, ...)
 void test_run(const char *name, void (*fn)(void))
 {
     if (!selected(name)) return;
+    if (g_first_failure_ends && g_failed) return;
     g_case = name;
     g_case_failures = 0;
     fn();
@@ -70,6 +74,7 @@ int main(int argc, char **argv)
 {
     g_filters = argv + 1;
     g_filter_count = argc - 1;
+    g_first_failure_ends = getenv("TEST_FIRST_FAILURE") != NULL;
     printf("ga2d_physics %d.%d.%d tests, ga2d_real = %s, %s, max polygon vertices %d\n",
            GA2D_VERSION_MAJOR, GA2D_VERSION_MINOR, GA2D_VERSION_PATCH, REAL_NAME,
 #ifdef __cplusplus

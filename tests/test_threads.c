@@ -6,8 +6,10 @@
    Task systems: examples/task_pool.h with 1 to 4 workers (threads); one
    that runs the ranges itself on this thread, last range first, at the
    least range the step allows (so a stage that wrote another range's
-   items, or depended on their order, would show); one that runs them all
-   at once and returns NULL. */
+   items, or depended on their order, would show); one that runs them only
+   when finished, last range first (so work the step does between the two
+   calls sees none of the job done); one that runs them all at once and
+   returns NULL. */
 #include "test.h"
 #include "determinism_scene.h"
 #define TASK_POOL_IMPLEMENTATION
@@ -63,6 +65,44 @@ static void inline_finish(void *task, void *user)
 {
     (void)task;
     *(int *)user += 1000000; /* never: enqueue returned NULL */
+}
+
+/* --------------------------------------------------- a deferred system */
+/* Runs nothing when a job is enqueued and all of it, last range first, in
+   finish (as a job system that works only when waited on): whatever the
+   step did on its own thread between the two calls would see none of the
+   job's work done, the opposite of the backwards system, which has done
+   all of it by then. */
+typedef struct deferred {
+    ga2d_task_fn *task;
+    void *context;
+    int count, range, pending, bad, jobs;
+} deferred;
+
+static void *deferred_enqueue(ga2d_task_fn *task, int count, int min_range, void *context, void *user)
+{
+    deferred *d = (deferred *)user;
+    d->bad += d->pending; /* one job at a time */
+    d->task = task;
+    d->context = context;
+    d->count = count;
+    d->range = min_range < 1 ? 1 : min_range;
+    d->pending = 1;
+    return d;
+}
+
+static void deferred_finish(void *task, void *user)
+{
+    deferred *d = (deferred *)user;
+    int start;
+    if (task != user || !d->pending) {
+        d->bad += 1000;
+        return;
+    }
+    d->pending = 0;
+    ++d->jobs;
+    for (start = (d->count - 1) / d->range * d->range; start >= 0; start -= d->range)
+        d->task(start, start + d->range < d->count ? start + d->range : d->count, 0, d->context);
 }
 
 /* --------------------------------------------------- a big mixed scene */
@@ -312,6 +352,19 @@ static void big_scene_same_bits(void)
     CHECK(b.bad == 0);
     CHECK(b.calls > BIG_STEPS); /* several stages a step were handed over */
     CHECK(b.ranges > 4 * b.calls); /* and cut: at least the narrowphase's ~22 blocks */
+    {
+        deferred d;
+        memset(&d, 0, sizeof d);
+        wd = ga2d_default_world_def();
+        wd.worker_count = 3;
+        wd.enqueue_task = deferred_enqueue;
+        wd.finish_task = deferred_finish;
+        wd.user_task_context = &d;
+        CHECK(big_run(&wd, &carried) == want);
+        CHECK(carried == want_carried);
+        CHECK(d.bad == 0 && d.pending == 0);
+        CHECK(d.jobs > BIG_STEPS); /* several stages a step were handed over */
+    }
 }
 
 /* The def's task fields: a negative or too large worker count, or one of

@@ -9,6 +9,7 @@
 # which `make test` replays (tests/test_fuzz_regress.c).
 #   make fuzz                      every harness, 60 s each
 #   make fuzz FUZZ_SECONDS=600     longer
+#   make fuzz FUZZ_JOBS=1          one harness at a time
 #   make fuzz FUZZ_ONLY=world      one harness (or a list)
 #   make fuzz FUZZ_EXTRA=-DFUZZ_VERBOSE   extra flags (after make fuzz-clean)
 #   make fuzz-build                build only
@@ -61,44 +62,16 @@ $(foreach k,$(FUZZ_KINDS),$(eval $(call FUZZ_RULE,$(k),$(k)_double,-DGA2D_DOUBLE
 
 fuzz-build: $(FUZZ_BINS)
 
-# Runs each harness in turn, then prints every summary; fails if any
-# harness found a crash or a violated invariant.
-fuzz: fuzz-build
-	@status=0; summary=""; \
-	for h in $(FUZZ_ONLY); do \
-	    kind=$${h%_double}; corpus=$(FUZZ_DIR)/corpus/$$h; log=$(FUZZ_DIR)/$$h.log; \
-	    if [ -n "$(FUZZ_FIXED)" ]; then \
-	        corpus=$(FUZZ_DIR)/fixed-corpus/$$h; rm -rf $$corpus; \
-	        case $$kind in \
-	        polygon) runs=$(FUZZ_RUNS_polygon);; world) runs=$(FUZZ_RUNS_world);; \
-	        reentry) runs=$(FUZZ_RUNS_reentry);; snapshot) runs=$(FUZZ_RUNS_snapshot);; \
-	        shapes) runs=$(FUZZ_RUNS_shapes);; *) runs=$(FUZZ_RUNS_shape_world);; esac; \
-	        limit="-runs=$$runs -seed=$(FUZZ_SEED) -reload=0"; what="$$runs inputs from seed $(FUZZ_SEED)"; \
-	        run="$(FUZZ_NORAND)"; \
-	    else \
-	        limit="-max_total_time=$(FUZZ_SECONDS)"; what="$(FUZZ_SECONDS) s"; run=""; \
-	    fi; \
-	    mkdir -p $$corpus tests/fuzz/seeds/$$kind tests/fuzz/regress/$$kind; \
-	    echo "== fuzz $$h: $$what"; \
-	    $$run ./$(FUZZ_DIR)/fuzz_$$h $$limit -timeout=20 -max_len=4096 -print_final_stats=1 \
-	        -artifact_prefix=$(FUZZ_DIR)/$$h- $$corpus tests/fuzz/seeds/$$kind tests/fuzz/regress/$$kind \
-	        > $$log 2>&1; rc=$$?; \
-	    done_line=$$(grep -E '^#[0-9]+[[:space:]]+DONE' $$log | tail -n 1); \
-	    execs=$$(grep -E '^stat::number_of_executed_units:' $$log | awk '{print $$2}'); \
-	    cov=$$(printf '%s\n' "$$done_line" | sed -n 's/.*cov: \([0-9]*\).*/\1/p'); \
-	    ft=$$(printf '%s\n' "$$done_line" | sed -n 's/.* ft: \([0-9]*\).*/\1/p'); \
-	    corp=$$(printf '%s\n' "$$done_line" | sed -n 's/.* corp: \([^ ]*\).*/\1/p'); \
-	    rate=$$(printf '%s\n' "$$done_line" | sed -n 's/.* exec\/s: \([0-9]*\).*/\1/p'); \
-	    if [ $$rc -ne 0 ] || [ -z "$$done_line" ]; then \
-	        tail -n 40 $$log; status=1; \
-	        line=$$(printf 'fuzz %-16s FAILED (exit %s): see %s and %s-crash-*' $$h $$rc $$log $(FUZZ_DIR)/$$h); \
-	    else \
-	        line=$$(printf 'fuzz %-16s %10s executions  cov: %-5s ft: %-6s corpus: %-12s %s exec/s' \
-	            $$h "$$execs" "$$cov" "$$ft" "$$corp" "$$rate"); \
-	    fi; \
-	    echo "$$line"; summary="$$summary$$line\n"; \
-	done; \
-	echo "== fuzz summary ($(if $(FUZZ_FIXED),fixed campaign from seed $(FUZZ_SEED),$(FUZZ_SECONDS) s per harness))"; printf "$$summary"; exit $$status
+# Runs the harnesses, FUZZ_JOBS at a time (default: the processor count),
+# then prints every summary; fails if any harness found a crash or a
+# violated invariant (tests/fuzz/run.sh).
+FUZZ_JOBS ?= $(NPROC)
+fuzz:
+	@$(MAKE) --no-print-directory -j$(NPROC) fuzz-build
+	@FUZZ_DIR=$(FUZZ_DIR) FUZZ_FIXED=$(FUZZ_FIXED) FUZZ_SEED=$(FUZZ_SEED) FUZZ_SECONDS=$(FUZZ_SECONDS) \
+	  FUZZ_JOBS=$(FUZZ_JOBS) FUZZ_NORAND="$(FUZZ_NORAND)" \
+	  $(foreach k,$(FUZZ_KINDS),FUZZ_RUNS_$(k)=$(FUZZ_RUNS_$(k))) \
+	  sh tests/fuzz/run.sh $(FUZZ_ONLY)
 
 fuzz-clean:
 	rm -rf $(FUZZ_DIR)
