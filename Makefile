@@ -144,7 +144,7 @@ test:
 	@./$(BUILD)/readme/queries && ./$(BUILD)/readme/queries-cxx && echo "README queries snippet: built and ran (C99, C++11)"
 	@echo "determinism: one hash per precision over $(words $(DET_BINS)) builds" && \
 	  for p in float double; do \
-	    for b in $(BUILD)/det/$$p-*; do ./$$b || { echo "  $$b: churn changed the scene"; exit 1; }; done | sort | uniq -c; \
+	    for b in $(BUILD)/det/$$p-*; do ./$$b || { echo "  $$b: failed (above)"; exit 1; }; done | sort | uniq -c; \
 	    n=$$(for b in $(BUILD)/det/$$p-*; do ./$$b; done | sort -u | wc -l); \
 	    test "$$n" = 1 || { echo "  determinism FAILED: $$p builds disagree"; exit 1; }; \
 	    got=$$(./$(BUILD)/det/$$p-gcc-O2 | cut -d' ' -f2); \

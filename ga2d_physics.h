@@ -876,6 +876,9 @@ typedef struct ga2d_world_counters {
                                visited (ga2d_world_cast_ray, overlap_*) */
     int query_shapes;       /* shapes it tested exactly (their boxes met
                                the query's) */
+    int hinges_in_lanes;    /* of joints_solved, the bare revolute joints (no
+                               spring, motor or limit) the last step solved
+                               several at a time in the solver's lanes */
 } ga2d_world_counters;
 
 GA2D_API ga2d_world_def ga2d_default_world_def(void);
@@ -4707,6 +4710,7 @@ typedef struct ga2d__counts { int speed_caps, rotation_updates, integrated_bodie
 typedef struct ga2d__group_extra ga2d__group_extra;
 typedef struct ga2d__sbody ga2d__sbody;
 typedef struct ga2d__joint ga2d__joint;
+typedef struct ga2d__jgroup ga2d__jgroup;
 typedef struct ga2d__rk4 ga2d__rk4;
 
 /* A soft constraint: a spring of `hertz` and damping ratio `zeta` seen by
@@ -4722,6 +4726,10 @@ struct ga2d__joint {
     int type;                    /* ga2d_joint_type; -1 for a free slot */
     int body[2];                 /* A's and B's slots */
     int enable_limit, enable_motor, enable_spring;
+    int lane;                    /* 1 + its lane among the step's hinge lanes (ga2d__jgroup)
+                                    from their filling to their impulses' store, else 0 */
+    uint64_t serial;             /* creation order: the solver's order (read with the
+                                    fields above as the step lists its joints) */
     /* impulses per substep, kept from step to step to warm start: the
        point's (or the motor joint's linear), the axial ones (spring,
        motor, limits: along the angle, or the distance joint's axis), and
@@ -4756,7 +4764,6 @@ struct ga2d__joint {
     uint32_t generation;
     int next_free;
     int next[2];                 /* the next link on body[side]'s list, or -1 */
-    uint64_t serial;             /* creation order: the solver's order */
     ga2d_vec local[2];           /* anchors in the bodies' frames, from their origins */
     int collide_connected;
     void *user_data;
@@ -4782,6 +4789,11 @@ typedef struct ga2d__step_context {
     int *joint_colours;          /* scratch while joints are coloured: each one's, in creation order */
     int joint_colour_capacity;
     int joint_start[GA2D__COLOURS + 1]; /* the joint each colour begins at; [colour_count]: the overflow's */
+    int joint_bare[GA2D__COLOURS + 1]; /* each colour's bare hinges, first in its joints */
+    ga2d__jgroup *jgroups;       /* bare hinges in lanes (ga2d__pack_hinges), live during the substeps */
+    int jgroup_count, jgroup_capacity;
+    int *joint_lane;             /* by place in joint_order while jgroups live: 1 + its lane, or 0 */
+    int joint_lane_capacity;
     int masses_stale;            /* the solver bodies have moved since the warm start or a pass found
                                     the lanes' anchors and masses (ga2d__wfind) */
     int *kicked;                 /* by slot, in restitution: the impulses applied when it last took one */
@@ -8281,6 +8293,8 @@ static GA2D__HOT ga2d__w ga2d__wdiv(ga2d__w a, ga2d__w b) { return a / b; }
 static GA2D__HOT ga2d__wmask ga2d__wgt(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a > b); }
 static GA2D__HOT ga2d__wmask ga2d__wge(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a >= b); }
 static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b) { return a & b; }
+static GA2D__HOT ga2d__w ga2d__wneg(ga2d__w a) { return -a; }
+static GA2D__HOT ga2d__wmask ga2d__wne(ga2d__w a, ga2d__w b) { return (ga2d__wmask)(a != b); }
 /* m ? a : b, lane by lane (m all ones or all zeros) */
 static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
 {
@@ -8322,6 +8336,19 @@ static GA2D__HOT ga2d__wmask ga2d__wand(ga2d__wmask a, ga2d__wmask b)
     int i;
     for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = a.lane[i] && b.lane[i];
     return a;
+}
+static GA2D__HOT ga2d__w ga2d__wneg(ga2d__w a)
+{
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) a.lane[i] = -a.lane[i];
+    return a;
+}
+static GA2D__HOT ga2d__wmask ga2d__wne(ga2d__w a, ga2d__w b)
+{
+    ga2d__wmask m;
+    int i;
+    for (i = 0; i < GA2D__LANES; ++i) m.lane[i] = a.lane[i] != b.lane[i];
+    return m;
 }
 static GA2D__HOT ga2d__w ga2d__wsel(ga2d__wmask m, ga2d__w a, ga2d__w b)
 {
@@ -9578,8 +9605,16 @@ static int ga2d__take_colour(uint32_t *mask, int a, int ma, int b, int mb)
    come before its contacts in a pass as they did when all the joints
    went first (their colours are found as the contacts' are,
    ga2d__pick_colour); a side the joint does not move gets its solver
-   body here.  Counts each colour's joints in `count`. */
-static void ga2d__colour_joints(ga2d__step_context *c, int *count)
+   body here.  Counts each colour's joints in `count`, and its bare hinges
+   (ga2d__bare_hinge) in `bare`; a joint's colour is kept with GA2D__BARE
+   set if it is one. */
+#define GA2D__BARE 0x100
+static int ga2d__bare_hinge(const ga2d__joint *j)
+{
+    return j->type == GA2D_JOINT_REVOLUTE && !j->enable_spring && !j->enable_motor && !j->enable_limit;
+}
+
+static void ga2d__colour_joints(ga2d__step_context *c, int *count, int *bare)
 {
     ga2d_world *w = c->world;
     int i;
@@ -9587,26 +9622,35 @@ static void ga2d__colour_joints(ga2d__step_context *c, int *count)
         const ga2d__joint *j = &w->joints[c->joint_order[i]];
         int ma = j->ima != 0 || j->iia != 0, mb = j->imb != 0 || j->iib != 0;
         int k = ga2d__take_colour(c->colour_masks, j->body[0], ma, j->body[1], mb);
-        c->joint_colours[i] = k;
+        c->joint_colours[i] = k | (ga2d__bare_hinge(j) ? GA2D__BARE : 0);
         if (!ma) ga2d__still_body(c, j->body[0]);
         if (!mb) ga2d__still_body(c, j->body[1]);
         if (k == GA2D__OVERFLOW) continue;
         ++count[k];
+        bare[k] += ga2d__bare_hinge(j);
         if (k + 1 > c->colour_count) c->colour_count = k + 1;
     }
 }
 
-/* The joints in colour order (each colour's in creation order), the
-   overflow's last, where the colours' counts `count` say. */
-static void ga2d__sort_joints(ga2d__step_context *c, const int *count)
+/* The joints in colour order, each colour's bare hinges first (`bare`
+   of them: ga2d__pack_hinges packs them) and then the rest, each part in
+   creation order; the overflow's last, where the colours' counts `count`
+   say. */
+static void ga2d__sort_joints(ga2d__step_context *c, const int *count, const int *bare)
 {
-    int next[GA2D__COLOURS + 1], k, i;
+    int next[GA2D__COLOURS + 1], rest[GA2D__COLOURS + 1], k, i;
     c->joint_start[0] = 0;
     for (k = 0; k < c->colour_count; ++k) c->joint_start[k + 1] = c->joint_start[k] + count[k];
-    for (k = 0; k <= c->colour_count; ++k) next[k] = c->joint_start[k];
+    for (k = 0; k <= c->colour_count; ++k) {
+        c->joint_bare[k] = k < c->colour_count ? bare[k] : 0;
+        next[k] = c->joint_start[k];
+        rest[k] = next[k] + c->joint_bare[k];
+    }
     for (i = 0; i < c->joint_active; ++i) {
-        k = c->joint_colours[i] == GA2D__OVERFLOW ? c->colour_count : c->joint_colours[i];
-        c->joint_sorted[next[k]++] = c->joint_order[i];
+        int colour = c->joint_colours[i] & ~GA2D__BARE;
+        k = colour == GA2D__OVERFLOW ? c->colour_count : colour;
+        if (c->joint_colours[i] & GA2D__BARE && k < c->colour_count) c->joint_sorted[next[k]++] = c->joint_order[i];
+        else c->joint_sorted[rest[k]++] = c->joint_order[i];
     }
     ga2d__swap_arrays((void **)&c->joint_order, &c->joint_order_capacity, (void **)&c->joint_sorted, &c->joint_sorted_capacity);
 }
@@ -9632,7 +9676,7 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     int used = w->body_used, i, k, extras = 0, overflow = 0, count[GA2D__COLOURS], next[GA2D__COLOURS];
-    int joints[GA2D__COLOURS];
+    int joints[GA2D__COLOURS], bare[GA2D__COLOURS];
     int *last;
     c->group_count = c->colour_count = 0;
     c->colour_start[0] = c->joint_start[0] = 0;
@@ -9647,7 +9691,8 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
     memset(c->colour_masks, 0, (size_t)used * sizeof *c->colour_masks);
     memset(count, 0, sizeof count);
     memset(joints, 0, sizeof joints);
-    ga2d__colour_joints(c, joints);
+    memset(bare, 0, sizeof bare);
+    ga2d__colour_joints(c, joints, bare);
     /* the contacts' colours (held in `lane` until the lanes are put) */
     for (i = 0; i < c->constraint_count; ++i) {
         ga2d__contact_constraint *cc = &c->constraints[i];
@@ -9660,7 +9705,7 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
         ++count[k];
         if (k + 1 > c->colour_count) c->colour_count = k + 1;
     }
-    ga2d__sort_joints(c, joints);
+    ga2d__sort_joints(c, joints, bare);
     /* each colour's groups, in colour order */
     for (k = 0; k < c->colour_count; ++k) {
         int groups = (count[k] + GA2D__LANES - 1) / GA2D__LANES;
@@ -10297,6 +10342,7 @@ static ga2d_vec ga2d__axis_of(ga2d_vec d)
 }
 
 static ga2d_vec ga2d__distance_span(const ga2d_world *w, const ga2d__joint *j);
+static ga2d_vec ga2d__point_impulse(const ga2d_world *w, const ga2d__joint *j);
 
 /* An impulse of the last substep as a force or torque (impulse / h),
    saturated at the largest real: a huge body's impulse over a tiny
@@ -10322,7 +10368,7 @@ GA2D_API ga2d_vec ga2d_joint_reaction_force(const ga2d_world *w, ga2d_joint_id i
                                                   (j->type == GA2D_JOINT_PRISMATIC ? j->motor_impulse : 0)),
                          ga2d_vec_scale(ga2d_vec_perp(axis), j->type == GA2D_JOINT_PRISMATIC ? j->linear_impulse.x : j->impulse));
         break;
-    default: P = j->linear_impulse; break;
+    default: P = ga2d__point_impulse(w, j); break;
     }
     return ga2d_vec_make(ga2d__rate_of(w, P.x), ga2d__rate_of(w, P.y));
 }
@@ -11171,6 +11217,226 @@ static GA2D__HOT ga2d_vec ga2d__joint_cdot(const ga2d__jbody *A, const ga2d__jbo
                         ga2d_vec_add(A->v, ga2d_vec_scale(ga2d_vec_perp(ra), A->w)));
 }
 
+/* Bare hinges in lanes.  A revolute joint with no spring, motor or limit
+   (a bridge's, a chain's, a grid's, a ragdoll's hinge) is its point
+   constraint alone; GA2D__LANES of one colour are solved at once, as the
+   contacts' lanes are, each lane computing exactly what
+   ga2d__solve_revolute and ga2d__warm_start_joints compute for its joint,
+   operation for operation: the same bits.  They are packed once a step
+   into a group (about a fifth of the four joints' own bytes, which every
+   pass streamed: joint_grid's 19 794 joints are 5 MB) and their impulses
+   stored back after the substeps.  A colour's bare hinges come first in
+   its joints (its joints commute exactly, so their order there is no
+   bit's), whole groups of them packed and the rest solved one by one. */
+struct ga2d__jgroup {
+    int a[GA2D__LANES], b[GA2D__LANES];
+    int first;                   /* the first lane's place in joint_order */
+    ga2d__wmask move_a, move_b;  /* all ones where the lane moves A, B */
+    ga2d__w rax, ray, rbx, rby;  /* anchors from the centres where the step began */
+    ga2d__w dcx, dcy;            /* B's centre less A's then */
+    ga2d__w ima, imb, iia, iib;
+    ga2d__w lix, liy;            /* the point's accumulated impulse */
+    ga2d__w axial;               /* the axial impulses' sum: no pass of a bare hinge changes it */
+};
+
+/* A colour's joints run in blocks of GA2D__JOINT_BLOCK from its first:
+   a whole number of groups, so no block splits one. */
+typedef char ga2d__joint_block_holds_groups[GA2D__JOINT_BLOCK % GA2D__LANES == 0 ? 1 : -1];
+
+/* Book-keeping, after the joints are coloured and sorted (each colour's
+   bare hinges first, ga2d__sort_joints): a group for every GA2D__LANES of
+   them.  Out of memory, none is packed: every joint is solved one by
+   one, to the same bits. */
+static void ga2d__pack_hinges(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int k, i, m, groups = 0, g = 0;
+    c->jgroup_count = 0;
+    if (c->joint_active == 0) return;
+    for (k = 0; k < c->colour_count; ++k) groups += c->joint_bare[k] / GA2D__LANES;
+    if (groups == 0 ||
+        !ga2d__grow(&w->mem, (void **)&c->jgroups, &c->jgroup_capacity, groups, sizeof *c->jgroups) ||
+        !ga2d__grow(&w->mem, (void **)&c->joint_lane, &c->joint_lane_capacity, c->joint_active, sizeof *c->joint_lane))
+        return;
+    memset(c->joint_lane, 0, (size_t)c->joint_active * sizeof *c->joint_lane);
+    for (k = 0; k < c->colour_count; ++k)
+        for (m = 0; m < c->joint_bare[k] / GA2D__LANES; ++m, ++g) {
+            c->jgroups[g].first = c->joint_start[k] + m * GA2D__LANES;
+            for (i = 0; i < GA2D__LANES; ++i) c->joint_lane[c->jgroups[g].first + i] = g * GA2D__LANES + i + 1;
+        }
+    c->jgroup_count = groups;
+}
+
+/* Stage, over the hinge groups: their joints' prepared data into lanes,
+   and each joint its lane (ga2d__point_impulse, ga2d__hinge_forget). */
+static void ga2d__fill_hinges(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int gi, l;
+    for (gi = begin; gi < end; ++gi) {
+        ga2d__jgroup *g = &c->jgroups[gi];
+        for (l = 0; l < GA2D__LANES; ++l) {
+            ga2d__joint *j = &w->joints[c->joint_order[g->first + l]];
+            j->lane = gi * GA2D__LANES + l + 1;
+            g->a[l] = j->body[0];
+            g->b[l] = j->body[1];
+            GA2D__LANE(g->move_a, l) = -(j->ima != 0 || j->iia != 0);
+            GA2D__LANE(g->move_b, l) = -(j->imb != 0 || j->iib != 0);
+            GA2D__LANE(g->rax, l) = j->ra.x;
+            GA2D__LANE(g->ray, l) = j->ra.y;
+            GA2D__LANE(g->rbx, l) = j->rb.x;
+            GA2D__LANE(g->rby, l) = j->rb.y;
+            GA2D__LANE(g->dcx, l) = j->delta_center.x;
+            GA2D__LANE(g->dcy, l) = j->delta_center.y;
+            GA2D__LANE(g->ima, l) = j->ima;
+            GA2D__LANE(g->imb, l) = j->imb;
+            GA2D__LANE(g->iia, l) = j->iia;
+            GA2D__LANE(g->iib, l) = j->iib;
+            GA2D__LANE(g->lix, l) = j->linear_impulse.x;
+            GA2D__LANE(g->liy, l) = j->linear_impulse.y;
+            GA2D__LANE(g->axial, l) = ga2d__joint_axial_impulse(j);
+        }
+    }
+}
+
+/* Stage, over the hinge groups, after the substeps: the impulses back to
+   their joints, which leave the lanes. */
+static void ga2d__store_hinges(ga2d__step_context *c, int begin, int end)
+{
+    ga2d_world *w = c->world;
+    int gi, l;
+    for (gi = begin; gi < end; ++gi) {
+        const ga2d__jgroup *g = &c->jgroups[gi];
+        for (l = 0; l < GA2D__LANES; ++l) {
+            ga2d__joint *j = &w->joints[c->joint_order[g->first + l]];
+            j->linear_impulse = ga2d_vec_make(GA2D__LANE(g->lix, l), GA2D__LANE(g->liy, l));
+            j->lane = 0;
+        }
+    }
+}
+
+/* A packed hinge's point impulse as it is now (the lanes hold it during
+   the substeps), or any joint's own. */
+static ga2d_vec ga2d__point_impulse(const ga2d_world *w, const ga2d__joint *j)
+{
+    const ga2d__jgroup *g;
+    int l;
+    if (j->lane == 0 || w->step.jgroup_count == 0) return j->linear_impulse;
+    g = &w->step.jgroups[(j->lane - 1) / GA2D__LANES];
+    l = (j->lane - 1) % GA2D__LANES;
+    return ga2d_vec_make(GA2D__LANE(g->lix, l), GA2D__LANE(g->liy, l));
+}
+
+/* Containment: a packed hinge's impulses forgotten in its lane too. */
+static void ga2d__hinge_forget(ga2d_world *w, const ga2d__joint *j)
+{
+    ga2d__jgroup *g;
+    int l;
+    if (j->lane == 0 || w->step.jgroup_count == 0) return;
+    g = &w->step.jgroups[(j->lane - 1) / GA2D__LANES];
+    l = (j->lane - 1) % GA2D__LANES;
+    GA2D__LANE(g->lix, l) = GA2D__LANE(g->liy, l) = GA2D__LANE(g->axial, l) = 0;
+}
+
+/* The lanes' anchors turned as their bodies have turned since the step
+   began (ga2d__jturn): r dq. */
+typedef struct ga2d__wlevers { ga2d__w ax, ay, bx, by; } ga2d__wlevers;
+
+static GA2D__HOT ga2d__wlevers ga2d__hinge_levers(const ga2d__jgroup *g, const ga2d__wbody *A, const ga2d__wbody *B)
+{
+    ga2d__wlevers r;
+    r.ax = ga2d__wsub(ga2d__wmul(A->qc, g->rax), ga2d__wmul(A->qs, g->ray));
+    r.ay = ga2d__wadd(ga2d__wmul(A->qs, g->rax), ga2d__wmul(A->qc, g->ray));
+    r.bx = ga2d__wsub(ga2d__wmul(B->qc, g->rbx), ga2d__wmul(B->qs, g->rby));
+    r.by = ga2d__wadd(ga2d__wmul(B->qs, g->rbx), ga2d__wmul(B->qc, g->rby));
+    return r;
+}
+
+/* ga2d__japply in lanes: the impulse P at the levers and the axial L. */
+static GA2D__HOT void ga2d__hinge_apply(const ga2d__jgroup *g, ga2d__wbody *A, ga2d__wbody *B, const ga2d__wlevers *r,
+                                        ga2d__w px, ga2d__w py, ga2d__w L)
+{
+    A->vx = ga2d__wsub(A->vx, ga2d__wmul(px, g->ima));
+    A->vy = ga2d__wsub(A->vy, ga2d__wmul(py, g->ima));
+    A->w = ga2d__wsub(A->w, ga2d__wmul(g->iia, ga2d__wadd(ga2d__wsub(ga2d__wmul(r->ax, py), ga2d__wmul(r->ay, px)), L)));
+    B->vx = ga2d__wadd(B->vx, ga2d__wmul(px, g->imb));
+    B->vy = ga2d__wadd(B->vy, ga2d__wmul(py, g->imb));
+    B->w = ga2d__wadd(B->w, ga2d__wmul(g->iib, ga2d__wadd(ga2d__wsub(ga2d__wmul(r->bx, py), ga2d__wmul(r->by, px)), L)));
+}
+
+/* A hinge group's warm start: last step's impulses at the anchors now. */
+static GA2D__HOT void ga2d__warm_hinges(ga2d__step_context *c, const ga2d__jgroup *g)
+{
+    ga2d__wbody A, B, A0, B0;
+    ga2d__wlevers r;
+    ga2d__wload(c->sbodies, g->a, &A, 1);
+    ga2d__wload(c->sbodies, g->b, &B, 1);
+    A0 = A;
+    B0 = B;
+    r = ga2d__hinge_levers(g, &A, &B);
+    ga2d__hinge_apply(g, &A, &B, &r, g->lix, g->liy, g->axial);
+    ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
+    ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+}
+
+/* A hinge group's pass (ga2d__solve_point in lanes): the 2x2 block K P =
+   -(cdot + the soft feedback of the anchors' gap) in a bias pass, -cdot
+   in a relax pass. */
+static GA2D__HOT void ga2d__solve_hinges(ga2d__step_context *c, ga2d__jgroup *g, int bias)
+{
+    const ga2d__w zero = ga2d__wsplat(0), one = ga2d__wsplat(1);
+    ga2d__wbody A, B, A0, B0;
+    ga2d__wlevers r;
+    ga2d__w rx, ry, ms = one, is = zero, k11, k12, k22, det, mass, sx, sy, px, py;
+    ga2d__wload(c->sbodies, g->a, &A, 1);
+    ga2d__wload(c->sbodies, g->b, &B, 1);
+    A0 = A;
+    B0 = B;
+    r = ga2d__hinge_levers(g, &A, &B);
+    /* cdot: B's anchor's velocity less A's (ga2d__joint_cdot) */
+    rx = ga2d__wsub(ga2d__wadd(B.vx, ga2d__wmul(ga2d__wneg(r.by), B.w)), ga2d__wadd(A.vx, ga2d__wmul(ga2d__wneg(r.ay), A.w)));
+    ry = ga2d__wsub(ga2d__wadd(B.vy, ga2d__wmul(r.bx, B.w)), ga2d__wadd(A.vy, ga2d__wmul(r.ax, A.w)));
+    if (bias) { /* the gap between the anchors now (ga2d__joint_span), fed back softly */
+        const ga2d__soft *soft = &c->joint_soft;
+        ga2d__w rate = ga2d__wsplat(soft->bias_rate);
+        sx = ga2d__wadd(ga2d__wadd(ga2d__wsub(B.dpx, A.dpx), ga2d__wsub(r.bx, r.ax)), g->dcx);
+        sy = ga2d__wadd(ga2d__wadd(ga2d__wsub(B.dpy, A.dpy), ga2d__wsub(r.by, r.ay)), g->dcy);
+        rx = ga2d__wadd(rx, ga2d__wmul(sx, rate));
+        ry = ga2d__wadd(ry, ga2d__wmul(sy, rate));
+        ms = ga2d__wsplat(soft->mass_scale);
+        is = ga2d__wsplat(soft->impulse_scale);
+    }
+    /* K^-1 (rx, ry) (ga2d__point_solve) */
+    k11 = ga2d__wadd(ga2d__wadd(ga2d__wadd(g->ima, g->imb), ga2d__wmul(ga2d__wmul(g->iia, r.ay), r.ay)),
+                     ga2d__wmul(ga2d__wmul(g->iib, r.by), r.by));
+    k12 = ga2d__wsub(ga2d__wmul(ga2d__wmul(ga2d__wneg(g->iia), r.ax), r.ay), ga2d__wmul(ga2d__wmul(g->iib, r.bx), r.by));
+    k22 = ga2d__wadd(ga2d__wadd(ga2d__wadd(g->ima, g->imb), ga2d__wmul(ga2d__wmul(g->iia, r.ax), r.ax)),
+                     ga2d__wmul(ga2d__wmul(g->iib, r.bx), r.bx));
+    det = ga2d__wsub(ga2d__wmul(k11, k22), ga2d__wmul(k12, k12));
+    {
+        ga2d__wmask nonzero = ga2d__wne(det, zero);
+        det = ga2d__wsel(nonzero, ga2d__wdiv(one, ga2d__wsel(nonzero, det, one)), det);
+    }
+    mass = ga2d__wneg(ms);
+    px = ga2d__wsub(ga2d__wmul(ga2d__wmul(det, ga2d__wsub(ga2d__wmul(k22, rx), ga2d__wmul(k12, ry))), mass), ga2d__wmul(g->lix, is));
+    py = ga2d__wsub(ga2d__wmul(ga2d__wmul(det, ga2d__wsub(ga2d__wmul(k11, ry), ga2d__wmul(k12, rx))), mass), ga2d__wmul(g->liy, is));
+    g->lix = ga2d__wadd(g->lix, px);
+    g->liy = ga2d__wadd(g->liy, py);
+    ga2d__hinge_apply(g, &A, &B, &r, px, py, zero);
+    ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
+    ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+}
+
+/* The packed group at place i of joint_order, if one begins there. */
+static ga2d__jgroup *ga2d__hinges_at(ga2d__step_context *c, int i)
+{
+    int lane = c->jgroup_count > 0 ? c->joint_lane[i] - 1 : -1;
+    if (lane < 0) return NULL;
+    GA2D_ASSERT(lane % GA2D__LANES == 0);
+    return &c->jgroups[lane / GA2D__LANES];
+}
+
+
 static void ga2d__slider_warm(const ga2d__sbody *sa, const ga2d__sbody *sb, const ga2d__joint *j, ga2d__jbody *A, ga2d__jbody *B);
 
 /* Stage, over the step's joints: last step's impulses, at the anchors as
@@ -11180,10 +11446,23 @@ static void ga2d__warm_start_joints(ga2d__step_context *c, int begin, int end)
     ga2d_world *w = c->world;
     int i;
     for (i = begin; i < end; ++i) {
-        const ga2d__joint *j = &w->joints[c->joint_order[i]];
-        ga2d__sbody *sa = &c->sbodies[j->body[0]], *sb = &c->sbodies[j->body[1]];
-        ga2d__jbody A = ga2d__jload(sa), B = ga2d__jload(sb);
-        ga2d_vec ra = ga2d__jturn(sa, j->ra), rb = ga2d__jturn(sb, j->rb);
+        const ga2d__jgroup *g = ga2d__hinges_at(c, i);
+        const ga2d__joint *j;
+        ga2d__sbody *sa, *sb;
+        ga2d__jbody A, B;
+        ga2d_vec ra, rb;
+        if (g) {
+            ga2d__warm_hinges(c, g);
+            i += GA2D__LANES - 1;
+            continue;
+        }
+        j = &w->joints[c->joint_order[i]];
+        sa = &c->sbodies[j->body[0]];
+        sb = &c->sbodies[j->body[1]];
+        A = ga2d__jload(sa);
+        B = ga2d__jload(sb);
+        ra = ga2d__jturn(sa, j->ra);
+        rb = ga2d__jturn(sb, j->rb);
         if (j->type == GA2D_JOINT_PRISMATIC || j->type == GA2D_JOINT_WHEEL) ga2d__slider_warm(sa, sb, j, &A, &B);
         else if (j->type == GA2D_JOINT_DISTANCE) /* its impulses lie along its axis */
             ga2d__japply(j, &A, &B, ra, rb, ga2d_vec_scale(ga2d__axis_of(ga2d__joint_span(sa, sb, j, ra, rb)), ga2d__joint_axial_impulse(j)), 0);
@@ -11551,7 +11830,14 @@ static void ga2d__solve_joints(ga2d__step_context *c, int begin, int end, int bi
     ga2d_world *w = c->world;
     int i;
     for (i = begin; i < end; ++i) {
-        ga2d__joint *j = &w->joints[c->joint_order[i]];
+        ga2d__jgroup *g = ga2d__hinges_at(c, i);
+        ga2d__joint *j;
+        if (g) {
+            ga2d__solve_hinges(c, g, bias);
+            i += GA2D__LANES - 1;
+            continue;
+        }
+        j = &w->joints[c->joint_order[i]];
         switch (j->type) {
         case GA2D_JOINT_REVOLUTE: ga2d__solve_revolute(c, j, bias); break;
         case GA2D_JOINT_DISTANCE: ga2d__solve_distance(c, j, bias); break;
@@ -11568,7 +11854,10 @@ static void ga2d__solve_joints(ga2d__step_context *c, int begin, int end, int bi
 static void ga2d__joints_forget(ga2d_world *w, int slot)
 {
     int link;
-    for (link = ga2d__first_joint(w, slot); link >= 0; link = ga2d__next_joint(w, link)) ga2d__joint_forget(&w->joints[link >> 1]);
+    for (link = ga2d__first_joint(w, slot); link >= 0; link = ga2d__next_joint(w, link)) {
+        ga2d__joint_forget(&w->joints[link >> 1]);
+        ga2d__hinge_forget(w, &w->joints[link >> 1]);
+    }
 }
 
 /* ============================================================ world step */
@@ -11612,6 +11901,9 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->colour_masks, &c->colour_mask_capacity, sizeof *c->colour_masks);
     ga2d__release(w, (void **)&c->lane_constraints, &c->lane_constraint_capacity, sizeof *c->lane_constraints);
     ga2d__release(w, (void **)&c->joint_sorted, &c->joint_sorted_capacity, sizeof *c->joint_sorted);
+    ga2d__release(w, (void **)&c->jgroups, &c->jgroup_capacity, sizeof *c->jgroups);
+    ga2d__release(w, (void **)&c->joint_lane, &c->joint_lane_capacity, sizeof *c->joint_lane);
+    c->jgroup_count = 0;
     ga2d__release(w, (void **)&c->joint_colours, &c->joint_colour_capacity, sizeof *c->joint_colours);
     ga2d__release(w, (void **)&c->kicked, &c->kicked_capacity, sizeof *c->kicked);
     ga2d__release(w, (void **)&c->changed, &c->changed_capacity, sizeof *c->changed);
@@ -11638,6 +11930,8 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->counts, c->counts_capacity);
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
     GA2D__FREE_ARRAY(a, c->joint_sorted, c->joint_sorted_capacity);
+    GA2D__FREE_ARRAY(a, c->jgroups, c->jgroup_capacity);
+    GA2D__FREE_ARRAY(a, c->joint_lane, c->joint_lane_capacity);
     GA2D__FREE_ARRAY(a, c->joint_colours, c->joint_colour_capacity);
     GA2D__FREE_ARRAY(a, c->kicked, c->kicked_capacity);
 }
@@ -12581,8 +12875,11 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__order_joints(c);
     ga2d__run_split(c, ga2d__prepare_joints, c->joint_active);
     ga2d__assign_lanes(c); /* and colours the joints */
+    ga2d__pack_hinges(c);
     w->counters.joints_solved = c->joint_active;
+    w->counters.hinges_in_lanes = c->jgroup_count * GA2D__LANES;
     ga2d__run_split(c, ga2d__fill_groups, c->group_count);
+    ga2d__run_split(c, ga2d__fill_hinges, c->jgroup_count);
     c->masses_stale = 1;
     /* the substeps */
     stages = ga2d__plan_substep(w, plan);
@@ -12593,7 +12890,8 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     }
     /* impulses kept for the next step, bodies finished, sleep */
     ga2d__run_split(c, ga2d__store_impulses, c->group_count);
-    c->group_count = c->colour_count = 0;
+    ga2d__run_split(c, ga2d__store_hinges, c->jgroup_count);
+    c->group_count = c->colour_count = c->jgroup_count = 0;
     if (w->hit_shapes > 0) ga2d__hit_events(c);
     ga2d__run(c, ga2d__finish_bodies, w->moving_count);
     if (w->def.enable_continuous) ga2d__continuous(c);

@@ -14,6 +14,9 @@
    and destroyed on their own ground 1 km away while the scene runs, which
    must not change its hash.
 
+   Beside it, the hinge net (dhinge_run): the solver's lanes of bare
+   hinges against the same joints solved one by one.
+
    Used by tests/test_determinism.c (inside each test build) and by
    tests/determinism.c (one small program built with many compilers and
    flags, whose hashes `make test` compares). */
@@ -21,6 +24,8 @@
 #define GA2D_DETERMINISM_SCENE_H
 
 #include "ga2d_physics.h"
+#include <float.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define DSCENE_STEPS 600
@@ -248,6 +253,144 @@ static inline uint64_t dscene_run(int churn, int *asleep)
     }
     ga2d_world_destroy(s.w);
     return h;
+}
+
+
+/* ------------------------------------------------------ the hinge net */
+/* The solver packs bare revolute joints (no spring, motor or limit) of
+   one colour several at a time into its lanes and solves them at once;
+   each lane must compute exactly what the joint alone would.  A joint
+   whose spring is enabled at 0 Hz is the same joint (a spring of no
+   stiffness acts nowhere) solved one by one, so a net built both ways
+   must give the same bits: every body's state, and every joint's reaction
+   read after each step and from inside the force callback (mid-step,
+   while the lanes hold the impulses).  The net: n x n discs, each on a
+   revolute joint to its left and its upper neighbour, the top row static,
+   every fifth joint with a limit of +-0.5 rad (not bare: each colour
+   mixes both kinds), the discs passing through each other (as in Box2D
+   v3's joint grid), swinging sideways under a slanted gravity; at step
+   DHINGE_BLOW a disc in the middle is driven non-finite by a huge force,
+   so that step contains it and its joints forget their impulses (in the
+   lanes too). */
+#define DHINGE_STEPS 150
+#define DHINGE_BLOW 60
+#define DHINGE_JOINTS(n) (2 * ((n) - 1) * ((n) - 1) + (n) - 1)
+
+typedef struct dhinge {
+    ga2d_world *w;
+    ga2d_body_id *bodies;
+    ga2d_joint_id *joints;
+    int n, joint_count;
+    uint64_t field_hash; /* the reactions read in the force callback */
+} dhinge;
+
+static inline uint64_t dhinge_reactions(const dhinge *s, uint64_t h)
+{
+    int i;
+    for (i = 0; i < s->joint_count; ++i) {
+        ga2d_vec f = ga2d_joint_reaction_force(s->w, s->joints[i]);
+        ga2d_real t = ga2d_joint_reaction_torque(s->w, s->joints[i]);
+        h = dscene_fnv(h, &f, sizeof f);
+        h = dscene_fnv(h, &t, sizeof t);
+    }
+    return h;
+}
+
+static inline void dhinge_field(ga2d_world *w, void *context)
+{
+    dhinge *s = (dhinge *)context;
+    (void)w;
+    s->field_hash = dhinge_reactions(s, s->field_hash);
+}
+
+/* One disc of row `row`, column k, and its joints to the left and up; 0
+   if anything was refused. */
+static inline int dhinge_disc(dhinge *s, int row, int k, int bare)
+{
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_circle disc;
+    ga2d_body_id id;
+    int side, n = s->n;
+    disc.center = ga2d_vec_make(0, 0);
+    disc.radius = (ga2d_real)0.2;
+    sd.filter.group_index = -1;
+    d.type = row == 0 ? GA2D_BODY_STATIC : GA2D_BODY_DYNAMIC;
+    d.position = ga2d_vec_make((ga2d_real)(0.5 * k), (ga2d_real)(-0.5 * row));
+    id = s->bodies[row * n + k] = ga2d_body_create(s->w, &d);
+    if (ga2d_shape_id_is_null(ga2d_shape_create_circle(s->w, id, &sd, &disc))) return 0;
+    for (side = 0; row > 0 && side < 2; ++side) {
+        ga2d_revolute_joint_def j = ga2d_default_revolute_joint_def();
+        if (side == 0 && k == 0) continue;
+        j.body_a = side == 0 ? s->bodies[row * n + k - 1] : s->bodies[(row - 1) * n + k];
+        j.body_b = id;
+        j.local_anchor_a = side == 0 ? ga2d_vec_make((ga2d_real)0.25, 0) : ga2d_vec_make(0, (ga2d_real)-0.25);
+        j.local_anchor_b = side == 0 ? ga2d_vec_make((ga2d_real)-0.25, 0) : ga2d_vec_make(0, (ga2d_real)0.25);
+        if (s->joint_count % 5 == 4) {
+            j.enable_limit = 1;
+            j.lower_angle = (ga2d_real)-0.5;
+            j.upper_angle = (ga2d_real)0.5;
+        }
+        j.enable_spring = !bare; /* at 0 Hz */
+        j.hertz = 0;
+        s->joints[s->joint_count] = ga2d_revolute_joint_create(s->w, &j);
+        if (ga2d_joint_id_is_null(s->joints[s->joint_count++])) return 0;
+    }
+    return 1;
+}
+
+/* Steps the net of n x n (bare hinges, or each with its spring on at 0
+   Hz) in a world made from wd; returns its hash (bodies, then the
+   reactions), 0 if it could not run or the blow-up was not contained
+   once.  *in_lanes: the most hinges a step solved in lanes. */
+static inline uint64_t dhinge_run(ga2d_world_def wd, int n, int bare, int *in_lanes)
+{
+    dhinge s;
+    uint64_t h = 14695981039346656037ull;
+#ifdef GA2D_DOUBLE
+    ga2d_real huge = DBL_MAX / 2; /* F / m past the largest real: not finite */
+#else
+    ga2d_real huge = FLT_MAX / 2;
+#endif
+    int step, row, k, ok, blown = 0;
+    memset(&s, 0, sizeof s);
+    *in_lanes = 0;
+    s.n = n;
+    wd.gravity = ga2d_vec_make(4, -10);
+    wd.force_callback = dhinge_field;
+    wd.force_context = &s;
+    s.w = ga2d_world_create(&wd);
+    s.bodies = (ga2d_body_id *)malloc(sizeof *s.bodies * (size_t)(n * n));
+    s.joints = (ga2d_joint_id *)malloc(sizeof *s.joints * (size_t)DHINGE_JOINTS(n));
+    ok = s.w && s.bodies && s.joints;
+    for (row = 0; ok && row < n; ++row)
+        for (k = 0; ok && k < n; ++k) ok = dhinge_disc(&s, row, k, bare);
+    for (step = 0; ok && step < DHINGE_STEPS; ++step) {
+        ga2d_result r;
+        ga2d_world_counters wc;
+        if (step == DHINGE_BLOW)
+            ok = ga2d_body_apply_force_to_center(s.w, s.bodies[n * (n / 2) + n / 2], ga2d_vec_make(0, huge)) == GA2D_OK;
+        r = ga2d_world_step(s.w, (ga2d_real)1 / 60);
+        blown += r == GA2D_ERR_NOT_FINITE;
+        ok = ok && (r == GA2D_OK || (r == GA2D_ERR_NOT_FINITE && step == DHINGE_BLOW));
+        wc = ga2d_world_get_counters(s.w);
+        if (wc.hinges_in_lanes > *in_lanes) *in_lanes = wc.hinges_in_lanes;
+        s.field_hash = dhinge_reactions(&s, s.field_hash);
+    }
+    for (k = 0; ok && k < n * n; ++k) {
+        ga2d_vec x = ga2d_body_position(s.w, s.bodies[k]), v = ga2d_body_velocity(s.w, s.bodies[k]);
+        ga2d_rotor q = ga2d_body_rotor(s.w, s.bodies[k]);
+        ga2d_real om = ga2d_body_angular_velocity(s.w, s.bodies[k]);
+        h = dscene_fnv(h, &x, sizeof x);
+        h = dscene_fnv(h, &q, sizeof q);
+        h = dscene_fnv(h, &v, sizeof v);
+        h = dscene_fnv(h, &om, sizeof om);
+    }
+    h = dscene_fnv(h, &s.field_hash, sizeof s.field_hash);
+    ga2d_world_destroy(s.w);
+    free(s.bodies);
+    free(s.joints);
+    return ok && blown == 1 && s.joint_count == DHINGE_JOINTS(n) ? h : 0;
 }
 
 #endif

@@ -422,6 +422,41 @@ static void task_fields_checked(void)
     CHECK(big_run(&wd, &carried) == want);
 }
 
+/* ----------------------------------------------- bare hinges in lanes */
+/* The hinge net of determinism_scene.h (dhinge_run) both ways, bare
+   hinges in lanes and the same joints one by one: the same bits, for each
+   solver kind, with warm starting off too, on no task system and on a pool
+   of 3.  A net of 24 x 24 has colours of over a thousand joints, handed to
+   the workers in blocks (every build of determinism.c checks a smaller
+   one, in every lane width). */
+#define HINGE_NET 24
+static void hinge_lanes_same_bits(void)
+{
+    static const ga2d_solver solvers[] = {GA2D_SOLVER_SOFT_STEP, GA2D_SOLVER_PGS_BAUMGARTE, GA2D_SOLVER_PGS_NGS};
+    task_pool *p = task_pool_create(3);
+    int s, warm, pooled;
+    CHECK(p != NULL);
+    for (s = 0; s < 3; ++s)
+        for (warm = 0; warm < 2; ++warm)
+            for (pooled = 0; pooled < 2; ++pooled) {
+                ga2d_world_def wd = pooled && p ? with_pool(p) : ga2d_default_world_def();
+                uint64_t lanes, one_by_one;
+                int in_lanes, none;
+                wd.solver = solvers[s];
+                wd.enable_warm_starting = warm;
+                lanes = dhinge_run(wd, HINGE_NET, 1, &in_lanes);
+                one_by_one = dhinge_run(wd, HINGE_NET, 0, &none);
+                CHECK(lanes != 0);
+                /* four of five joints are bare: most of them fill whole groups */
+                CHECK(in_lanes > DHINGE_JOINTS(HINGE_NET) / 2);
+                CHECK(none == 0);
+                if (lanes != one_by_one)
+                    test_fail(__FILE__, __LINE__, "solver %d, warm starting %d, pooled %d: %016llx in lanes, %016llx one by one", s,
+                              warm, pooled, (unsigned long long)lanes, (unsigned long long)one_by_one);
+            }
+    if (p) task_pool_destroy(p);
+}
+
 /* ------------------------------------------------- the pool on its own */
 /* Every item of every job is done exactly once, by the time finish
    returns: jobs of 2 to 38 items back to back, so a worker late for one
@@ -468,4 +503,5 @@ void suite_threads(void)
     test_run("threads: the determinism scene's hash with 1-4 workers, backwards and inline", any_worker_count_same_bits);
     test_run("threads: a big mixed scene's bits and counters with every task system", big_scene_same_bits);
     test_run("threads: task fields checked; the world refuses its task system", task_fields_checked);
+    test_run("threads: bare hinges in lanes give the one-by-one bits (every solver, pooled, contained)", hinge_lanes_same_bits);
 }
