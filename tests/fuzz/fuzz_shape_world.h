@@ -2162,8 +2162,21 @@ static int fsw_q_sees(const fsw_q *q, ga2d_shape_id id)
 }
 
 /* The query's frame: the snapshot before, a fresh callback state. */
+static int fsw_q_any(ga2d_shape_id shape, void *ctx)
+{
+    (void)shape;
+    (void)ctx;
+    return 1;
+}
+
 static void fsw_q_begin(fsw_state *s, fsw_q *q, fsw_buf *before, int *saved)
 {
+    ga2d_aabb here;
+    /* a query that surely runs first: a refused query leaves the counters
+       as the last one that ran left them, which may have seen shapes
+       destroyed since (fsw_q_end bounds them by the shapes now) */
+    here.lower = here.upper = ga2d_vec_make(0, 0);
+    (void)ga2d_world_overlap_aabb(s->base.w, here, ga2d_default_filter(), fsw_q_any, NULL);
     memset(before, 0, sizeof *before);
     *saved = fsw_save(s->base.w, before);
     q->s = s;
@@ -2412,7 +2425,12 @@ static void fsw_q_point(fsw_state *s, ga2d_vec p, ga2d_filter f, int mode, int m
         ga2d_shape_proxy sp = ga2d_shape_proxy_of(&g);
         ga2d_distance_result d;
         int k = fsw_q_index(&q, all[i]);
-        double tol = fsw_q_tol(fsw_n1(p) + fsw_n1(x.p) + 2 * FSW_QMAX);
+        double S, tol;
+        /* GJK works in the shape's own coordinates, as large as its
+           vertices: its distance rounds by eps of them (a 2e8 m box
+           holding a point 4 m inside it measured 4 m away in float) */
+        (void)fsw_q_shape_box(w, all[i], &S);
+        tol = fsw_q_tol(fsw_n1(p) + S + 2 * FSW_QMAX);
         if (!fsw_q_sees(&q, all[i])) continue;
         if (k >= 0) {
             FUZZ_CHECK(g.type != GA2D_SHAPE_SEGMENT && g.type != GA2D_SHAPE_CHAIN_SEGMENT);
