@@ -1561,7 +1561,7 @@ typedef struct ga2d_ray_result {
 } ga2d_ray_result;
 
 /* A ray against one shape in its own frame; bad input (NULL, a value not
-   finite, a negative radius, a polygon ga2d_polygon_make could not have
+   finite, origin + translation not finite, a negative radius, a polygon ga2d_polygon_make could not have
    made, a translation of zero length) does not hit. */
 GA2D_API ga2d_ray_result ga2d_ray_cast_circle(const ga2d_circle *c, ga2d_vec origin, ga2d_vec translation);
 GA2D_API ga2d_ray_result ga2d_ray_cast_capsule(const ga2d_capsule *c, ga2d_vec origin, ga2d_vec translation);
@@ -1571,7 +1571,7 @@ GA2D_API ga2d_ray_result ga2d_ray_cast_polygon(const ga2d_polygon *p, ga2d_vec o
 GA2D_API ga2d_ray_result ga2d_ray_cast_segment(const ga2d_segment *s, ga2d_vec origin, ga2d_vec translation,
                                               int one_sided);
 /* Any shape placed by x, the ray in world coordinates.  NOT_FINITE for a
-   value not finite, INVALID_ARGUMENT for NULL, a zero translation or a
+   value not finite (origin + translation too), INVALID_ARGUMENT for NULL, a zero translation or a
    shape ga2d_collide_shapes would refuse; *out untouched then. */
 GA2D_API ga2d_result ga2d_ray_cast_shape(const ga2d_geometry *g, ga2d_transform x, ga2d_vec origin, ga2d_vec translation,
                                          ga2d_ray_result *out);
@@ -3966,6 +3966,15 @@ static void ga2d__ray_segment(ga2d_vec a, ga2d_vec b, int one_sided, ga2d_vec p,
     best->hit = 1;
 }
 
+/* A hit's point as computed, or where that rounded past the real range
+   (a ray ending within rounding of its end, a turn back from the shape's
+   frame there), p + f d: f <= 1, so each coordinate lies between p's and
+   p + d's, which the input checks have found finite. */
+static ga2d_vec ga2d__ray_point(ga2d_vec computed, ga2d_vec p, ga2d_vec d, ga2d_real f)
+{
+    return ga2d__finite_vec(computed) ? computed : ga2d_vec_add(p, ga2d_vec_scale(d, f));
+}
+
 /* The ray p + t d, t in [0, 1], against g in its own frame. */
 static ga2d_ray_result ga2d__ray_geometry(const ga2d_geometry *g, ga2d_vec p, ga2d_vec d)
 {
@@ -4010,7 +4019,7 @@ static ga2d_ray_result ga2d__ray_geometry(const ga2d_geometry *g, ga2d_vec p, ga
     out.hit = 1;
     out.fraction = best.t / len;
     if (out.fraction > 1) out.fraction = 1; /* t <= len; the quotient may round past */
-    out.point = ga2d_vec_add(p, ga2d_vec_scale(u, best.t));
+    out.point = ga2d__ray_point(ga2d_vec_add(p, ga2d_vec_scale(u, best.t)), p, d, out.fraction);
     out.normal = best.normal;
     return out;
 }
@@ -4020,7 +4029,8 @@ static ga2d_result ga2d__ray_input(const ga2d_geometry *g, ga2d_vec origin, ga2d
 {
     int bad = ga2d__geometry_input(g);
     if (bad) return (ga2d_result)-bad;
-    if (!ga2d__finite_vec(origin) || !ga2d__finite_vec(translation)) return GA2D_ERR_NOT_FINITE;
+    if (!ga2d__finite_vec(origin) || !ga2d__finite_vec(translation) || !ga2d__finite_vec(ga2d_vec_add(origin, translation)))
+        return GA2D_ERR_NOT_FINITE;
     if (translation.x == 0 && translation.y == 0) return GA2D_ERR_INVALID_ARGUMENT;
     return GA2D_OK;
 }
@@ -4084,7 +4094,7 @@ static ga2d_ray_result ga2d__ray_placed(const ga2d_geometry *g, ga2d_transform x
 {
     ga2d_ray_result r = ga2d__ray_geometry(g, ga2d_transform_apply_inv(x, origin), ga2d_rotate_inv(x.q, translation));
     if (r.hit) {
-        r.point = ga2d_transform_apply(x, r.point);
+        r.point = ga2d__ray_point(ga2d_transform_apply(x, r.point), origin, translation, r.fraction);
         r.normal = ga2d_rotate(x.q, r.normal);
     }
     return r;

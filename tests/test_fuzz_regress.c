@@ -142,7 +142,7 @@ static void regress_polygon(void) { replay("polygon", polygon_one, 13, 8); }
 static void regress_world(void) { replay("world", world_one, 9, 6); }
 static void regress_snapshot(void) { replay("snapshot", snapshot_one, 0, 5); }
 static void regress_reentry(void) { replay("reentry", reentry_one, 8, 7); }
-static void regress_shapes(void) { replay("shapes", shapes_one, 16, 9); }
+static void regress_shapes(void) { replay("shapes", shapes_one, 17, 9); }
 static void regress_shape_world(void) { replay("shape_world", shape_world_one, 23, 14); }
 
 /* The empty input and a few fixed ones, which need no files. */

@@ -475,6 +475,65 @@ static void ray_cast_shape_placed(void)
     if (verbose()) printf("queries: placed casts: worst point difference %.3g of the bound, %d of 400 flipped\n", worst, flipped);
 }
 
+/* A ray ending at the real range's end (M, the largest real): a hit's
+   point is the ray's at its fraction, which lies between the origin and
+   the end, both finite, however the turn back from the shape's frame
+   rounds.  The box [-M/4, M/4] x [M/2, M] (a sharp polygon, whose cast
+   takes differences and unit dot products only, so nothing overflows),
+   given in the frame of a placement turned by each angle of a sweep, and
+   a ray down from (M/8, M), a point of its top edge: where rounding puts
+   the origin outside the box the ray enters it at once, at (M/8, M),
+   whose turn back may round past M.  Each hit's point within
+   (TOL_K + 4) eps M per coordinate of origin + fraction translation (the
+   cast's rounding at size M, and the turn's).  A ray whose end is not
+   finite is refused. */
+static void ray_cast_at_range_end(void)
+{
+    const double M = REAL_MAX, tol = (TOL_K + 4) * REAL_EPS * M;
+    const ga2d_vec corner[4] = {{(ga2d_real)(-M / 4), (ga2d_real)(M / 2)}, {(ga2d_real)(M / 4), (ga2d_real)(M / 2)},
+                                {(ga2d_real)(M / 4), (ga2d_real)M}, {(ga2d_real)(-M / 4), (ga2d_real)M}};
+    const ga2d_vec side[4] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+    ga2d_vec o = ga2d_vec_make((ga2d_real)(M / 8), (ga2d_real)M), d = ga2d_vec_make(0, (ga2d_real)(-M / 2));
+    int i, k, hits = 0, rounded_past = 0;
+    for (i = 0; i < 1024; ++i) {
+        ga2d_geometry g;
+        ga2d_transform x = ga2d_transform_make(ga2d_vec_make(0, 0), ga2d_rotor_from_angle((ga2d_real)(-3.14 + i * (6.28 / 1024))));
+        ga2d_ray_result h, local;
+        ga2d_vec turned;
+        memset(&g, 0, sizeof g);
+        g.type = GA2D_SHAPE_POLYGON;
+        g.as.polygon.count = 4;
+        for (k = 0; k < 4; ++k) {
+            g.as.polygon.vertices[k] = ga2d_rotate_inv(x.q, corner[k]);
+            g.as.polygon.normals[k] = ga2d_rotate_inv(x.q, side[k]);
+            if (!isfinite((double)g.as.polygon.vertices[k].x) || !isfinite((double)g.as.polygon.vertices[k].y)) break;
+        }
+        if (k < 4) continue; /* a corner (M/4, M) turns past the range */
+        CHECK_RESULT(ga2d_ray_cast_shape(&g, x, o, d, &h), GA2D_OK);
+        if (!h.hit) continue;
+        ++hits;
+        local = ga2d_ray_cast_polygon(&g.as.polygon, ga2d_rotate_inv(x.q, o), ga2d_rotate_inv(x.q, d));
+        turned = ga2d_transform_apply(x, local.point);
+        rounded_past += !isfinite((double)turned.x) || !isfinite((double)turned.y);
+        CHECK(h.fraction >= 0 && h.fraction <= 1);
+        CHECK(isfinite((double)h.point.x) && isfinite((double)h.point.y));
+        CHECK(fabs((double)o.x + (double)h.fraction * (double)d.x - (double)h.point.x) <= tol);
+        CHECK(fabs((double)o.y + (double)h.fraction * (double)d.y - (double)h.point.y) <= tol);
+    }
+    CHECK(rounded_past > 0); /* the case is exercised: some turns back round past the range */
+    {
+        ga2d_geometry g;
+        ga2d_ray_result h;
+        memset(&g, 0, sizeof g);
+        g.type = GA2D_SHAPE_CIRCLE;
+        g.as.circle.radius = 1;
+        CHECK_RESULT(ga2d_ray_cast_shape(&g, ga2d_transform_identity(), ga2d_vec_make(0, (ga2d_real)M), ga2d_vec_make(0, (ga2d_real)M), &h),
+                     GA2D_ERR_NOT_FINITE);
+        CHECK(!ga2d_ray_cast_circle(&g.as.circle, ga2d_vec_make(0, (ga2d_real)M), ga2d_vec_make(0, (ga2d_real)M)).hit);
+    }
+    if (verbose()) printf("queries: range end: %d hits, %d rounded past the range when turned back\n", hits, rounded_past);
+}
+
 /* ------------------------------------------------- distance, casts, TOI */
 /* A random proxy: a hull of 3 to 8 points, a capsule's two, a circle's
    one (a radius 0 to 0.5; a point cloud of 2 with radius 0 is a segment). */
@@ -1583,6 +1642,7 @@ void suite_queries(void)
     test_run("queries: rays against brute force", rays_against_brute_force);
     test_run("queries: ray edge cases", ray_edge_cases);
     test_run("queries: ray cast of a placed shape", ray_cast_shape_placed);
+    test_run("queries: a ray ending at the real range's end", ray_cast_at_range_end);
     test_run("queries: GJK distance against brute force", distance_against_brute_force);
     test_run("queries: shape cast against brute force", shape_cast_against_brute_force);
     test_run("queries: time of impact against a sweep", toi_against_sweep);

@@ -1359,7 +1359,8 @@ static void fg_queries(fz_reader *r, const fg_side *A, const fg_side *B)
        world's; the same bits when the placement is the identity */
     res = ga2d_ray_cast_shape(a, A->x, o, t, &h);
     fg_check_errs(res,
-                  A->in->nf || A->in->inv || !fz_finite_vec(o) || !fz_finite_vec(t) || (t.x == 0 && t.y == 0) ||
+                  A->in->nf || A->in->inv || !fz_finite_vec(o) || !fz_finite_vec(t) ||
+                      !fz_finite_vec(ga2d_vec_add(o, t)) || (t.x == 0 && t.y == 0) ||
                       fg_xf_bad(A->x, A->dq) == 2,
                   A->in->maybe || fg_xf_bad(A->x, A->dq) == 1);
     if (res == GA2D_OK) fg_check_ray_hit(&h, o, t, ntol, ptol, ordinary);
