@@ -2689,6 +2689,10 @@ typedef struct ga2d__node {
 typedef struct ga2d__tree {
     ga2d__node *nodes;
     int capacity, used, root, free_list, leaves;
+    int *units;        /* room for every node */
+    int unit_capacity;
+    int moved;         /* leaves listed in units to go back in (ga2d__refit_proxies) */
+    int marked;        /* some node is marked (ga2d__tree_mark) */
 } ga2d__tree;
 
 static ga2d_real ga2d__perimeter(ga2d_aabb b) { return 2 * ((b.upper.x - b.lower.x) + (b.upper.y - b.lower.y)); }
@@ -2699,8 +2703,9 @@ static int ga2d__tree_reserve(const ga2d_allocator *a, ga2d__tree *t, int more)
 {
     int free_nodes = t->capacity - t->used, i;
     for (i = t->free_list; i >= 0 && free_nodes < 2 * more; i = t->nodes[i].parent) ++free_nodes;
-    if (free_nodes >= 2 * more) return 1;
-    return ga2d__grow(a, (void **)&t->nodes, &t->capacity, t->used + 2 * more, sizeof *t->nodes);
+    if (free_nodes < 2 * more && !ga2d__grow(a, (void **)&t->nodes, &t->capacity, t->used + 2 * more, sizeof *t->nodes))
+        return 0;
+    return ga2d__grow(a, (void **)&t->units, &t->unit_capacity, t->capacity, sizeof *t->units);
 }
 
 static int ga2d__tree_alloc_node(ga2d__tree *t)
@@ -2793,6 +2798,67 @@ static void ga2d__tree_refit(ga2d__tree *t, int i)
         n->box = box;
         n->category = category;
         i = n->parent;
+    }
+}
+
+/* Leaves refitted in a step, taken out and put back one by one, would
+   rebuild their paths each time: instead each new leaf box marks its
+   ancestors up to the root (ga2d__tree_mark), one pass then refits the
+   marked boxes from below (ga2d__tree_tighten), and only the leaves that
+   left their parent's box go back in by the heuristic.  Until the
+   tightening a marked box may not hold its children: nothing reads the
+   tree in between.  A marked inner node's body, -1 otherwise, is
+   GA2D__MARKED. */
+#define GA2D__MARKED (-2)
+static void ga2d__tree_mark(ga2d__tree *t, int leaf)
+{
+    ga2d__node *n = t->nodes;
+    int i;
+    for (i = n[leaf].parent; i >= 0 && n[i].body != GA2D__MARKED; i = n[i].parent) n[i].body = GA2D__MARKED;
+    t->marked = 1;
+}
+
+/* Whether a leaf's new box has left its sibling (the box holding both is
+   larger, by perimeter, than the two apart): then the place the heuristic
+   chose for it no longer suits it.  A leaf that keeps near its sibling
+   keeps its place, as a net or a crowd moving as one does. */
+#ifndef GA2D__STRAY_LEVELS
+#define GA2D__STRAY_LEVELS 64
+#endif
+static int ga2d__tree_strayed(const ga2d__tree *t, int leaf)
+{
+    const ga2d__node *n = t->nodes;
+    int i, parent, sibling, d;
+    for (i = leaf, d = 0; (parent = n[i].parent) >= 0 && d < GA2D__STRAY_LEVELS; i = parent, ++d) {
+        sibling = n[parent].child1 == i ? n[parent].child2 : n[parent].child1;
+        if (ga2d__perimeter(n[parent].box) > ga2d__perimeter(n[i].box) + ga2d__perimeter(n[sibling].box)) return 1;
+    }
+    return 0;
+}
+
+/* The marked boxes, each the union of its children's again, from below;
+   the marks cleared.  The stack holds at most the height + 1 (see
+   ga2d__tree_query), each node twice (once down, once up: a tagged
+   index). */
+static void ga2d__tree_tighten(ga2d__tree *t)
+{
+    ga2d__node *n = t->nodes;
+    int stack[512], top = 0;
+    t->marked = 0;
+    if (t->root < 0 || n[t->root].body != GA2D__MARKED) return;
+    stack[top++] = t->root;
+    while (top > 0) {
+        int i = stack[--top];
+        if (i < 0) { /* back up: its children are tight */
+            i = ~i;
+            n[i].box = ga2d_aabb_union(n[n[i].child1].box, n[n[i].child2].box);
+            n[i].body = -1;
+            continue;
+        }
+        GA2D_ASSERT(top + 3 <= 512);
+        stack[top++] = ~i;
+        if (n[n[i].child1].body == GA2D__MARKED) stack[top++] = n[i].child1;
+        if (n[n[i].child2].body == GA2D__MARKED) stack[top++] = n[i].child2;
     }
 }
 
@@ -3008,6 +3074,7 @@ static int ga2d__tree_overlap(const ga2d__tree *t, ga2d_aabb q, ga2d__leaf_fn *f
 static void ga2d__tree_release(const ga2d_allocator *a, ga2d__tree *t)
 {
     GA2D__FREE_ARRAY(a, t->nodes, t->capacity);
+    GA2D__FREE_ARRAY(a, t->units, t->unit_capacity);
 }
 
 /* ============================================================ narrowphase */
@@ -7959,10 +8026,13 @@ static void ga2d__mark_strays(ga2d__step_context *c, int begin, int end)
     }
 }
 
-/* Book-keeping: the marked bodies' new shape boxes move in the tree, in
-   the moving list's order (the tree's shape depends on it), and the
-   shapes queue for pair finding; then the queue is sorted, without
-   destroyed shapes and repeats (a slot destroyed and reused). */
+/* Book-keeping: the marked bodies' new shape boxes are fitted into their
+   trees: every box above them tightened, then each that left its
+   parent's box moved (taken out, put back by the heuristic), in the
+   moving list's order (the trees' shape depends on it; the pairs they
+   give, on the boxes alone); the shapes queue for pair finding.  Then
+   the queue is sorted, without destroyed shapes and repeats (a slot
+   destroyed and reused). */
 static void ga2d__refit_proxies(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
@@ -7972,9 +8042,18 @@ static void ga2d__refit_proxies(ga2d__step_context *c)
         for (s = w->bodies[w->moving[k]].shape_head; s >= 0; s = w->shapes[s].next) {
             ga2d__shape *sh = &w->shapes[s];
             ga2d__tree *t = ga2d__tree_of(w, sh);
-            ga2d__tree_move(t, sh->proxy, t->nodes[sh->proxy].box);
+            t->units[t->moved++] = sh->proxy;
+            ga2d__tree_mark(t, sh->proxy);
             ga2d__buffer_move(w, s);
         }
+    }
+    for (k = 0; k < 2; ++k) {
+        ga2d__tree *t = &w->trees[k];
+        int i;
+        if (t->marked) ga2d__tree_tighten(t);
+        for (i = 0; i < t->moved; ++i)
+            if (ga2d__tree_strayed(t, t->units[i])) ga2d__tree_move(t, t->units[i], t->nodes[t->units[i]].box);
+        t->moved = 0;
     }
     if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
     for (k = 0, n = 0; k < w->move_count; ++k) {
