@@ -4,8 +4,9 @@
    peers.mk builds from that tree into build/; nothing of Box2D v3 is in
    this project.  Its world is b2DefaultWorldDef() with the scene's gravity
    and sleep switch and one worker (no task system: the step runs on the
-   calling thread), stepped with 4 substeps as its benchmark does; shapes
-   are made through its public API only. */
+   calling thread), or more on its built-in scheduler (use_workers),
+   stepped with 4 substeps as its benchmark does; shapes are made through
+   its public API only. */
 #include "box2d/box2d.h"
 #include "ga2d_peer.h"
 #include <stdio.h>
@@ -34,6 +35,10 @@ static b2BodyType b2v3_peer__type(int type)
     return type == 2 ? b2_dynamicBody : type == 1 ? b2_kinematicBody : b2_staticBody;
 }
 
+static int b2v3_peer__workers = 1;
+
+void b2v3_peer_use_workers(int workers) { b2v3_peer__workers = workers > 1 ? workers : 1; }
+
 b2v3_peer *b2v3_peer_create(double gx, double gy, int sleep, int capacity)
 {
     b2WorldDef wd = b2DefaultWorldDef();
@@ -41,7 +46,7 @@ b2v3_peer *b2v3_peer_create(double gx, double gy, int sleep, int capacity)
     if (!p) return NULL;
     wd.gravity = b2v3_peer__vec(gx, gy);
     wd.enableSleep = sleep != 0;
-    wd.workerCount = 1;
+    wd.workerCount = b2v3_peer__workers; /* more than one: its own scheduler's threads */
     p->world = b2CreateWorld(&wd);
     p->ids = (b2BodyId *)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof *p->ids);
     p->capacity = capacity;
@@ -224,11 +229,11 @@ int b2v3_peer_real_is_double(void)
 const char *b2v3_peer_settings(void)
 {
     /* read back from the defaults, so the line cannot go stale */
-    static char line[240];
+    static char line[300];
     b2WorldDef d = b2DefaultWorldDef();
     b2Version v = b2GetVersion();
     snprintf(line, sizeof line,
-             "Box2D %d.%d.%d, b2DefaultWorldDef(): %d substeps, 1 worker, contacts %g Hz, damping ratio %g, "
+             "Box2D %d.%d.%d, b2DefaultWorldDef(): %d substeps, 1 worker (-2w: 2, its scheduler), contacts %g Hz, damping ratio %g, "
              "continuous %s",
              v.major, v.minor, v.revision, B2V3_PEER_SUBSTEPS, (double)d.contactHertz, (double)d.contactDampingRatio,
              d.enableContinuous ? "on" : "off");

@@ -544,6 +544,24 @@ static World *build_ga2d_avx2(const bench_scene &s) { return new CWorld<ga2d_pee
 #if PEERS_B2V3
 static World *build_b2v3(const bench_scene &s) { return new CWorld<b2v3_peer>(s, kB2v3); }
 #endif
+/* The same engines on 2 workers: ga2d on examples/task_pool.h's pool, Box2D
+   v3 on its own scheduler (the worlds made here only) */
+static World *build_ga2d_2w(const bench_scene &s)
+{
+    ga2d_peer_use_workers(2);
+    World *w = new CWorld<ga2d_peer>(s, kGa2dGeneric);
+    ga2d_peer_use_workers(1);
+    return w;
+}
+#if PEERS_B2V3
+static World *build_b2v3_2w(const bench_scene &s)
+{
+    b2v3_peer_use_workers(2);
+    World *w = new CWorld<b2v3_peer>(s, kB2v3);
+    b2v3_peer_use_workers(1);
+    return w;
+}
+#endif
 
 static bool builds_all(const bench_scene &) { return true; }
 
@@ -554,13 +572,19 @@ struct Engine {
 };
 
 /* ga2d first (its median is every ratio's numerator); Box2D v3 where
-   B2V3_SRC gave its sources; ga2d's AVX2 build, where there is one, last,
-   with its own ratios */
+   B2V3_SRC gave its sources; ga2d on 2 workers, and Box2D v3 on 2 where
+   it is built (each engine's own speed-up from a second core, measured in
+   the same run); ga2d's AVX2 build, where there is one, last, with its own
+   ratios */
 static const Engine kEngines[] = {{"ga2d", build_ga2d, builds_all},
                                   {"Box2D", build<Box2dWorld>, builds_all},
                                   {"Chipmunk", build<ChipmunkWorld>, chipmunk_builds},
 #if PEERS_B2V3
                                   {"Box2D-v3", build_b2v3, builds_all},
+#endif
+                                  {"ga2d-2w", build_ga2d_2w, builds_all},
+#if PEERS_B2V3
+                                  {"Box2D-v3-2w", build_b2v3_2w, builds_all},
 #endif
 #if PEERS_AVX2
                                   {"ga2d-avx2", build_ga2d_avx2, builds_all}
@@ -570,6 +594,8 @@ static const int kEngineCount = (int)(sizeof kEngines / sizeof kEngines[0]);
 static const int kAvx2 = PEERS_AVX2 ? kEngineCount - 1 : -1; /* ga2d-avx2's index, -1 when not built */
 static const int kBox2d = 1;                                  /* Box2D 2.4.1's index */
 static const int kV3 = PEERS_B2V3 ? 3 : -1;                   /* Box2D v3's index, -1 when not built */
+static const int kGa2d2w = PEERS_B2V3 ? 4 : 3;                /* ga2d on 2 workers */
+static const int kV32w = PEERS_B2V3 ? 5 : -1;                 /* Box2D v3 on 2 workers, -1 when not built */
 
 /* ------------------------------------------------------- accuracy figures */
 /* The scene's boxes (their nominal size, no engine's skin) placed by an
@@ -1049,6 +1075,8 @@ static void print_header(int runs)
            "            (-I its include and src); shapes, chains and joints through its public API\n",
            b2v3_peer_settings(), PEERS_B2V3_SRC, b2v3_peer_compiler(), PEERS_B2V3_CFLAGS);
 #endif
+    printf("  ga2d-2w, Box2D-v3-2w: the same engines on 2 workers (ga2d: examples/task_pool.h's pool; Box2D v3:\n"
+           "            its built-in scheduler), each engine's speed-up from a second core in the same run\n");
     printf("figures, measured alike in every engine from its poses and velocities:\n"
            "  drift: the top box's distance from its start at the end (m); Box2D's boxes rest on their skins,\n"
            "    so its stacks stand about 0.013 m per layer higher than they were built\n"
@@ -1142,7 +1170,7 @@ int main(int argc, char **argv)
                 fig[e].push_back(res.figure);
                 check[e] = res.check;
             }
-        printf("  %-14s %-9s %12s %8s %10s %12s%s\n", "scene", "engine", "ms/step med", "min", "ga2d/peer", "figure",
+        printf("  %-14s %-11s %12s %8s %10s %12s%s\n", "scene", "engine", "ms/step med", "min", "ga2d/peer", "figure",
                kAvx2 >= 0 ? "  ga2d-avx2/peer" : "");
         double ga2d_med = ms[0].empty() ? NAN : median(ms[0]);
         double avx2_med = kAvx2 < 0 || ms[kAvx2].empty() ? NAN : median(ms[kAvx2]);
@@ -1150,7 +1178,7 @@ int main(int argc, char **argv)
         std::string notes;
         for (int e = 0; e < kEngineCount; ++e) {
             if (left_out[e]) {
-                printf("  %-14s %-9s left out: the runner builds it boxes and centred circles with pins only\n", s.name,
+                printf("  %-14s %-11s left out: the runner builds it boxes and centred circles with pins only\n", s.name,
                        kEngines[e].name);
                 if (csv)
                     fprintf(csv, "%s,%s,nan,nan,\"%s\",nan,nan,nan,nan\n", s.name, kEngines[e].name,
@@ -1158,29 +1186,30 @@ int main(int argc, char **argv)
                 continue;
             }
             if (!failed[e].empty()) {
-                printf("  %-14s %-9s FAILED: %s\n", s.name, kEngines[e].name, failed[e].c_str());
+                printf("  %-14s %-11s FAILED: %s\n", s.name, kEngines[e].name, failed[e].c_str());
                 ++failures;
                 continue;
             }
             if (!blown[e].empty()) {
-                printf("  %-14s %-9s %s\n", s.name, kEngines[e].name, blown[e].c_str());
+                printf("  %-14s %-11s %s\n", s.name, kEngines[e].name, blown[e].c_str());
                 if (csv)
                     fprintf(csv, "%s,%s,nan,nan,\"%s\",nan,nan,nan,nan\n", s.name, kEngines[e].name,
                             bench_scene_figure_name(&s));
                 continue;
             }
             double med = median(ms[e]), lo = minimum(ms[e]), f = median(fig[e]);
-            double ratio = ga2d_med / med;
-            bool own = e == 0 || e == kAvx2; /* a ga2d build: no ratio against itself */
+            /* Box2D v3 on 2 workers is set against ga2d on 2 */
+            double ratio = (e == kV32w && !ms[kGa2d2w].empty() ? median(ms[kGa2d2w]) : ga2d_med) / med;
+            bool own = e == 0 || e == kAvx2 || e == kGa2d2w; /* a ga2d build: no ratio against itself */
             char ratio_text[32], fig_text[32], avx2_text[32] = "";
             snprintf(ratio_text, sizeof ratio_text, own ? "-" : "%.2f", ratio);
             if (kAvx2 >= 0 && own) snprintf(avx2_text, sizeof avx2_text, "  %15s", "-");
             if (kAvx2 >= 0 && !own) snprintf(avx2_text, sizeof avx2_text, "  %15.2f", avx2_med / med);
             /* metres to the tenth of a millimetre; the momentum error is relative */
             snprintf(fig_text, sizeof fig_text, s.figure == BENCH_FIG_MOMENTUM ? "%.2e" : "%.4f", f);
-            printf("  %-14s %-9s %12.3f %8.3f %10s %12s%s\n", s.name, kEngines[e].name, med, lo, ratio_text, fig_text,
+            printf("  %-14s %-11s %12.3f %8.3f %10s %12s%s\n", s.name, kEngines[e].name, med, lo, ratio_text, fig_text,
                    avx2_text);
-            notes += "    " + std::string(kEngines[e].name) + std::string(10 - strlen(kEngines[e].name), ' ') + check[e] + "\n";
+            notes += "    " + std::string(kEngines[e].name) + std::string(13 - strlen(kEngines[e].name), ' ') + check[e] + "\n";
             /* the figure is the median over runs; say so when runs disagree */
             double fmin = minimum(fig[e]), fmax = *std::max_element(fig[e].begin(), fig[e].end());
             if (fmax - fmin > 1e-9 + 1e-6 * std::fabs(fmax)) {
@@ -1197,6 +1226,14 @@ int main(int argc, char **argv)
             double b2_med = ms[kBox2d].empty() ? NAN : median(ms[kBox2d]);
             printf("  %-14s ratios of medians: ga2d/v3 %.2f, v3/2.4.1 %.2f, ga2d/2.4.1 %.2f\n", s.name, ga2d_med / v3_med,
                    v3_med / b2_med, ga2d_med / b2_med);
+        }
+        {
+            /* each engine's 1-worker time over its 2-worker time, from the medians */
+            double w2 = ms[kGa2d2w].empty() ? NAN : median(ms[kGa2d2w]);
+            double v3w2 = kV32w < 0 || ms[kV32w].empty() ? NAN : median(ms[kV32w]);
+            printf("  %-14s 2 workers: ga2d %.2fx", s.name, ga2d_med / w2);
+            if (kV32w >= 0) printf(", Box2D v3 %.2fx", v3_med / v3w2);
+            printf(" the speed of 1 (1-worker median / 2-worker median)\n");
         }
         printf("  check (last run):\n%s", notes.c_str());
         fflush(stdout);

@@ -1,10 +1,16 @@
 /* ga2d_peer.c - the ga2d side of `make bench-peers` (see ga2d_peer.h).
    Built as C99 with the library's implementation in this unit only; built
    a second time with -mavx2 -DGA2D_PEER_AVX2 -DGA2D_STATIC (the library's
-   functions private to it), its own then named ga2d_peer_avx2_*. */
+   functions private to it), its own then named ga2d_peer_avx2_*.  Worlds
+   of more than one worker step on a task_pool (examples/task_pool.h,
+   whose code the generic build holds for both). */
 #define GA2D_IMPLEMENTATION
 #include "ga2d_physics.h"
 #include "ga2d_peer.h"
+#ifndef GA2D_PEER_AVX2
+#define TASK_POOL_IMPLEMENTATION
+#endif
+#include "examples/task_pool.h"
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -16,9 +22,14 @@
 
 struct ga2d_peer {
     ga2d_world *world;
+    task_pool *pool; /* more than one worker: theirs */
     ga2d_body_id *ids;
     int count, capacity;
 };
+
+static int ga2d_peer__workers = 1;
+
+void GA2D_PEER_FN(use_workers)(int workers) { ga2d_peer__workers = workers > 1 ? workers : 1; }
 
 ga2d_peer *GA2D_PEER_FN(create)(double gx, double gy, int sleep, int capacity)
 {
@@ -27,6 +38,17 @@ ga2d_peer *GA2D_PEER_FN(create)(double gx, double gy, int sleep, int capacity)
     if (!p) return NULL;
     wd.gravity = ga2d_vec_make((ga2d_real)gx, (ga2d_real)gy);
     wd.enable_sleep = sleep != 0;
+    if (ga2d_peer__workers > 1) {
+        p->pool = task_pool_create(ga2d_peer__workers);
+        if (!p->pool) {
+            free(p);
+            return NULL;
+        }
+        wd.worker_count = task_pool_workers(p->pool);
+        wd.enqueue_task = task_pool_enqueue;
+        wd.finish_task = task_pool_finish;
+        wd.user_task_context = p->pool;
+    }
     p->world = ga2d_world_create(&wd);
     p->ids = (ga2d_body_id *)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof *p->ids);
     p->capacity = capacity;
@@ -196,6 +218,7 @@ void GA2D_PEER_FN(destroy)(ga2d_peer *p)
 {
     if (!p) return;
     if (p->world) ga2d_world_destroy(p->world);
+    task_pool_destroy(p->pool); /* after the world: no step runs on it now */
     free(p->ids);
     free(p);
 }

@@ -22,8 +22,12 @@ typedef struct ga2d_peer ga2d_peer;
    compiled with -mavx2 (GA2D_PEER_AVX2 defined; 8 float lanes), which the
    Makefile adds where the CPU has AVX2, and b2v3_peer_ (type b2v3_peer)
    for Box2D v3.  Per function:
+     use_workers   the worker count of the worlds created from now on (1,
+                   the default: the step runs on the calling thread; more:
+                   ga2d on a task_pool of examples/task_pool.h, Box2D v3 on
+                   its built-in scheduler);
      create        a world from the engine's default world def with this
-                   gravity and sleep switch (Box2D v3: one worker), room
+                   gravity and sleep switch and the worker count set, room
                    for `capacity` bodies; NULL on failure;
      add_box       a box body of half-extents hx, hy centred at (x, y),
                    restitution 0; its index, or -1 when the engine refuses it;
@@ -50,6 +54,7 @@ typedef struct ga2d_peer ga2d_peer;
      real_is_double  1 under GA2D_DOUBLE, else 0 (float);
      settings      one line: the world settings used. */
 #define GA2D_PEER_FUNCTIONS(P, T)                                                                                \
+    void P##use_workers(int workers);                                                                            \
     T *P##create(double gx, double gy, int sleep, int capacity);                                                 \
     int P##add_box(T *p, int type, double x, double y, double hx, double hy, double vx, double vy, double w,      \
                    double density, double friction, int asleep);                                                 \
