@@ -203,7 +203,9 @@
    manifold is recomputed every step, unless the pair touches and has moved
    by under half a slop since its manifold was made: then that manifold is
    carried along with the bodies (counters.manifolds_carried), as the
-   solver carries it between substeps; ga2d_world_get_contacts lists the
+   solver carries it between substeps (a round side's by its core, so a
+   disc's point stays under its centre; two discs are collided anew);
+   ga2d_world_get_contacts lists the
    touching ones and ga2d_world_contact_events which began and ended
    touching in the last step.  All tolerances scale with
    ga2d_world_def.length_units_per_meter.
@@ -5690,6 +5692,46 @@ static int ga2d__cmp_u64(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* ga2d__reuse_manifold for a pair with a round side (radii ra, rb), by
+   its cores: t is B's motion in A's frame since the manifold was held,
+   eps how far B's core point may have moved.  0: collide anew. */
+static int ga2d__reuse_round(const ga2d_world *w, ga2d__contact *c, ga2d_transform t, ga2d_transform xa, ga2d_vec d_ab,
+                             ga2d_real eps)
+{
+    const ga2d__held *hd = &c->held;
+    const ga2d__shape *sa = &w->shapes[c->shape_a], *sb = &w->shapes[c->shape_b];
+    ga2d_real ra = sa->radius, rb = sb->radius;
+    ga2d_vec n = hd->normal, core_a[2], core_b[2];
+    ga2d_manifold *m = &c->manifold;
+    int disc_a = sa->geom.type == GA2D_SHAPE_CIRCLE, disc_b = sb->geom.type == GA2D_SHAPE_CIRCLE, k;
+    /* the line the point lies on: A's core's (1), B's (2) or halfway (0) */
+    int line = disc_a != disc_b ? (disc_a ? 1 : 2) : (ra == 0) != (rb == 0) ? (ra != 0 ? 1 : 2) : 0;
+    if (disc_a && disc_b) return 0;
+    for (k = 0; k < m->count; ++k) {
+        ga2d_real half = hd->separation[k] / 2;
+        ga2d_vec held_b = ga2d_vec_add(hd->point[k], ga2d_vec_scale(n, rb + half)), moved;
+        core_a[k] = ga2d_vec_sub(hd->point[k], ga2d_vec_scale(n, ra + half));
+        core_b[k] = ga2d_transform_apply(t, held_b);
+        moved = ga2d_vec_sub(core_b[k], held_b);
+        if (!(GA2D__FABS(moved.x) <= eps && GA2D__FABS(moved.y) <= eps)) return 0;
+    }
+    m->normal = ga2d_rotate(xa.q, n);
+    for (k = 0; k < m->count; ++k) {
+        ga2d_manifold_point *p = &m->points[k];
+        ga2d_real sep = ga2d_dot(ga2d_vec_sub(core_b[k], core_a[k]), n) - ra - rb;
+        /* midway between the surfaces, on the chosen core's line */
+        ga2d_vec from_a = ga2d_vec_add(core_a[k], ga2d_vec_scale(n, ra + sep / 2));
+        ga2d_vec from_b = ga2d_vec_sub(core_b[k], ga2d_vec_scale(n, rb + sep / 2));
+        ga2d_vec local = line == 1 ? from_a : line == 2 ? from_b : ga2d_vec_scale(ga2d_vec_add(from_a, from_b), GA2D__R(0.5));
+        p->anchor_a = ga2d_rotate(xa.q, local);
+        p->anchor_b = ga2d_vec_sub(p->anchor_a, d_ab);
+        p->point = ga2d_vec_add(xa.p, p->anchor_a);
+        p->separation = sep;
+        p->persisted = 1;
+    }
+    return 1;
+}
+
 /* A touching pair that has hardly moved since its manifold was made gets
    that manifold again, carried along: each point's B side moves with B
    (t: B's motion in A's frame since then), its separation grows by that
@@ -5702,8 +5744,18 @@ static int ga2d__cmp_u64(const void *x, const void *y)
    speculative margin (4 slop), so it cannot have come into touch, and a
    point clipped at a face's end is off by at most that half slop along
    the face.  A resting pile then skips the separating-axis search for
-   nearly every pair.  Returns 0 when the
-   pair moved too far and must be collided anew. */
+   nearly every pair.  A pair with a round side is carried by its cores
+   instead: the points where the normal through the point meets each
+   core (A's fixed in A's frame, B's moved with B), the separation their
+   distance along the normal less both radii, and the point midway between
+   the surfaces, on the normal's line through one side's core: a disc's
+   (its centre: exact however it turns), else the round side's, else
+   halfway between the two lines.  Carried by the point itself, a stopped
+   disc's point lagged its bottom as it turned, and the normal impulse's
+   moment crept it forward; through its centre the point stays under it,
+   as the solver keeps it within a step (ga2d__point_now).  Two discs are
+   collided anew (as cheap as carried).  Returns 0 when the pair moved too
+   far and must be collided anew. */
 static int ga2d__reuse_manifold(const ga2d_world *w, ga2d__contact *c, const ga2d__body *a, const ga2d__body *b,
                                 ga2d_transform xa, ga2d_transform xb)
 {
@@ -5714,10 +5766,8 @@ static int ga2d__reuse_manifold(const ga2d_world *w, ga2d__contact *c, const ga2
     ga2d_manifold *m = &c->manifold;
     int k;
     if (!c->touching || !(t.q.c > 0) || !(GA2D__FABS(t.q.s) * reach <= eps)) return 0;
-    /* a round side rolls: where the surfaces meet does not move with the
-       bodies (carried along, a stopped disc's point lagged its bottom and
-       the normal impulse's moment crept it forward) */
-    if (c->extras && (w->shapes[c->shape_a].radius != 0 || w->shapes[c->shape_b].radius != 0)) return 0;
+    if (c->extras && (w->shapes[c->shape_a].radius != 0 || w->shapes[c->shape_b].radius != 0))
+        return ga2d__reuse_round(w, c, t, xa, d_ab, eps);
     for (k = 0; k < m->count; ++k) {
         moved[k] = ga2d_vec_sub(ga2d_transform_apply(t, hd->point[k]), hd->point[k]);
         if (!(GA2D__FABS(moved[k].x) <= eps && GA2D__FABS(moved[k].y) <= eps)) return 0;

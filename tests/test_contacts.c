@@ -634,6 +634,184 @@ static void carried_manifolds(void)
     ga2d_world_destroy(w);
 }
 
+/* The shapes of carried_round_pairs, each centred on its body's origin:
+   a disc (radius 0.3), a capsule lying along x (cores +-0.3, radius
+   0.15), a box 0.6 x 0.4 rounded by 0.05, and the same box sharp; *half:
+   how far it reaches up and down. */
+static ga2d_geometry round_pair_shape(int kind, double *half)
+{
+    ga2d_geometry g;
+    memset(&g, 0, sizeof g);
+    if (kind == 0) {
+        g.type = GA2D_SHAPE_CIRCLE;
+        g.as.circle.radius = (ga2d_real)0.3;
+        *half = 0.3;
+    } else if (kind == 1) {
+        g.type = GA2D_SHAPE_CAPSULE;
+        g.as.capsule.center1 = ga2d_vec_make((ga2d_real)-0.3, 0);
+        g.as.capsule.center2 = ga2d_vec_make((ga2d_real)0.3, 0);
+        g.as.capsule.radius = (ga2d_real)0.15;
+        *half = 0.15;
+    } else {
+        g.type = GA2D_SHAPE_POLYGON;
+        g.as.polygon = ga2d_polygon_box((ga2d_real)0.3, (ga2d_real)0.2);
+        if (kind == 2) g.as.polygon.radius = (ga2d_real)0.05;
+        *half = kind == 2 ? 0.25 : 0.2;
+    }
+    return g;
+}
+
+/* A pair with a round side is carried by its cores (the points where
+   the normal meets them, each moved with its body), every pair of a
+   disc, a lying capsule, a rounded box and a sharp box in both roles but
+   two discs (collided anew) and two sharp boxes (carried_manifolds): B
+   rests on A (static, the lower one) 0.1 slop apart, no gravity; after
+   a first step B is placed 0.2 slop right and 0.1 slop up, turned by
+   2e-4 rad, at rest, and the step carries the manifold (the counter says
+   so, and two discs say 0).  It agrees with a fresh collision of the
+   placed shapes:
+   - the normal within the turn: the held normal is A's frame's, the
+     fresh one may be B's face's or the line to its turned core point;
+   - each separation within the lateral offset of the cores (at most 0.2
+     slop + 0.36 turn, the box corner's lever 0.36 m) times the turn,
+     plus the 0.6 m between the cores times turn^2 / 2 (the normal's
+     tilt, to first and second order), and rounding at 1 m (16 eps);
+   - each point within how far an incident feature moved along the face
+     and half the separation change along the normal (0.2 slop + 0.36
+     turn + 0.05 slop): the point lies on one core's line, which may be
+     the reference side's, left where it was. */
+static void carried_round_pairs(void)
+{
+    const double slop = GA2D_LINEAR_SLOP, turn = 2e-4;
+    const double tol_normal = turn + 16 * REAL_EPS;
+    const double tol_sep = (0.2 * slop + 0.36 * turn) * turn + 0.6 * turn * turn / 2 + 16 * REAL_EPS;
+    const double tol_point = 0.25 * slop + 0.36 * turn + 16 * REAL_EPS;
+    int ka, kb, carried_pairs = 0;
+    for (ka = 0; ka < 4; ++ka)
+        for (kb = 0; kb < 4; ++kb) {
+            ga2d_world_def wd = ga2d_default_world_def();
+            ga2d_body_def bd = ga2d_default_body_def();
+            ga2d_shape_def sd = ga2d_default_shape_def();
+            ga2d_geometry ga, gb;
+            ga2d_world *w;
+            ga2d_body_id a, b;
+            ga2d_shape_id sa, sb;
+            ga2d_contact_data cd;
+            ga2d_manifold fresh;
+            double ha, hb, y;
+            int k, n;
+            if (ka == 3 && kb == 3) continue;
+            ga = round_pair_shape(ka, &ha);
+            gb = round_pair_shape(kb, &hb);
+            y = ha + hb + 0.1 * slop;
+            wd.gravity = ga2d_vec_make(0, 0);
+            w = ga2d_world_create(&wd);
+            bd.polygon.count = 0;
+            a = ga2d_body_create(w, &bd);
+            bd.type = GA2D_BODY_DYNAMIC;
+            bd.position = ga2d_vec_make(0, (ga2d_real)y);
+            b = ga2d_body_create(w, &bd);
+            CHECK_RESULT(ga2d_shape_create_checked(w, a, &sd, &ga, &sa), GA2D_OK);
+            CHECK_RESULT(ga2d_shape_create_checked(w, b, &sd, &gb, &sb), GA2D_OK);
+            CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+            CHECK(ga2d_world_get_counters(w).manifolds_carried == 0);
+            ga2d_body_set_transform(w, b, ga2d_vec_make((ga2d_real)(0.2 * slop), (ga2d_real)(y + 0.1 * slop)),
+                                    ga2d_rotor_from_angle((ga2d_real)turn));
+            ga2d_body_set_velocity(w, b, ga2d_vec_make(0, 0));
+            ga2d_body_set_angular_velocity(w, b, 0);
+            n = ga2d_collide_shapes(&ga, ga2d_body_transform(w, a), &gb, ga2d_body_transform(w, b), &fresh);
+            CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+            CHECK(ga2d_world_get_contacts(w, &cd, 1) == 1);
+            if (ka == 0 && kb == 0) { /* two discs: collided anew */
+                CHECK(ga2d_world_get_counters(w).manifolds_carried == 0);
+                ga2d_world_destroy(w);
+                continue;
+            }
+            CHECK(ga2d_world_get_counters(w).manifolds_carried == 1);
+            carried_pairs += ga2d_world_get_counters(w).manifolds_carried == 1;
+            CHECK(cd.manifold.count == n);
+            CHECK_NEAR(cd.manifold.normal.x, fresh.normal.x, tol_normal);
+            CHECK_NEAR(cd.manifold.normal.y, fresh.normal.y, tol_normal);
+            for (k = 0; k < n && k < cd.manifold.count; ++k) {
+                const ga2d_manifold_point *c = &cd.manifold.points[k], *f = &fresh.points[k];
+                CHECK(c->persisted);
+                CHECK_NEAR(c->separation, f->separation, tol_sep);
+                CHECK_NEAR(c->point.x, f->point.x, tol_point);
+                CHECK_NEAR(c->point.y, f->point.y, tol_point);
+            }
+            if (kb == 0) {
+                /* a disc turned where it is, by 3e-3 rad (its 0.6 m reach
+                   times that is under half a slop): carried, its point
+                   stays under its centre, up to rounding at 1 m (carried
+                   by the point, it would turn 0.3 m x 3e-3 = 0.9 mm away,
+                   and the normal impulse's moment would roll the disc) */
+                ga2d_body_set_transform(w, b, ga2d_vec_make(0, (ga2d_real)y), ga2d_rotor_from_angle((ga2d_real)3e-3));
+                CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+                CHECK(ga2d_world_get_counters(w).manifolds_carried == 1);
+                CHECK(ga2d_world_get_contacts(w, &cd, 1) == 1);
+                CHECK_NEAR(cd.manifold.points[0].point.x, ga2d_body_position(w, b).x, 16 * REAL_EPS);
+            }
+            ga2d_world_destroy(w);
+        }
+    CHECK(carried_pairs == 14);
+}
+
+/* A disc at rest on a static box, sleep off, spun by w0 where it stands:
+   friction turns the spin into rolling, and angular momentum about the
+   contact point, I w0 = (I + m r^2) v / r, leaves it rolling at v = w0 r
+   / 3 (I = m r^2 / 2), for ever: its contact, carried in most steps (the
+   turn per step, v/r dt, is under the carry's bound), must not add to
+   that.  Carried by the point, not the disc's centre, the point trailed
+   the disc and the normal impulse's moment sped it up without end (to 15
+   times v here).  Within the sink of the soft contact, g / (2 pi f)^2 at
+   f Hz, which shortens the lever r: twice that over r, and rounding. */
+static void carried_disc_rolls_true(void)
+{
+    const double r = 0.3, spins[2] = {-0.05, 0.01};
+    int k;
+    for (k = 0; k < 2; ++k) {
+        ga2d_world_def wd = ga2d_default_world_def();
+        ga2d_body_def bd = ga2d_default_body_def();
+        ga2d_shape_def sd = ga2d_default_shape_def();
+        ga2d_geometry g;
+        ga2d_world *w;
+        ga2d_body_id disc;
+        ga2d_shape_id shape;
+        const double pi = 3.14159265358979323846, dt = 1.0 / 60;
+        double v, sink, tol, worst = 0;
+        int i, carried = 0;
+        wd.enable_sleep = 0;
+        w = ga2d_world_create(&wd);
+        sink = 10 / ((2 * pi * (double)wd.contact_hertz) * (2 * pi * (double)wd.contact_hertz));
+        bd.position = ga2d_vec_make(0, (ga2d_real)-0.5);
+        bd.polygon = ga2d_polygon_box(5, (ga2d_real)0.5);
+        ga2d_body_create(w, &bd);
+        bd.type = GA2D_BODY_DYNAMIC;
+        bd.position = ga2d_vec_make(0, (ga2d_real)r);
+        bd.polygon.count = 0;
+        disc = ga2d_body_create(w, &bd);
+        memset(&g, 0, sizeof g);
+        g.type = GA2D_SHAPE_CIRCLE;
+        g.as.circle.radius = (ga2d_real)r;
+        CHECK_RESULT(ga2d_shape_create_checked(w, disc, &sd, &g, &shape), GA2D_OK);
+        for (i = 0; i < 120; ++i) CHECK_RESULT(ga2d_world_step(w, (ga2d_real)dt), GA2D_OK);
+        CHECK_RESULT(ga2d_body_set_angular_velocity(w, disc, (ga2d_real)spins[k]), GA2D_OK);
+        v = -spins[k] * r / 3;
+        tol = fabs(v) * 2 * sink / r + 16 * REAL_EPS;
+        for (i = 0; i < 1200; ++i) {
+            double off;
+            CHECK_RESULT(ga2d_world_step(w, (ga2d_real)dt), GA2D_OK);
+            carried += ga2d_world_get_counters(w).manifolds_carried == 1;
+            off = fabs((double)ga2d_body_velocity(w, disc).x - v);
+            if (i >= 600 && off > worst) worst = off;
+        }
+        CHECK(carried >= 600);
+        CHECK(worst <= tol);
+        if (worst > tol) printf("  spin %g: rolls at %g off %g (bound %g)\n", spins[k], v, worst, tol);
+        ga2d_world_destroy(w);
+    }
+}
+
 void suite_contacts(void)
 {
     test_run("contacts: pair set equals O(n^2) check, 1000 bodies x 200 steps", pairs_match_brute_force);
@@ -646,4 +824,6 @@ void suite_contacts(void)
     test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory);
     test_run("contacts: debug draw", debug_draw);
     test_run("contacts: a resting pair's manifold is carried, and remade past half a slop", carried_manifolds);
+    test_run("contacts: a round pair is carried by its cores, every pair in both roles", carried_round_pairs);
+    test_run("contacts: a spun disc on a carried contact rolls at w0 r / 3, no faster", carried_disc_rolls_true);
 }
