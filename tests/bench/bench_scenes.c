@@ -109,7 +109,7 @@ static void directory_of(const char *path, char *dir, size_t size)
 static const char *const SCENES[] = {
     "large_pyramid", "many_pyramids", "smash", "tumbler", "pyramid20", "stack10",
 #ifndef BENCH_BOXES_ONLY
-    "rain",          "mixed_pile",    "joint_grid",    "spinner",
+    "rain",          "mixed_pile",    "mixed_bin",     "joint_grid",    "spinner",
 #endif
 };
 #define SCENE_COUNT ((int)(sizeof SCENES / sizeof SCENES[0]))

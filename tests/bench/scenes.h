@@ -15,8 +15,11 @@
    > 0: circles, capsules, convex polygons with an optional rounding, in
    the body's frame; s.shapes), or has neither (hx = hy = 0: a chain's
    body).  The first six scenes are boxes only; the peer runner builds
-   those, joint_grid (bodies of one circle) and spinner.  Two scenes use the shapes, and bodies
-   that come and go: a body is made just before step `birth` and, when
+   those, mixed_bin, joint_grid (bodies of one circle) and spinner.
+     mixed_bin   100 circles, capsules, boxes and rounded polygons
+                 dropped together into a 10 m wide bin (test_settle's
+                 pile, all there from the start): a small mixed scene.
+   Two scenes use the shapes, and bodies that come and go: a body is made just before step `birth` and, when
    `death` > 0, destroyed just before step `death`.  Bodies are listed in
    order of birth, so a driver walks them with one cursor:
      rain        Box2D v3's rain: five floors of 0.5 m ground boxes, and
@@ -441,48 +444,89 @@ static double bench__uniform(unsigned long *r, double lo, double hi)
     return lo + (hi - lo) * (double)(*r >> 8) / 16777216.0;
 }
 
+/* The floor (top face y = 0) and two walls h high, w apart inside, of a
+   pile's open box: static boxes 0.5 m thick. */
+static void bench__bin(bench_scene *s, double w, double h)
+{
+    bench__push(s, BENCH_STATIC, 0, -0.25, 0.5 * w + 0.5, 0.25);
+    bench__push(s, BENCH_STATIC, -0.5 * w - 0.25, 0.5 * h, 0.25, 0.5 * h);
+    bench__push(s, BENCH_STATIC, 0.5 * w + 0.25, 0.5 * h, 0.25, 0.5 * h);
+}
+
+/* One body of a pile at (x, y), its kind, size and angle drawn from *r in
+   mixed_pile's order (x's own draw comes before, from the caller): its
+   index, or -1 when memory ran out. */
+static int bench__pile_body(bench_scene *s, unsigned long *r, double x, double y)
+{
+    const double pi = 3.14159265358979323846;
+    int kind = (int)bench__uniform(r, 0, 4), k, v;
+    bench_shape *sh;
+    if (kind == 2) { /* a plain box: the same body as the box scenes' */
+        double hx = bench__uniform(r, 0.15, 0.3), hy = bench__uniform(r, 0.15, 0.3); /* in this order */
+        k = bench__push(s, BENCH_DYNAMIC, x, y, hx, hy);
+    } else {
+        k = bench__push(s, BENCH_DYNAMIC, x, y, 0, 0);
+        if (kind == 0) {
+            sh = bench__shape(s, k, BENCH_SHAPE_CIRCLE);
+            if (sh) sh->radius = bench__uniform(r, 0.2, 0.35);
+        } else if (kind == 1) {
+            double half = bench__uniform(r, 0.12, 0.25);
+            bench__shape_capsule(s, k, -half, 0, half, 0, bench__uniform(r, 0.1, 0.18));
+        } else {
+            int n = 3 + (int)bench__uniform(r, 0, 6);
+            double rounding = 0.04, core = bench__uniform(r, 0.2, 0.35) - rounding;
+            sh = bench__shape(s, k, BENCH_SHAPE_POLYGON);
+            if (sh) {
+                sh->count = n;
+                sh->radius = rounding;
+                for (v = 0; v < n; ++v) {
+                    sh->px[v] = core * cos(2 * pi * v / n);
+                    sh->py[v] = core * sin(2 * pi * v / n);
+                }
+            }
+        }
+    }
+    if (k >= 0) s->bodies[k].angle = bench__uniform(r, -pi, pi);
+    return k;
+}
+
 static void bench__mixed_pile(bench_scene *s)
 {
-    const double pi = 3.14159265358979323846, W = BENCH_PILE_HALF_WIDTH, H = BENCH_PILE_WALL;
+    const double W = BENCH_PILE_HALF_WIDTH;
     unsigned long r = 12345;
-    int wave, j, v;
-    bench__push(s, BENCH_STATIC, 0, -0.25, W + 0.5, 0.25);
-    bench__push(s, BENCH_STATIC, -W - 0.25, 0.5 * H, 0.25, 0.5 * H);
-    bench__push(s, BENCH_STATIC, W + 0.25, 0.5 * H, 0.25, 0.5 * H);
+    int wave, j;
+    bench__bin(s, 2 * W, BENCH_PILE_WALL);
     for (wave = 0; wave < BENCH_PILE_WAVES; ++wave)
         for (j = 0; j < BENCH_PILE_PER_WAVE; ++j) {
             double x = -W + 0.5 + j + bench__uniform(&r, -0.05, 0.05);
-            int kind = (int)bench__uniform(&r, 0, 4), k;
-            bench_shape *sh;
-            if (kind == 2) { /* a plain box: the same body as the box scenes' */
-                double hx = bench__uniform(&r, 0.15, 0.3), hy = bench__uniform(&r, 0.15, 0.3); /* in this order */
-                k = bench__push(s, BENCH_DYNAMIC, x, BENCH_PILE_START, hx, hy);
-            } else {
-                k = bench__push(s, BENCH_DYNAMIC, x, BENCH_PILE_START, 0, 0);
-                if (kind == 0) {
-                    sh = bench__shape(s, k, BENCH_SHAPE_CIRCLE);
-                    if (sh) sh->radius = bench__uniform(&r, 0.2, 0.35);
-                } else if (kind == 1) {
-                    double half = bench__uniform(&r, 0.12, 0.25);
-                    bench__shape_capsule(s, k, -half, 0, half, 0, bench__uniform(&r, 0.1, 0.18));
-                } else {
-                    int n = 3 + (int)bench__uniform(&r, 0, 6);
-                    double rounding = 0.04, core = bench__uniform(&r, 0.2, 0.35) - rounding;
-                    sh = bench__shape(s, k, BENCH_SHAPE_POLYGON);
-                    if (sh) {
-                        sh->count = n;
-                        sh->radius = rounding;
-                        for (v = 0; v < n; ++v) {
-                            sh->px[v] = core * cos(2 * pi * v / n);
-                            sh->py[v] = core * sin(2 * pi * v / n);
-                        }
-                    }
-                }
-            }
+            int k = bench__pile_body(s, &r, x, BENCH_PILE_START);
             if (k < 0) return;
-            s->bodies[k].angle = bench__uniform(&r, -pi, pi);
             s->bodies[k].vy = -10;
             s->bodies[k].birth = wave * BENCH_PILE_EVERY;
+        }
+}
+
+/* ---------------------------------------------------------- mixed_bin */
+/* A small mixed scene: test_settle's bin (floor top y = 0, walls 8 m
+   high, 10 m apart inside) with its 100 bodies (mixed_pile's kinds and
+   sizes, drawn the same way from seed 12345) all there at step 0, at rest
+   on a 1 m grid, rows at y = 0.5 + i (no two overlap: each reaches at most
+   0.43 m), and let fall together.  1 000 steps, sleep off, so the settled
+   pile is solved every step.  Its figure is the deepest penetration. */
+#define BENCH_BIN_ROWS 10
+#define BENCH_BIN_HALF_WIDTH 5.0
+#define BENCH_BIN_WALL 8.0
+
+static void bench__mixed_bin(bench_scene *s)
+{
+    const double W = BENCH_BIN_HALF_WIDTH;
+    unsigned long r = 12345;
+    int i, j;
+    bench__bin(s, 2 * W, BENCH_BIN_WALL);
+    for (i = 0; i < BENCH_BIN_ROWS; ++i)
+        for (j = 0; j < 2 * (int)W; ++j) {
+            double x = -W + 0.5 + j + bench__uniform(&r, -0.05, 0.05);
+            if (bench__pile_body(s, &r, x, 0.5 + i) < 0) return;
         }
 }
 
@@ -661,7 +705,7 @@ static int bench__peak(const bench_scene *s)
 
 /* Fills *s with the named scene; returns 0, or -1 for an unknown name or
    no memory.  Names: large_pyramid, many_pyramids, smash, tumbler,
-   pyramid20, stack10, rain, mixed_pile, joint_grid, spinner. */
+   pyramid20, stack10, rain, mixed_pile, mixed_bin, joint_grid, spinner. */
 static int bench_scene_make(const char *name, bench_scene *s)
 {
     int i, j;
@@ -746,6 +790,11 @@ static int bench_scene_make(const char *name, bench_scene *s)
         s->steps = 1000;
         s->figure = BENCH_FIG_PENETRATION;
         bench__mixed_pile(s);
+    } else if (strcmp(name, "mixed_bin") == 0) {
+        s->name = "mixed_bin";
+        s->steps = 1000;
+        s->figure = BENCH_FIG_PENETRATION;
+        bench__mixed_bin(s);
     } else if (strcmp(name, "spinner") == 0) {
         s->name = "spinner";
         s->steps = 500;

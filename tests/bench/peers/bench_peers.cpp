@@ -1019,8 +1019,8 @@ static double median(std::vector<double> v)
 static double minimum(const std::vector<double> &v) { return *std::min_element(v.begin(), v.end()); }
 
 /* ------------------------------------------------------------------ main */
-static const char *const kScenes[] = {"large_pyramid", "many_pyramids", "smash", "tumbler", "pyramid20", "stack10",
-                                     "joint_grid",    "spinner"};
+static const char *const kScenes[] = {"large_pyramid", "many_pyramids", "smash",      "tumbler", "pyramid20",
+                                     "stack10",       "mixed_bin",     "joint_grid", "spinner"};
 static const int kSceneCount = (int)(sizeof kScenes / sizeof kScenes[0]);
 
 static const char *cxx_compiler()
