@@ -8228,6 +8228,17 @@ static int ga2d__beyond(const ga2d__body *a, const ga2d__body *b, ga2d_real gap)
    ga2d__reuse_manifold), whose points take over the impulses of the old
    points with the same id (warm starting).  What changes in the world
    (events, destruction, waking) is left to ga2d__contact_changes. */
+/* How far apart a pair's points are kept: as far as it can close in one
+   step, for speculative points only let bodies approach up to the gap
+   (found only for a pair collided anew or apart: a carried one needs
+   none). */
+static ga2d_real ga2d__pair_margin(const ga2d__step_context *c, const ga2d__body *a, const ga2d__body *b)
+{
+    ga2d_real reach = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
+                      GA2D__FABS(b->sim.w) * b->extent;
+    return c->world->speculative + reach * c->dt;
+}
+
 static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
@@ -8237,7 +8248,7 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
         const ga2d__body *a, *b;
         ga2d_transform xa, xb;
         ga2d_manifold m;
-        ga2d_real reach, margin;
+        ga2d_real margin;
         int touching;
         if (ct->next_free != -2) continue;
         a = &w->bodies[ct->a];
@@ -8249,19 +8260,16 @@ static void ga2d__collide_contacts(ga2d__step_context *c, int begin, int end)
             c->changed[ci >> 6] |= (uint64_t)1 << (ci & 63);
             continue;
         }
-        /* keep points as far apart as the pair can close in one step:
-           speculative points only let bodies approach up to the gap */
-        reach = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
-                GA2D__FABS(b->sim.w) * b->extent;
-        margin = w->speculative + reach * c->dt;
         /* most pairs of a tumbling pile are boxes that meet, not bodies:
            one already apart that stays beyond the margin stays as it is */
+        margin = ct->touching ? 0 : ga2d__pair_margin(c, a, b);
         if (!ct->touching && ga2d__beyond(a, b, margin)) continue;
         xa = ga2d__body_xf(a);
         xb = ga2d__body_xf(b);
         if (ga2d__reuse_manifold(w, ct, a, b, xa, xb)) {
             ++carried;
         } else {
+            if (ct->touching) margin = ga2d__pair_margin(c, a, b);
             ga2d__collide_geometries(&w->shapes[ct->shape_a].geom, xa, &w->shapes[ct->shape_b].geom, xb, w->slop,
                                      margin, &m);
             ga2d__hold_manifold(&ct->held, xa, xb, &m);
@@ -8357,12 +8365,11 @@ static void ga2d__contact_changes(ga2d__step_context *c)
 
 /* ========================================================== contact solver */
 /* A contact point as the solver sees it: anchors from each body's centre
-   of mass (world orientation, fixed for the step), the effective masses,
-   and the accumulated impulses. */
+   of mass (world orientation, fixed for the step) and the accumulated
+   impulses (the lanes find the masses: ga2d__wfind). */
 typedef struct ga2d__cpoint {
     ga2d_vec ra, rb;
     ga2d_real separation;        /* at the step's start */
-    ga2d_real normal_mass, tangent_mass;
     ga2d_real normal_impulse, tangent_impulse;
     ga2d_real approach;          /* closing speed along the normal as the step began (hits only) */
 } ga2d__cpoint;
@@ -8381,6 +8388,7 @@ struct ga2d__contact_constraint {
     unsigned char hits;          /* a shape reports hits: the points' approach speeds are kept */
     unsigned char needs_extras;  /* round, conveyor or rolling: its group needs extras */
     unsigned char incident_b;    /* sharp sides: B's corners meet A's face (not A's B's) */
+    unsigned char moves;         /* 1: it moves A, 2: B (ga2d__moves_a) */
     int lane;                    /* group * GA2D__LANES + lane in the lane solver */
     int seen;                    /* restitution: the impulses applied when it last looked */
     ga2d_real round_a, round_b;  /* the shapes' radii: their round parts (ga2d__point_now) */
@@ -8632,9 +8640,6 @@ static GA2D__HOT void ga2d__apply_impulse(const ga2d__contact_constraint *c, ga2
     }
 }
 
-/* The tangent of a contact: the normal turned clockwise. */
-static ga2d_vec ga2d__tangent(ga2d_vec n) { return ga2d_vec_make(n.y, -n.x); }
-
 /* A body's acceleration from gravity and the user's forces (0 for bodies
    that do not move under forces). */
 static ga2d_vec ga2d__free_accel(const ga2d_world *w, const ga2d__body *b)
@@ -8703,6 +8708,7 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->inv_ia = ma ? a->inv_inertia : 0;
         cc->inv_mb = mb ? b->inv_mass : 0;
         cc->inv_ib = mb ? b->inv_inertia : 0;
+        cc->moves = (unsigned char)((cc->inv_ma != 0 || cc->inv_ia != 0) | (cc->inv_mb != 0 || cc->inv_ib != 0) << 1);
         cc->count = (unsigned char)ct->manifold.count;
         cc->round_a = cc->round_b = cc->tangent_speed = cc->rolling = 0;
         cc->hits = cc->needs_extras = 0;
@@ -8718,8 +8724,6 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
             p->ra = ga2d_vec_sub(mp->anchor_a, ca);
             p->rb = ga2d_vec_sub(mp->anchor_b, cb);
             p->separation = mp->separation;
-            p->normal_mass = ga2d__effective_mass(cc, p->ra, p->rb, cc->normal);
-            p->tangent_mass = ga2d__effective_mass(cc, p->ra, p->rb, ga2d__tangent(cc->normal));
             p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
             p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
             /* a hit is a point that starts pushing: one that carried an
@@ -8854,7 +8858,8 @@ static int ga2d__update_touches(ga2d_world *w)
 static void ga2d__order_constraints(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    int i, prepared = 0, split = w->def.worker_count > 1 && w->def.enqueue_task;
+    int i, prepared = 0, listed = 0, bouncy = 0, split = w->def.worker_count > 1 && w->def.enqueue_task;
+    int *order;
     c->constraint_count = c->bouncy = 0;
     /* room for every contact at once (each has at most one constraint);
        the order is kept apart from the constraints, so that listing it
@@ -8864,17 +8869,22 @@ static void ga2d__order_constraints(ga2d__step_context *c)
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
+    order = c->order;
+    /* counted in locals: the order's stores may alias c's fields */
     for (i = 0; i < w->touch_count; ++i) {
         const ga2d__contact *ct = &w->contacts[w->touches[i].contact];
         if (!ga2d__solver_moves(&w->bodies[ct->a]) && !ga2d__solver_moves(&w->bodies[ct->b])) continue;
         if (w->def.pre_solve && !ga2d__pre_solve(w, ct)) continue;
-        c->order[c->constraint_count++] = w->touches[i].contact;
-        c->bouncy += ct->restitution != 0;
-        if (split || c->constraint_count - prepared < GA2D__PREPARE_BLOCK) continue;
+        order[listed++] = w->touches[i].contact;
+        bouncy += ct->restitution != 0;
+        if (split || listed - prepared < GA2D__PREPARE_BLOCK) continue;
+        c->constraint_count = listed;
         ga2d__prepare_listed(c, prepared, 0);
         if (c->constraint_count == 0) return;
-        prepared = c->constraint_count;
+        prepared = listed;
     }
+    c->constraint_count = listed;
+    c->bouncy = bouncy;
     ga2d__prepare_listed(c, prepared, split);
 }
 
@@ -9070,14 +9080,13 @@ static GA2D__HOT void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__w
    body a lane does not move may be another lane's too, and keeps its own.
    Only the rows that hold v and w are written (the row's fourth real, the
    pad, as it was loaded). */
-static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, ga2d__wmask m, const ga2d__wbody *o,
-                                   const ga2d__wbody *orig)
+static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, ga2d__wmask m, const ga2d__wbody *o)
 {
     ga2d__w f[8];
     f[0] = o->vx;
     f[1] = o->vy;
     f[2] = o->w;
-    f[3] = orig->pad;
+    f[3] = o->pad;
     ga2d__wstore_block(s, slot, m, 0, f);
 #if GA2D__LANES == 2
     ga2d__wstore_block(s, slot, m, 2, f);
@@ -9132,11 +9141,9 @@ static GA2D__HOT void ga2d__wload(const ga2d__sbody *s, const int *slot, ga2d__w
 
 /* Velocities back, for the bodies the lanes move (mask m); a body a lane
    does not move may be another lane's too, and keeps its own. */
-static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, ga2d__wmask m, const ga2d__wbody *o,
-                                   const ga2d__wbody *orig)
+static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, ga2d__wmask m, const ga2d__wbody *o)
 {
     int l;
-    (void)orig;
     for (l = 0; l < GA2D__LANES; ++l) {
         ga2d__sbody *b = &s[slot[l]];
         if (!GA2D__LANE(m, l)) continue;
@@ -9309,13 +9316,11 @@ static GA2D__HOT void ga2d__wblock(const ga2d__group *g, const ga2d__w *inv_a, c
    first: ga2d__wfind). */
 static GA2D__HOT void ga2d__warm_group(ga2d__step_context *c, ga2d__group *g, int extras, int find, int friction)
 {
-    ga2d__wbody A, B, A0, B0;
+    ga2d__wbody A, B;
     int k;
     ga2d__wload(c->sbodies, g->a, &A, find);
     ga2d__wload(c->sbodies, g->b, &B, find);
     if (find) ga2d__wfind(g, &A, &B, friction, extras);
-    A0 = A;
-    B0 = B;
     for (k = 0; k < 2; ++k) {
         /* tangent (ny, -nx) */
         ga2d__w px = ga2d__wadd(ga2d__wmul(g->nx, g->nimp[k]), ga2d__wmul(g->ny, g->timp[k]));
@@ -9326,8 +9331,8 @@ static GA2D__HOT void ga2d__warm_group(ga2d__step_context *c, ga2d__group *g, in
         A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, g->x->rimp));
         B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, g->x->rimp));
     }
-    ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
-    ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+    ga2d__wstore(c->sbodies, g->a, g->move_a, &A);
+    ga2d__wstore(c->sbodies, g->b, g->move_b, &B);
 }
 
 /* Stage, over the groups: each point's accumulated impulses applied again
@@ -9384,14 +9389,12 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
     const int bias_kind = ps->bias_kind;
     const ga2d__wanchors *r = g->at;
     ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
-    ga2d__wbody A, B, A0, B0;
+    ga2d__wbody A, B;
     ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero, vn;
     int k;
     ga2d__wload(c->sbodies, g->a, &A, fresh);
     ga2d__wload(c->sbodies, g->b, &B, fresh);
     if (fresh) ga2d__wfind(g, &A, &B, ps->friction, extras);
-    A0 = A;
-    B0 = B;
     if (bias_kind == GA2D__BIAS_SOFT) { /* the lanes that move both bodies are soft, the others stiff */
         ga2d__wmask both = ga2d__wand(g->move_a, g->move_b);
         soft_rate = ga2d__wsel(both, ps->soft_rate, ps->stiff_rate);
@@ -9487,8 +9490,8 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, dl));
         B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, dl));
     }
-    ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
-    ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+    ga2d__wstore(c->sbodies, g->a, g->move_a, &A);
+    ga2d__wstore(c->sbodies, g->b, g->move_b, &B);
 }
 
 static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int bias_kind)
@@ -9666,18 +9669,28 @@ static void ga2d__still_body(ga2d__step_context *c, int slot)
     s->dqc = 1;
 }
 
-/* The lowest and the highest colour in `set` (a nonzero mask). */
+/* The lowest and the highest colour in `set` (a nonzero mask): the
+   compiler's bit scan where it has one (a loop over the bits was 2 % of a
+   large pyramid's step). */
 static int ga2d__lowest_bit(uint32_t set)
 {
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctz(set);
+#else
     int k = 0;
     while (!(set >> k & 1u)) ++k;
     return k;
+#endif
 }
 static int ga2d__highest_bit(uint32_t set)
 {
+#if defined(__GNUC__) || defined(__clang__)
+    return 31 - __builtin_clz(set);
+#else
     int k = GA2D__COLOURS - 1;
     while (!(set >> k & 1u)) --k;
     return k;
+#endif
 }
 
 /* A constraint's colour, given the colours its moved bodies have taken
@@ -9721,9 +9734,10 @@ static int ga2d__open_group(ga2d__step_context *c)
     return 1;
 }
 
-/* Whether constraint cc moves its A, its B. */
-static int ga2d__moves_a(const ga2d__contact_constraint *cc) { return cc->inv_ma != 0 || cc->inv_ia != 0; }
-static int ga2d__moves_b(const ga2d__contact_constraint *cc) { return cc->inv_mb != 0 || cc->inv_ib != 0; }
+/* Whether constraint cc moves its A, its B (some inverse mass or inertia
+   of that side is not zero: ga2d__prepare_constraints). */
+static int ga2d__moves_a(const ga2d__contact_constraint *cc) { return cc->moves & 1; }
+static int ga2d__moves_b(const ga2d__contact_constraint *cc) { return cc->moves >> 1; }
 
 /* A colour for a constraint that moves bodies a (if ma) and b (if mb),
    taken in their masks; GA2D__OVERFLOW when they have all the colours
@@ -9814,7 +9828,7 @@ static void ga2d__sort_joints(ga2d__step_context *c, const int *count, const int
 static void ga2d__assign_lanes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    int used = w->body_used, i, k, extras = 0, overflow = 0, count[GA2D__COLOURS], next[GA2D__COLOURS];
+    int used = w->body_used, i, k, extras = 0, overflow = 0, round = 0, count[GA2D__COLOURS], next[GA2D__COLOURS];
     int joints[GA2D__COLOURS], bare[GA2D__COLOURS];
     int *last;
     c->group_count = c->colour_count = 0;
@@ -9881,13 +9895,14 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
             if (mb) last[cc->b] = gi;
         }
         extras |= cc->needs_extras;
-        w->counters.round_contacts += cc->round_a != 0 || cc->round_b != 0;
+        round += cc->round_a != 0 || cc->round_b != 0;
         /* a side the solver does not move gets its solver body here, once
            per lane that has it (a moving one's is gathered before each
            run of passes) */
         if (!ga2d__moves_a(cc)) ga2d__still_body(c, cc->a);
         if (!ga2d__moves_b(cc)) ga2d__still_body(c, cc->b);
     }
+    w->counters.round_contacts += round;
     c->group_extras_on = extras;
     if (extras && !ga2d__grow(&w->mem, (void **)&c->group_extras, &c->group_extra_capacity, c->group_count,
                               sizeof *c->group_extras))
@@ -10080,6 +10095,14 @@ static ga2d_transform ga2d__pose_after(const ga2d__body *b, ga2d_vec a, ga2d_rea
    closes along it at the step's start may slide past (two discs passing
    side by side at 100 m/s, 5 cm apart at their closest, bounced off each
    other).  Undecided after the iterations, it meets. */
+/* Point k's normal mass at its anchors as the step began (the lane
+   solver finds its own, per position: ga2d__wfind); only a bounce needs
+   this one, so it is found here rather than for every constraint. */
+static ga2d_real ga2d__normal_mass(const ga2d__contact_constraint *cc, int k)
+{
+    return ga2d__effective_mass(cc, cc->p[k].ra, cc->p[k].rb, cc->normal);
+}
+
 static int ga2d__meets_within(const ga2d_world *w, const ga2d__contact_constraint *cc, ga2d_real look)
 {
     const ga2d__contact *ct = &w->contacts[cc->contact];
@@ -10157,7 +10180,7 @@ static void ga2d__restitute(ga2d__step_context *c)
                 /* a point already leaving is not held to its speed (that
                    would push on it and add energy): only the other collides */
                 int j = vn[0] >= 0 ? 1 : 0;
-                lambda[j] = want[j] > vn[j] ? (want[j] - vn[j]) * cc->p[j].normal_mass : 0;
+                lambda[j] = want[j] > vn[j] ? (want[j] - vn[j]) * ga2d__normal_mass(cc, j) : 0;
             } else if (cc->count == 2) {
                 /* K lambda = want - vn, K_ij = 1/m_a + 1/m_b + (w_ai w_aj)/I_a + (w_bi w_bj)/I_b
                    with w = r ^ n: the points' coupling through the bodies */
@@ -10172,15 +10195,15 @@ static void ga2d__restitute(ga2d__step_context *c)
                 }
                 /* a pulling block falls back to the point that must push */
                 if (!(det > GA2D__EPS * 1024 * k11 * k22) || lambda[0] < 0 || lambda[1] < 0) {
-                    lambda[0] = d0 > 0 ? d0 * cc->p[0].normal_mass : 0;
+                    lambda[0] = d0 > 0 ? d0 * ga2d__normal_mass(cc, 0) : 0;
                     lambda[1] = 0;
-                    if (d1 * cc->p[1].normal_mass > lambda[0]) {
-                        lambda[1] = d1 * cc->p[1].normal_mass;
+                    if (d1 * ga2d__normal_mass(cc, 1) > lambda[0]) {
+                        lambda[1] = d1 * ga2d__normal_mass(cc, 1);
                         lambda[0] = 0;
                     }
                 }
             } else {
-                lambda[0] = want[0] > vn[0] ? (want[0] - vn[0]) * cc->p[0].normal_mass : 0;
+                lambda[0] = want[0] > vn[0] ? (want[0] - vn[0]) * ga2d__normal_mass(cc, 0) : 0;
             }
             for (k = 0; k < cc->count; ++k) {
                 ga2d__apply_impulse(cc, &a->sim, &b->sim, cc->p[k].ra, cc->p[k].rb, ga2d_vec_scale(cc->normal, lambda[k]));
@@ -11506,16 +11529,14 @@ static GA2D__HOT void ga2d__hinge_apply(const ga2d__jgroup *g, ga2d__wbody *A, g
 /* A hinge group's warm start: last step's impulses at the anchors now. */
 static GA2D__HOT void ga2d__warm_hinges(ga2d__step_context *c, const ga2d__jgroup *g)
 {
-    ga2d__wbody A, B, A0, B0;
+    ga2d__wbody A, B;
     ga2d__wlevers r;
     ga2d__wload(c->sbodies, g->a, &A, 1);
     ga2d__wload(c->sbodies, g->b, &B, 1);
-    A0 = A;
-    B0 = B;
     r = ga2d__hinge_levers(g, &A, &B);
     ga2d__hinge_apply(g, &A, &B, &r, g->lix, g->liy, g->axial);
-    ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
-    ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+    ga2d__wstore(c->sbodies, g->a, g->move_a, &A);
+    ga2d__wstore(c->sbodies, g->b, g->move_b, &B);
 }
 
 /* A hinge group's pass (ga2d__solve_point in lanes): the 2x2 block K P =
@@ -11524,13 +11545,11 @@ static GA2D__HOT void ga2d__warm_hinges(ga2d__step_context *c, const ga2d__jgrou
 static GA2D__HOT void ga2d__solve_hinges(ga2d__step_context *c, ga2d__jgroup *g, int bias)
 {
     const ga2d__w zero = ga2d__wsplat(0), one = ga2d__wsplat(1);
-    ga2d__wbody A, B, A0, B0;
+    ga2d__wbody A, B;
     ga2d__wlevers r;
     ga2d__w rx, ry, ms = one, is = zero, k11, k12, k22, det, mass, sx, sy, px, py;
     ga2d__wload(c->sbodies, g->a, &A, 1);
     ga2d__wload(c->sbodies, g->b, &B, 1);
-    A0 = A;
-    B0 = B;
     r = ga2d__hinge_levers(g, &A, &B);
     /* cdot: B's anchor's velocity less A's (ga2d__joint_cdot) */
     rx = ga2d__wsub(ga2d__wadd(B.vx, ga2d__wmul(ga2d__wneg(r.by), B.w)), ga2d__wadd(A.vx, ga2d__wmul(ga2d__wneg(r.ay), A.w)));
@@ -11562,8 +11581,8 @@ static GA2D__HOT void ga2d__solve_hinges(ga2d__step_context *c, ga2d__jgroup *g,
     g->lix = ga2d__wadd(g->lix, px);
     g->liy = ga2d__wadd(g->liy, py);
     ga2d__hinge_apply(g, &A, &B, &r, px, py, zero);
-    ga2d__wstore(c->sbodies, g->a, g->move_a, &A, &A0);
-    ga2d__wstore(c->sbodies, g->b, g->move_b, &B, &B0);
+    ga2d__wstore(c->sbodies, g->a, g->move_a, &A);
+    ga2d__wstore(c->sbodies, g->b, g->move_b, &B);
 }
 
 /* The packed group at place i of joint_order, if one begins there. */
@@ -12097,7 +12116,7 @@ static void ga2d__eval_field(ga2d_world *w, double t)
 }
 
 /* a = g s + (F_user + F_field)/m and alpha = (tau_user + tau_field)/I */
-static void ga2d__acceleration(const ga2d_world *w, const ga2d__body_sim *b, ga2d_vec *a, ga2d_real *alpha)
+static GA2D__HOT void ga2d__acceleration(const ga2d_world *w, const ga2d__body_sim *b, ga2d_vec *a, ga2d_real *alpha)
 {
     ga2d_vec f = ga2d_vec_add(b->force, b->field_force);
     *a = ga2d_vec_add(ga2d_vec_scale(w->def.gravity, b->gravity_scale), ga2d_vec_scale(f, b->inv_mass));
@@ -12105,7 +12124,7 @@ static void ga2d__acceleration(const ga2d_world *w, const ga2d__body_sim *b, ga2
 }
 
 /* Damping as the implicit factor 1/(1 + c h): stable for any c h. */
-static void ga2d__damp(ga2d__body_sim *b, ga2d_real h)
+static GA2D__HOT void ga2d__damp(ga2d__body_sim *b, ga2d_real h)
 {
     if (b->linear_damping > 0) b->v = ga2d_vec_scale(b->v, 1 / (1 + h * b->linear_damping));
     if (b->angular_damping > 0) b->w *= 1 / (1 + h * b->angular_damping);
@@ -12122,7 +12141,7 @@ static void ga2d__damp(ga2d__body_sim *b, ga2d_real h)
    the bodies move in steps of u (2-5e-7 m within 8 m of the origin),
    which the soft springs turned into a floor of 5e-5 m/s, a drift of
    0.5 mm in 10 s and kicks that never settled. */
-static void ga2d__drift(const ga2d_world *w, ga2d__body_sim *b, ga2d_real h, ga2d__counts *n)
+static GA2D__HOT void ga2d__drift(const ga2d_world *w, ga2d__body_sim *b, ga2d_real h, ga2d__counts *n)
 {
     b->dp = ga2d_vec_add(b->dp, ga2d_vec_scale(b->v, h));
     b->center = ga2d_vec_add(b->center0, b->dp);
@@ -12188,7 +12207,7 @@ static void ga2d__contain(ga2d_world *w, int slot)
 /* Shortens *v to length max if longer (returns 1 then); the length is
    taken after scaling by the larger component, so a huge but finite v is
    capped, not turned into inf or NaN. */
-static int ga2d__cap_length(ga2d_vec *v, ga2d_real max)
+static GA2D__HOT int ga2d__cap_length(ga2d_vec *v, ga2d_real max)
 {
     ga2d_real ax = GA2D__FABS(v->x), ay = GA2D__FABS(v->y), m = ax > ay ? ax : ay;
     if (m > max * GA2D__R(0.7)) { /* |v| may exceed max: measure it safely */
@@ -12202,7 +12221,7 @@ static int ga2d__cap_length(ga2d_vec *v, ga2d_real max)
     return 0;
 }
 
-static int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
+static GA2D__HOT int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
 {
     if (!(*th > max || *th < -max)) return 0;
     *th = *th > 0 ? max : -max;
@@ -12212,7 +12231,7 @@ static int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
 /* The velocity cap and the largest turn per substep, as Box2D: beyond
    them a body is tunnelling anyway; each capped body counts in
    speed_caps.  Returns 0 for a velocity that is not finite. */
-static int ga2d__clamp_velocity(const ga2d_world *w, ga2d__body_sim *b, ga2d_real h, int *caps)
+static GA2D__HOT int ga2d__clamp_velocity(const ga2d_world *w, ga2d__body_sim *b, ga2d_real h, int *caps)
 {
     if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) return 0;
     *caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
@@ -12504,7 +12523,7 @@ static void ga2d__rk4_positions(ga2d__step_context *c, int begin, int end)
    a cap by more than the kick's own rounding of it (a rigid pass may
    take the speed back before the next kick sees it: a distance joint of
    absurd length pushing out at the cap, uncounted, for ever). */
-static void ga2d__cap_motion(ga2d__body_sim *b, ga2d_real max_speed, ga2d_real max_turn_rate, ga2d__counts *n)
+static GA2D__HOT void ga2d__cap_motion(ga2d__body_sim *b, ga2d_real max_speed, ga2d_real max_turn_rate, ga2d__counts *n)
 {
     const ga2d_real slack = 1 + 16 * GA2D__EPS; /* above the kick's capped length, rounded */
     ga2d_vec v = b->v;
