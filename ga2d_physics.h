@@ -881,6 +881,10 @@ typedef struct ga2d_world_counters {
     int hinges_in_lanes;    /* of joints_solved, the bare revolute joints (no
                                spring, motor or limit) the last step solved
                                several at a time in the solver's lanes */
+    int colouring_kept;     /* 1 when the last step kept the step before's
+                               colouring of its contacts (the same bodies
+                               touching, moved the same way, no joints),
+                               0 when it coloured them anew */
 } ga2d_world_counters;
 
 GA2D_API ga2d_world_def ga2d_default_world_def(void);
@@ -4788,6 +4792,7 @@ typedef struct ga2d__fill { int count, skip; } ga2d__fill;
 typedef struct ga2d__counts { int speed_caps, rotation_updates, integrated_bodies, unfinite; } ga2d__counts;
 typedef struct ga2d__group_extra ga2d__group_extra;
 typedef struct ga2d__sbody ga2d__sbody;
+typedef struct ga2d__lane_key ga2d__lane_key;
 typedef struct ga2d__joint ga2d__joint;
 typedef struct ga2d__jgroup ga2d__jgroup;
 typedef struct ga2d__rk4 ga2d__rk4;
@@ -4903,6 +4908,10 @@ typedef struct ga2d__step_context {
     int colour_mask_capacity;
     int colour_count;            /* colours in use this step */
     int colour_start[GA2D__COLOURS + 1]; /* the group each colour begins at; [colour_count]: the overflow's */
+    ga2d__lane_key *lane_keys;   /* the last colouring's constraints, as it read them (ga2d__lanes_kept) */
+    int lane_key_capacity;
+    int lane_key_count;          /* how many; -1: no colouring is kept */
+    int kept_groups, kept_colours; /* its groups and colours */
     ga2d__rk4 *rk4;              /* RK4's scratch, one per moving body's capacity */
     int rk4_capacity;
     uint64_t *changed;           /* a bit per pool contact the narrowphase flagged */
@@ -9716,6 +9725,7 @@ static int ga2d__pick_colour(uint32_t taken)
 static int ga2d__solve_nothing(ga2d__step_context *c)
 {
     c->group_count = c->colour_count = c->joint_active = 0;
+    c->lane_key_count = -1;
     c->error = GA2D_ERR_OUT_OF_MEMORY;
     return 0;
 }
@@ -9808,6 +9818,90 @@ static void ga2d__sort_joints(ga2d__step_context *c, const int *count, const int
     ga2d__swap_arrays((void **)&c->joint_order, &c->joint_order_capacity, (void **)&c->joint_sorted, &c->joint_sorted_capacity);
 }
 
+/* What the step keeps of each constraint it has given a lane: whether
+   it needs the groups' extras, whether it is round (counted), and a side
+   the solver does not move gets its solver body here, once per lane that
+   has it (a moving one's is gathered before each run of passes). */
+static void ga2d__lane_seen(ga2d__step_context *c, const ga2d__contact_constraint *cc, int *extras, int *round)
+{
+    *extras |= cc->needs_extras;
+    *round += cc->round_a != 0 || cc->round_b != 0;
+    if (!ga2d__moves_a(cc)) ga2d__still_body(c, cc->a);
+    if (!ga2d__moves_b(cc)) ga2d__still_body(c, cc->b);
+}
+
+/* The lanes' end: the round count, and the groups' extras when some
+   constraint needs them; 0 when memory for those runs out (the step
+   reports it and solves nothing). */
+static int ga2d__lanes_done(ga2d__step_context *c, int extras, int round)
+{
+    ga2d_world *w = c->world;
+    w->counters.round_contacts += round;
+    c->group_extras_on = extras;
+    if (extras && !ga2d__grow(&w->mem, (void **)&c->group_extras, &c->group_extra_capacity, c->group_count,
+                              sizeof *c->group_extras))
+        return ga2d__solve_nothing(c);
+    return 1;
+}
+
+/* A constraint as the colouring reads it: its bodies and which of them
+   it moves.  The colouring is a function of these alone, in order (and of
+   the joints, which a kept colouring has none of). */
+struct ga2d__lane_key { int a, b, moves; };
+
+/* Remembers the colouring just made, with the constraints it read, for
+   the next step to keep if it reads the same (ga2d__lanes_kept).  Out of
+   memory, it is not remembered and the step reports it (every failed
+   allocation is reported), but solves as it would. */
+static void ga2d__keep_lanes(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int i;
+    if (!ga2d__grow(&w->mem, (void **)&c->lane_keys, &c->lane_key_capacity, c->constraint_count, sizeof *c->lane_keys)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    for (i = 0; i < c->constraint_count; ++i) {
+        const ga2d__contact_constraint *cc = &c->constraints[i];
+        c->lane_keys[i].a = cc->a;
+        c->lane_keys[i].b = cc->b;
+        c->lane_keys[i].moves = cc->moves;
+    }
+    c->lane_key_count = c->constraint_count;
+    c->kept_groups = c->group_count;
+    c->kept_colours = c->colour_count;
+}
+
+/* The last step's colouring, kept when this step's constraints are the
+   same bodies, moved the same way, in the same order, and neither step
+   has joints: the colouring would come out the same, so the groups'
+   fills, lanes and colour starts are still right, and only what the step
+   keeps per constraint is written again (each one's lane, the still
+   bodies' solver bodies, the extras and the round count).  A resting
+   pile keeps its colouring step after step; 0 when not kept. */
+static int ga2d__lanes_kept(ga2d__step_context *c)
+{
+    int i, gi, l, extras = 0, round = 0;
+    if (c->joint_active != 0 || c->lane_key_count != c->constraint_count) return 0;
+    for (i = 0; i < c->constraint_count; ++i) {
+        const ga2d__contact_constraint *cc = &c->constraints[i];
+        const ga2d__lane_key *k = &c->lane_keys[i];
+        if (k->a != cc->a || k->b != cc->b || k->moves != cc->moves) return 0;
+    }
+    if (!ga2d__reserve_sbodies(c)) {
+        (void)ga2d__solve_nothing(c);
+        return 1;
+    }
+    c->group_count = c->kept_groups;
+    c->colour_count = c->kept_colours;
+    c->world->counters.colouring_kept = 1;
+    for (gi = 0; gi < c->group_count; ++gi)
+        for (l = 0; l < c->fill[gi].count; ++l) c->constraints[c->lane_constraints[gi * GA2D__LANES + l]].lane = gi * GA2D__LANES + l;
+    for (i = 0; i < c->constraint_count; ++i) ga2d__lane_seen(c, &c->constraints[i], &extras, &round);
+    (void)ga2d__lanes_done(c, extras, round);
+    return 1;
+}
+
 /* Book-keeping: colours the constraints, in their canonical order, so
    that no two of one colour move the same body (a graph colouring,
    greedy, ga2d__pick_colour; a static, kinematic or sleeping side takes
@@ -9832,8 +9926,10 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
     int joints[GA2D__COLOURS], bare[GA2D__COLOURS];
     int *last;
     c->group_count = c->colour_count = 0;
-    c->colour_start[0] = c->joint_start[0] = 0;
     if (c->constraint_count == 0 && c->joint_active == 0) return;
+    if (ga2d__lanes_kept(c)) return;
+    c->lane_key_count = -1;
+    c->colour_start[0] = c->joint_start[0] = 0;
     if (!ga2d__reserve_sbodies(c) ||
         !ga2d__grow(&w->mem, (void **)&c->colour_masks, &c->colour_mask_capacity, used, sizeof *c->colour_masks) ||
         !ga2d__grow(&w->mem, (void **)&c->joint_colours, &c->joint_colour_capacity, c->joint_active, sizeof *c->joint_colours) ||
@@ -9894,19 +9990,9 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
             if (ma) last[cc->a] = gi;
             if (mb) last[cc->b] = gi;
         }
-        extras |= cc->needs_extras;
-        round += cc->round_a != 0 || cc->round_b != 0;
-        /* a side the solver does not move gets its solver body here, once
-           per lane that has it (a moving one's is gathered before each
-           run of passes) */
-        if (!ga2d__moves_a(cc)) ga2d__still_body(c, cc->a);
-        if (!ga2d__moves_b(cc)) ga2d__still_body(c, cc->b);
+        ga2d__lane_seen(c, cc, &extras, &round);
     }
-    w->counters.round_contacts += round;
-    c->group_extras_on = extras;
-    if (extras && !ga2d__grow(&w->mem, (void **)&c->group_extras, &c->group_extra_capacity, c->group_count,
-                              sizeof *c->group_extras))
-        (void)ga2d__solve_nothing(c);
+    if (ga2d__lanes_done(c, extras, round) && c->joint_active == 0) ga2d__keep_lanes(c);
 }
 
 /* Stage, over the groups: each learns its count and where its extras
@@ -12058,6 +12144,8 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->last_group, &c->last_group_capacity, sizeof *c->last_group);
     ga2d__release(w, (void **)&c->colour_masks, &c->colour_mask_capacity, sizeof *c->colour_masks);
     ga2d__release(w, (void **)&c->lane_constraints, &c->lane_constraint_capacity, sizeof *c->lane_constraints);
+    ga2d__release(w, (void **)&c->lane_keys, &c->lane_key_capacity, sizeof *c->lane_keys);
+    c->lane_key_count = -1; /* its groups are gone */
     ga2d__release(w, (void **)&c->joint_sorted, &c->joint_sorted_capacity, sizeof *c->joint_sorted);
     ga2d__release(w, (void **)&c->jgroups, &c->jgroup_capacity, sizeof *c->jgroups);
     ga2d__release(w, (void **)&c->joint_lane, &c->joint_lane_capacity, sizeof *c->joint_lane);
@@ -12082,6 +12170,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->last_group, c->last_group_capacity);
     GA2D__FREE_ARRAY(a, c->colour_masks, c->colour_mask_capacity);
     GA2D__FREE_ARRAY(a, c->lane_constraints, c->lane_constraint_capacity);
+    GA2D__FREE_ARRAY(a, c->lane_keys, c->lane_key_capacity);
     GA2D__FREE_ARRAY(a, c->changed, c->changed_capacity);
     GA2D__FREE_ARRAY(a, c->refits, c->refit_capacity);
     GA2D__FREE_ARRAY(a, c->tally, c->tally_capacity);
@@ -12956,6 +13045,7 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     w->counters.speed_caps = 0;
     w->counters.sensor_tests = 0;
     w->counters.round_contacts = 0;
+    w->counters.colouring_kept = 0;
 }
 
 /* Book-keeping after the impulses are stored: each constraint that
