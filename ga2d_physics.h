@@ -882,9 +882,9 @@ typedef struct ga2d_world_counters {
                                spring, motor or limit) the last step solved
                                several at a time in the solver's lanes */
     int colouring_kept;     /* 1 when the last step kept the step before's
-                               colouring of its contacts (the same bodies
-                               touching, moved the same way, no joints),
-                               0 when it coloured them anew */
+                               colouring of its contacts and joints (the
+                               same bodies touching and joined, moved the
+                               same way), 0 when it coloured them anew */
 } ga2d_world_counters;
 
 GA2D_API ga2d_world_def ga2d_default_world_def(void);
@@ -4870,6 +4870,8 @@ typedef struct ga2d__step_context {
     int joint_order_capacity, joint_active;
     int *joint_sorted;           /* scratch while joints are coloured: the order by colour */
     int joint_sorted_capacity;
+    int *joint_perm;             /* the colour order as positions in creation order (kept with the colouring) */
+    int joint_perm_capacity;
     int *joint_colours;          /* scratch while joints are coloured: each one's, in creation order */
     int joint_colour_capacity;
     int joint_start[GA2D__COLOURS + 1]; /* the joint each colour begins at; [colour_count]: the overflow's */
@@ -4910,8 +4912,8 @@ typedef struct ga2d__step_context {
     int colour_start[GA2D__COLOURS + 1]; /* the group each colour begins at; [colour_count]: the overflow's */
     ga2d__lane_key *lane_keys;   /* the last colouring's constraints, as it read them (ga2d__lanes_kept) */
     int lane_key_capacity;
-    int lane_key_count;          /* how many; -1: no colouring is kept */
-    int kept_groups, kept_colours; /* its groups and colours */
+    int lane_key_count;          /* how many (constraints, then joints); -1: no colouring is kept */
+    int kept_groups, kept_colours, kept_joints; /* its groups, colours and joints */
     ga2d__rk4 *rk4;              /* RK4's scratch, one per moving body's capacity */
     int rk4_capacity;
     uint64_t *changed;           /* a bit per pool contact the narrowphase flagged */
@@ -9798,7 +9800,8 @@ static void ga2d__colour_joints(ga2d__step_context *c, int *count, int *bare)
 /* The joints in colour order, each colour's bare hinges first (`bare`
    of them: ga2d__pack_hinges packs them) and then the rest, each part in
    creation order; the overflow's last, where the colours' counts `count`
-   say. */
+   say.  Where each came from is kept (joint_perm), for a step that keeps
+   the colouring. */
 static void ga2d__sort_joints(ga2d__step_context *c, const int *count, const int *bare)
 {
     int next[GA2D__COLOURS + 1], rest[GA2D__COLOURS + 1], k, i;
@@ -9812,8 +9815,9 @@ static void ga2d__sort_joints(ga2d__step_context *c, const int *count, const int
     for (i = 0; i < c->joint_active; ++i) {
         int colour = c->joint_colours[i] & ~GA2D__BARE;
         k = colour == GA2D__OVERFLOW ? c->colour_count : colour;
-        if (c->joint_colours[i] & GA2D__BARE && k < c->colour_count) c->joint_sorted[next[k]++] = c->joint_order[i];
-        else c->joint_sorted[rest[k]++] = c->joint_order[i];
+        int at = c->joint_colours[i] & GA2D__BARE && k < c->colour_count ? next[k]++ : rest[k]++;
+        c->joint_sorted[at] = c->joint_order[i];
+        c->joint_perm[at] = i;
     }
     ga2d__swap_arrays((void **)&c->joint_order, &c->joint_order_capacity, (void **)&c->joint_sorted, &c->joint_sorted_capacity);
 }
@@ -9844,10 +9848,18 @@ static int ga2d__lanes_done(ga2d__step_context *c, int extras, int round)
     return 1;
 }
 
-/* A constraint as the colouring reads it: its bodies and which of them
-   it moves.  The colouring is a function of these alone, in order (and of
-   the joints, which a kept colouring has none of). */
+/* A constraint or a joint as the colouring reads it: its bodies, which
+   of them it moves (1: A, 2: B) and, for a joint, whether it is a bare
+   hinge (4).  The colouring is a function of these alone, in order: the
+   joints' in creation order, then the constraints' in theirs. */
 struct ga2d__lane_key { int a, b, moves; };
+
+static void ga2d__joint_key(const ga2d__joint *j, ga2d__lane_key *k)
+{
+    k->a = j->body[0];
+    k->b = j->body[1];
+    k->moves = (j->ima != 0 || j->iia != 0) | (j->imb != 0 || j->iib != 0) << 1 | ga2d__bare_hinge(j) << 2;
+}
 
 /* Remembers the colouring just made, with the constraints it read, for
    the next step to keep if it reads the same (ga2d__lanes_kept).  Out of
@@ -9856,42 +9868,71 @@ struct ga2d__lane_key { int a, b, moves; };
 static void ga2d__keep_lanes(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    int i;
-    if (!ga2d__grow(&w->mem, (void **)&c->lane_keys, &c->lane_key_capacity, c->constraint_count, sizeof *c->lane_keys)) {
+    int i, n = c->constraint_count;
+    if (!ga2d__grow(&w->mem, (void **)&c->lane_keys, &c->lane_key_capacity, n + c->joint_active, sizeof *c->lane_keys)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
-    for (i = 0; i < c->constraint_count; ++i) {
+    for (i = 0; i < n; ++i) {
         const ga2d__contact_constraint *cc = &c->constraints[i];
         c->lane_keys[i].a = cc->a;
         c->lane_keys[i].b = cc->b;
         c->lane_keys[i].moves = cc->moves;
     }
-    c->lane_key_count = c->constraint_count;
+    /* the joints in creation order: where ga2d__sort_joints left it */
+    for (i = 0; i < c->joint_active; ++i) ga2d__joint_key(&w->joints[c->joint_sorted[i]], &c->lane_keys[n + i]);
+    c->lane_key_count = n + c->joint_active;
+    c->kept_joints = c->joint_active;
     c->kept_groups = c->group_count;
     c->kept_colours = c->colour_count;
 }
 
-/* The last step's colouring, kept when this step's constraints are the
-   same bodies, moved the same way, in the same order, and neither step
-   has joints: the colouring would come out the same, so the groups'
-   fills, lanes and colour starts are still right, and only what the step
-   keeps per constraint is written again (each one's lane, the still
-   bodies' solver bodies, the extras and the round count).  A resting
-   pile keeps its colouring step after step; 0 when not kept. */
+/* The kept colouring's joint order: each colour's joints where the
+   colouring put them (joint_perm, positions in creation order), and a
+   side a joint does not move gets its solver body. */
+static void ga2d__joints_kept(ga2d__step_context *c)
+{
+    const ga2d_world *w = c->world;
+    int p;
+    for (p = 0; p < c->joint_active; ++p) c->joint_sorted[p] = c->joint_order[c->joint_perm[p]];
+    ga2d__swap_arrays((void **)&c->joint_order, &c->joint_order_capacity, (void **)&c->joint_sorted, &c->joint_sorted_capacity);
+    for (p = 0; p < c->joint_active; ++p) {
+        const ga2d__joint *j = &w->joints[c->joint_order[p]];
+        if (j->ima == 0 && j->iia == 0) ga2d__still_body(c, j->body[0]);
+        if (j->imb == 0 && j->iib == 0) ga2d__still_body(c, j->body[1]);
+    }
+}
+
+/* The last step's colouring, kept when this step's joints and
+   constraints are the same bodies, moved the same way, in the same order
+   (and the same joints bare hinges or not): the colouring would come out
+   the same, so the groups' fills, lanes, the colour starts and the
+   joints' places in them are still right, and only what the step keeps
+   per constraint and joint is written again (each joint's place in the
+   order, each constraint's lane, the still bodies' solver bodies, the
+   extras and the round count).  A resting pile or a hanging net keeps
+   its colouring step after step; 0 when not kept. */
 static int ga2d__lanes_kept(ga2d__step_context *c)
 {
-    int i, gi, l, extras = 0, round = 0;
-    if (c->joint_active != 0 || c->lane_key_count != c->constraint_count) return 0;
-    for (i = 0; i < c->constraint_count; ++i) {
+    const ga2d_world *w = c->world;
+    int i, gi, l, extras = 0, round = 0, n = c->constraint_count;
+    if (c->joint_active != c->kept_joints || c->lane_key_count != n + c->joint_active) return 0;
+    for (i = 0; i < n; ++i) {
         const ga2d__contact_constraint *cc = &c->constraints[i];
         const ga2d__lane_key *k = &c->lane_keys[i];
         if (k->a != cc->a || k->b != cc->b || k->moves != cc->moves) return 0;
+    }
+    for (i = 0; i < c->joint_active; ++i) {
+        ga2d__lane_key now;
+        const ga2d__lane_key *k = &c->lane_keys[n + i];
+        ga2d__joint_key(&w->joints[c->joint_order[i]], &now);
+        if (k->a != now.a || k->b != now.b || k->moves != now.moves) return 0;
     }
     if (!ga2d__reserve_sbodies(c)) {
         (void)ga2d__solve_nothing(c);
         return 1;
     }
+    ga2d__joints_kept(c);
     c->group_count = c->kept_groups;
     c->colour_count = c->kept_colours;
     c->world->counters.colouring_kept = 1;
@@ -9933,7 +9974,8 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
     if (!ga2d__reserve_sbodies(c) ||
         !ga2d__grow(&w->mem, (void **)&c->colour_masks, &c->colour_mask_capacity, used, sizeof *c->colour_masks) ||
         !ga2d__grow(&w->mem, (void **)&c->joint_colours, &c->joint_colour_capacity, c->joint_active, sizeof *c->joint_colours) ||
-        !ga2d__grow(&w->mem, (void **)&c->joint_sorted, &c->joint_sorted_capacity, c->joint_active, sizeof *c->joint_sorted)) {
+        !ga2d__grow(&w->mem, (void **)&c->joint_sorted, &c->joint_sorted_capacity, c->joint_active, sizeof *c->joint_sorted) ||
+        !ga2d__grow(&w->mem, (void **)&c->joint_perm, &c->joint_perm_capacity, c->joint_active, sizeof *c->joint_perm)) {
         (void)ga2d__solve_nothing(c);
         return;
     }
@@ -9992,7 +10034,7 @@ static void ga2d__assign_lanes(ga2d__step_context *c)
         }
         ga2d__lane_seen(c, cc, &extras, &round);
     }
-    if (ga2d__lanes_done(c, extras, round) && c->joint_active == 0) ga2d__keep_lanes(c);
+    if (ga2d__lanes_done(c, extras, round)) ga2d__keep_lanes(c);
 }
 
 /* Stage, over the groups: each learns its count and where its extras
@@ -12147,6 +12189,7 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->lane_keys, &c->lane_key_capacity, sizeof *c->lane_keys);
     c->lane_key_count = -1; /* its groups are gone */
     ga2d__release(w, (void **)&c->joint_sorted, &c->joint_sorted_capacity, sizeof *c->joint_sorted);
+    ga2d__release(w, (void **)&c->joint_perm, &c->joint_perm_capacity, sizeof *c->joint_perm);
     ga2d__release(w, (void **)&c->jgroups, &c->jgroup_capacity, sizeof *c->jgroups);
     ga2d__release(w, (void **)&c->joint_lane, &c->joint_lane_capacity, sizeof *c->joint_lane);
     c->jgroup_count = 0;
@@ -12177,6 +12220,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->counts, c->counts_capacity);
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
     GA2D__FREE_ARRAY(a, c->joint_sorted, c->joint_sorted_capacity);
+    GA2D__FREE_ARRAY(a, c->joint_perm, c->joint_perm_capacity);
     GA2D__FREE_ARRAY(a, c->jgroups, c->jgroup_capacity);
     GA2D__FREE_ARRAY(a, c->joint_lane, c->joint_lane_capacity);
     GA2D__FREE_ARRAY(a, c->joint_colours, c->joint_colour_capacity);
