@@ -9826,7 +9826,7 @@ static void ga2d__sort_joints(ga2d__step_context *c, const int *count, const int
    it needs the groups' extras, whether it is round (counted), and a side
    the solver does not move gets its solver body here, once per lane that
    has it (a moving one's is gathered before each run of passes). */
-static void ga2d__lane_seen(ga2d__step_context *c, const ga2d__contact_constraint *cc, int *extras, int *round)
+static GA2D__HOT void ga2d__lane_seen(ga2d__step_context *c, const ga2d__contact_constraint *cc, int *extras, int *round)
 {
     *extras |= cc->needs_extras;
     *round += cc->round_a != 0 || cc->round_b != 0;
