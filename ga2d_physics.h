@@ -8700,15 +8700,18 @@ static void ga2d__constraint_extras(ga2d_world *w, const ga2d__contact *ct, ga2d
 static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
+    const ga2d__contact *contacts = w->contacts; /* in locals: see ga2d__gather */
+    const ga2d__body *bodies = w->bodies;
+    const int *order = c->order, warm = w->def.enable_warm_starting;
     int n, i;
     for (n = begin; n < end; ++n) {
         ga2d__contact_constraint *cc = &c->constraints[n];
-        const ga2d__contact *ct = &w->contacts[c->order[n]];
-        const ga2d__body *ba = &w->bodies[ct->a], *bb = &w->bodies[ct->b];
+        const ga2d__contact *ct = &contacts[order[n]];
+        const ga2d__body *ba = &bodies[ct->a], *bb = &bodies[ct->b];
         const ga2d__body_sim *a = &ba->sim, *b = &bb->sim;
         int ma = ga2d__solver_moves(ba), mb = ga2d__solver_moves(bb);
         ga2d_vec ca, cb;
-        cc->contact = c->order[n];
+        cc->contact = order[n];
         cc->a = ct->a;
         cc->b = ct->b;
         cc->normal = ct->manifold.normal;
@@ -8719,7 +8722,7 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
         cc->inv_ia = ma ? a->inv_inertia : 0;
         cc->inv_mb = mb ? b->inv_mass : 0;
         cc->inv_ib = mb ? b->inv_inertia : 0;
-        cc->moves = (unsigned char)((cc->inv_ma != 0 || cc->inv_ia != 0) | (cc->inv_mb != 0 || cc->inv_ib != 0) << 1);
+        cc->moves = (unsigned char)(((cc->inv_ma != 0) | (cc->inv_ia != 0)) | ((cc->inv_mb != 0) | (cc->inv_ib != 0)) << 1);
         cc->count = (unsigned char)ct->manifold.count;
         cc->round_a = cc->round_b = cc->tangent_speed = cc->rolling = 0;
         cc->hits = cc->needs_extras = 0;
@@ -8735,8 +8738,8 @@ static void ga2d__prepare_constraints(ga2d__step_context *c, int begin, int end)
             p->ra = ga2d_vec_sub(mp->anchor_a, ca);
             p->rb = ga2d_vec_sub(mp->anchor_b, cb);
             p->separation = mp->separation;
-            p->normal_impulse = w->def.enable_warm_starting ? mp->normal_impulse : 0;
-            p->tangent_impulse = w->def.enable_warm_starting ? mp->tangent_impulse : 0;
+            p->normal_impulse = warm ? mp->normal_impulse : 0;
+            p->tangent_impulse = warm ? mp->tangent_impulse : 0;
             /* a hit is a point that starts pushing: one that carried an
                impulse from the last step is not hit again (a landing
                slowed early by the relax pass reported twice) */
@@ -10077,35 +10080,42 @@ static void ga2d__fill_groups(ga2d__step_context *c, int begin, int end)
    step began, into the solver bodies, before a run of passes. */
 static void ga2d__gather(ga2d__step_context *c, int begin, int end)
 {
-    ga2d_world *w = c->world;
+    /* the arrays in locals: the stores could alias the world's fields,
+       and the compiler read them again for every body */
+    const ga2d__body *bodies = c->world->bodies;
+    const int *moving = c->world->moving;
+    ga2d__sbody *sb = c->sbodies;
     int k;
     if (c->group_count == 0 && c->joint_active == 0) return;
     for (k = begin; k < end; ++k) {
-        int slot = w->moving[k];
-        const ga2d__body_sim *b = &w->bodies[slot].sim;
-        ga2d__sbody *s = &c->sbodies[slot];
+        int slot = moving[k];
+        const ga2d__body_sim *b = &bodies[slot].sim;
         ga2d_rotor dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0));
-        s->vx = b->v.x;
-        s->vy = b->v.y;
-        s->w = b->w;
-        s->pad = 0;
-        s->dpx = b->dp.x;
-        s->dpy = b->dp.y;
-        s->dqc = dq.c;
-        s->dqs = dq.s;
+        ga2d__sbody s;
+        s.vx = b->v.x;
+        s.vy = b->v.y;
+        s.w = b->w;
+        s.pad = 0;
+        s.dpx = b->dp.x;
+        s.dpy = b->dp.y;
+        s.dqc = dq.c;
+        s.dqs = dq.s;
+        sb[slot] = s;
     }
 }
 
 /* Stage, over the moving bodies: the velocities back after them. */
 static void ga2d__scatter(ga2d__step_context *c, int begin, int end)
 {
-    ga2d_world *w = c->world;
+    ga2d__body *bodies = c->world->bodies;
+    const int *moving = c->world->moving;
+    const ga2d__sbody *sb = c->sbodies;
     int k;
     if (c->group_count == 0 && c->joint_active == 0) return;
     for (k = begin; k < end; ++k) {
-        int slot = w->moving[k];
-        ga2d__body *b = &w->bodies[slot];
-        const ga2d__sbody *s = &c->sbodies[slot];
+        int slot = moving[k];
+        ga2d__body *b = &bodies[slot];
+        const ga2d__sbody *s = &sb[slot];
         if (b->type != GA2D_BODY_DYNAMIC) continue;
         b->sim.v = ga2d_vec_make(s->vx, s->vy);
         b->sim.w = s->w;
@@ -12535,11 +12545,13 @@ static void ga2d__rk4_end(ga2d__step_context *c, int begin, int end)
 static void ga2d__kick(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
+    ga2d__body *bodies = w->bodies; /* in locals: see ga2d__gather */
+    const int *moving = w->moving;
     ga2d_real h = c->h;
     ga2d__counts n = {0, 0, 0, 0};
     int k;
     for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
+        ga2d__body *b = &bodies[moving[k]];
         ga2d_vec a;
         ga2d_real alpha;
         if (b->type != GA2D_BODY_DYNAMIC) continue;
@@ -12678,12 +12690,15 @@ static GA2D__HOT void ga2d__cap_motion(ga2d__body_sim *b, ga2d_real max_speed, g
 /* Stage, over the moving bodies: the caps, x += h v, q <- q exp(w h e12). */
 static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
 {
-    ga2d_world *w = c->world;
+    const ga2d_world *w = c->world;
+    ga2d__body *bodies = w->bodies; /* in locals: see ga2d__gather */
+    const int *moving = w->moving;
+    const ga2d_real max_speed = GA2D__MAX_SPEED * w->def.length_units_per_meter, max_turn_rate = GA2D__MAX_TURN / c->h;
     ga2d__counts n = {0, 0, 0, 0};
     int k;
     for (k = begin; k < end; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        if (b->type == GA2D_BODY_DYNAMIC) ga2d__cap_motion(&b->sim, GA2D__MAX_SPEED * w->def.length_units_per_meter, GA2D__MAX_TURN / c->h, &n);
+        ga2d__body *b = &bodies[moving[k]];
+        if (b->type == GA2D_BODY_DYNAMIC) ga2d__cap_motion(&b->sim, max_speed, max_turn_rate, &n);
         ga2d__drift(w, &b->sim, c->h, &n);
     }
     ga2d__counts_put(c, begin, &n);
