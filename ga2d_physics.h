@@ -885,6 +885,9 @@ typedef struct ga2d_world_counters {
                                colouring of its contacts and joints (the
                                same bodies touching and joined, moved the
                                same way), 0 when it coloured them anew */
+    int boxes_kept;         /* moving bodies whose tree boxes the last step
+                               kept on their motion alone, without finding
+                               their shapes' boxes (the others' were found) */
 } ga2d_world_counters;
 
 GA2D_API ga2d_world_def ga2d_default_world_def(void);
@@ -4745,7 +4748,9 @@ typedef struct ga2d__body {
     ga2d_real extent;            /* the farthest its shapes reach from the centre */
     ga2d_real min_extent;        /* its thinnest shape's inner reach (continuous collision) */
     int is_bullet;
-    ga2d_real box_slack;         /* in a step: how far its shapes can go and stay in their tree boxes (-1: unknown) */
+    ga2d_real box_slack;         /* how far its shapes can go and stay in their tree boxes, as last
+                                    found at a step's start, less its motion since (-1: unknown) */
+    ga2d_real box_excess;        /* how far its boxes reach past its shapes at most, then, plus that motion */
 } ga2d__body;
 
 /* A chain slot: its body and its segments' shape slots, in order. */
@@ -4789,7 +4794,7 @@ typedef struct ga2d__contact_constraint ga2d__contact_constraint;
 typedef struct ga2d__group ga2d__group;
 typedef struct ga2d__fill { int count, skip; } ga2d__fill;
 /* What a stage over the bodies counts (ga2d__run_counted). */
-typedef struct ga2d__counts { int speed_caps, rotation_updates, integrated_bodies, unfinite; } ga2d__counts;
+typedef struct ga2d__counts { int speed_caps, rotation_updates, integrated_bodies, unfinite, boxes_kept; } ga2d__counts;
 typedef struct ga2d__group_extra ga2d__group_extra;
 typedef struct ga2d__sbody ga2d__sbody;
 typedef struct ga2d__lane_key ga2d__lane_key;
@@ -5066,6 +5071,27 @@ static void ga2d__run_split(ga2d__step_context *c, ga2d__range_fn *fn, int n)
 {
     if (n < GA2D__SPLIT_MIN) ga2d__run(c, fn, n);
     else ga2d__run_blocks(c, fn, 0, n, GA2D__SPLIT_BLOCK);
+}
+
+/* A stage over the moving bodies that counts (ga2d__counts) rather than
+   writing the world's counters, and leaves a body whose velocity is no
+   longer finite to be contained after it: one body's update reads no
+   other's, so containing it later changes nothing, and the stage can run
+   in ranges on the workers.  A range hands its counts here (inlined, so
+   that its stage keeps them in registers). */
+static GA2D__HOT void ga2d__counts_add(ga2d__step_context *c, const ga2d__counts *n)
+{
+    ga2d_world *w = c->world;
+    w->counters.speed_caps += n->speed_caps;
+    w->counters.rotation_updates += n->rotation_updates;
+    w->counters.integrated_bodies += n->integrated_bodies;
+    w->counters.boxes_kept += n->boxes_kept;
+    c->unfinite += n->unfinite;
+}
+static GA2D__HOT void ga2d__counts_put(ga2d__step_context *c, int begin, const ga2d__counts *n)
+{
+    if (c->counts_split) c->counts[begin / GA2D__SPLIT_BLOCK] = *n; /* a range's own slot (ranges start on blocks) */
+    else ga2d__counts_add(c, n);
 }
 
 /* Why a world refuses changes: the bits of ga2d_world.lock.  User code
@@ -5470,7 +5496,11 @@ static void ga2d__release(ga2d_world *w, void **arr, int *cap, size_t elem)
 
 static ga2d_result ga2d__compact(ga2d_world *w)
 {
+    int k;
     if (!ga2d__contacts_compact(w)) return GA2D_ERR_OUT_OF_MEMORY;
+    /* what can be found again is forgotten: the boxes' slack too, so that
+       a compacted world takes every body's boxes from its shapes */
+    for (k = 0; k < w->body_used; ++k) w->bodies[k].box_slack = -1;
     ga2d__release(w, (void **)&w->new_pairs, &w->new_pair_capacity, sizeof *w->new_pairs);
     ga2d__step_release(w);
     return GA2D_OK;
@@ -5649,15 +5679,20 @@ static int ga2d__needs_refit(const ga2d_world *w, const ga2d__body *b, const ga2
     return !(ga2d_aabb_contains(box, reach) && ga2d_aabb_contains(ga2d__fatten(*fat, 4 * margin), box));
 }
 
-/* How far inner can move, in any direction, and stay in outer (negative:
-   it is out). */
-static ga2d_real ga2d__box_slack(ga2d_aabb outer, ga2d_aabb inner)
+/* How far outer reaches past inner on its nearest side (how far inner
+   can move, in any direction, and stay in it; negative: it is out) and on
+   its farthest, taken into *least and *most. */
+static void ga2d__box_gaps(ga2d_aabb outer, ga2d_aabb inner, ga2d_real *least, ga2d_real *most)
 {
     ga2d_real a = inner.lower.x - outer.lower.x, b = inner.lower.y - outer.lower.y;
     ga2d_real c = outer.upper.x - inner.upper.x, d = outer.upper.y - inner.upper.y;
-    a = a < b ? a : b;
-    c = c < d ? c : d;
-    return a < c ? a : c;
+    ga2d_real lo = a < b ? a : b, hi = a > b ? a : b;
+    lo = c < lo ? c : lo;
+    lo = d < lo ? d : lo;
+    hi = c > hi ? c : hi;
+    hi = d > hi ? d : hi;
+    *least = lo < *least ? lo : *least;
+    *most = hi > *most ? hi : *most;
 }
 
 /* The tree takes a body's shapes' new fat boxes and they are queued for
@@ -5667,6 +5702,8 @@ static void ga2d__update_proxy(ga2d_world *w, int slot)
 {
     ga2d__body *b = &w->bodies[slot];
     int s;
+    b->box_slack = -1; /* moved, or its shapes or mass changed (ga2d__update_mass's
+                          callers come here): found again at the next step */
     for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
         ga2d__shape *sh = &w->shapes[s];
         ga2d_aabb fat, now;
@@ -8003,46 +8040,105 @@ static void ga2d__bits_zero(uint64_t *bits, int n)
     if (n > 0) memset(bits, 0, (size_t)((n + 63) / 64) * sizeof *bits);
 }
 
+/* How far any point of a body's shapes has moved along either axis since
+   the step began (or, before the step's start, since the last one's):
+   its centre's displacement along the axis that moved most, plus the
+   chord its turn sweeps at its extent, r |1 - dq| <= r (|1 - c| + |s|)
+   for dq = q q0~. */
+static GA2D__HOT ga2d_real ga2d__moved_since_start(const ga2d__body *b)
+{
+    ga2d_vec d = ga2d_vec_sub(b->sim.center, b->sim.center0);
+    ga2d_rotor dq = ga2d_rotor_mul(b->sim.q, ga2d_rotor_inverse(b->sim.q0));
+    ga2d_real chord = (GA2D__FABS(1 - dq.c) + GA2D__FABS(dq.s)) * b->extent, shift = GA2D__FABS(d.x);
+    shift = GA2D__FABS(d.y) > shift ? GA2D__FABS(d.y) : shift;
+    return shift + chord;
+}
+
+/* The rounding a body's box tests allow for: GA2D__BOX_GUARD ulps of its
+   coordinates' size (a shape's box at a pose is a few roundings of
+   |c| + extent off the exact one; the reach's sums and the slack's
+   differences a few more). */
+#define GA2D__BOX_GUARD 32
+static ga2d_real ga2d__box_guard(const ga2d__body *b, ga2d_real reach)
+{
+    return GA2D__R(GA2D__BOX_GUARD) * GA2D__EPS * (GA2D__FABS(b->sim.center.x) + GA2D__FABS(b->sim.center.y) + b->extent + reach);
+}
+
+/* Whether a body's tree boxes, as its shapes' boxes last found them at a
+   step's start, still pass both of ga2d__needs_refit's tests in this step,
+   told from its motion since alone, no shape's box found: each shape has
+   moved by at most m along an axis (ga2d__moved_since_start), and its
+   reach adds at most |v|max dt plus its swing, so the boxes still hold
+   it while the slack found then (its boxes' nearest side past its
+   shape's) is at least m, the reach and the guard; and each box, which
+   reached at most `excess` past its shape, reaches at most excess + m
+   past it now, within the 4 margins beyond the margin that a box
+   re-fitted now would have (ga2d__needs_refit's second test).  A body at
+   rest finds its shapes' boxes again once its motion has used its
+   slack.  The test only ever says yes where the shapes' boxes would: a
+   body it turns away takes that test, so the boxes are the same bits. */
+static GA2D__HOT int ga2d__boxes_kept(const ga2d_world *w, ga2d__body *b, ga2d_real dt)
+{
+    ga2d_real moved, turn, speed, reach, guard;
+    if (!(b->box_slack >= 0)) return 0;
+    moved = ga2d__moved_since_start(b);
+    turn = GA2D__FABS(b->sim.w) * dt;
+    speed = GA2D__FABS(b->sim.v.x) > GA2D__FABS(b->sim.v.y) ? GA2D__FABS(b->sim.v.x) : GA2D__FABS(b->sim.v.y);
+    reach = speed * dt + b->extent * (turn < 1 ? turn : 1);
+    guard = ga2d__box_guard(b, reach);
+    /* written to fail on a NaN */
+    if (!(moved + reach + guard <= b->box_slack && b->box_excess + moved + 2 * guard <= 5 * ga2d__margin(w, b))) return 0;
+    b->box_slack -= moved + guard;
+    b->box_excess += moved + guard;
+    return 1;
+}
+
 /* Stage, over the moving bodies: a body any of whose shapes' fat boxes no
    longer holds what it can reach in this step gets new boxes for all its
    shapes, written into their own tree leaves (a leaf's box is read by
    nothing else until ga2d__refit_proxies moves it in the tree), and its
-   bit.  Each body's box slack is kept for ga2d__mark_strays. */
+   bit.  Most bodies are told theirs still fit from their motion alone
+   (ga2d__boxes_kept); the others' slack and excess are found from their
+   shapes' boxes.  The slack is kept for ga2d__mark_strays too. */
 static void ga2d__mark_refits(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
+    ga2d__counts n = {0, 0, 0, 0, 0};
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
         int s, refit = 0;
         ga2d_aabb fat, now;
-        ga2d_real slack = GA2D__R(GA2D_MAX_COORDINATE), gap;
-        for (s = b->shape_head; s >= 0 && !refit; s = w->shapes[s].next) {
-            refit = ga2d__needs_refit(w, b, &w->shapes[s], &fat, &now);
-            gap = ga2d__box_slack(ga2d__fat_box(w, &w->shapes[s]), now);
-            slack = gap < slack ? gap : slack;
-        }
-        if (!refit) {
-            b->box_slack = slack;
+        ga2d_real slack = GA2D__R(GA2D_MAX_COORDINATE), excess = 0;
+        if (ga2d__boxes_kept(w, b, c->dt)) {
+            ++n.boxes_kept;
             continue;
         }
-        if (b->shape_count == 1) {
-            const ga2d__shape *sh = &w->shapes[b->shape_head];
-            ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
-            slack = ga2d__box_slack(fat, now);
-        } else {
+        for (s = b->shape_head; s >= 0 && !refit; s = w->shapes[s].next) {
+            refit = ga2d__needs_refit(w, b, &w->shapes[s], &fat, &now);
+            ga2d__box_gaps(ga2d__fat_box(w, &w->shapes[s]), now, &slack, &excess);
+        }
+        if (refit) {
             slack = GA2D__R(GA2D_MAX_COORDINATE);
-            for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
-                const ga2d__shape *sh = &w->shapes[s];
-                ga2d__needs_refit(w, b, sh, &fat, &now);
+            excess = 0;
+            if (b->shape_count == 1) {
+                const ga2d__shape *sh = &w->shapes[b->shape_head];
                 ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
-                gap = ga2d__box_slack(fat, now);
-                slack = gap < slack ? gap : slack;
+                ga2d__box_gaps(fat, now, &slack, &excess);
+            } else {
+                for (s = b->shape_head; s >= 0; s = w->shapes[s].next) {
+                    const ga2d__shape *sh = &w->shapes[s];
+                    ga2d__needs_refit(w, b, sh, &fat, &now);
+                    ga2d__tree_of(w, sh)->nodes[sh->proxy].box = fat;
+                    ga2d__box_gaps(fat, now, &slack, &excess);
+                }
             }
+            c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
         }
         b->box_slack = slack;
-        c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
+        b->box_excess = excess;
     }
+    ga2d__counts_put(c, begin, &n);
 }
 
 /* Stage, over the moving bodies, after the substeps (and continuous
@@ -8064,14 +8160,11 @@ static void ga2d__mark_strays(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         const ga2d__body *b = &w->bodies[w->moving[k]];
-        ga2d_transform x = ga2d__body_xf(b);
-        ga2d_vec d = ga2d_vec_sub(b->sim.center, b->sim.center0);
-        ga2d_rotor dq = ga2d_rotor_mul(b->sim.q, ga2d_rotor_inverse(b->sim.q0));
-        ga2d_real chord = (GA2D__FABS(1 - dq.c) + GA2D__FABS(dq.s)) * b->extent, shift = GA2D__FABS(d.x);
         ga2d_real guard = 16 * GA2D__EPS * (GA2D__FABS(b->sim.center.x) + GA2D__FABS(b->sim.center.y) + b->extent);
+        ga2d_transform x;
         int s, out = 0;
-        shift = GA2D__FABS(d.y) > shift ? GA2D__FABS(d.y) : shift;
-        if (shift + chord + guard <= b->box_slack) continue;
+        if (ga2d__moved_since_start(b) + guard <= b->box_slack) continue;
+        x = ga2d__body_xf(b);
         for (s = b->shape_head; s >= 0 && !out; s = w->shapes[s].next) {
             const ga2d__shape *sh = &w->shapes[s];
             out = !ga2d_aabb_contains(ga2d__tree_of(w, sh)->nodes[sh->proxy].box, ga2d__shape_aabb(sh, x));
@@ -8083,6 +8176,9 @@ static void ga2d__mark_strays(ga2d__step_context *c, int begin, int end)
             ga2d__needs_refit(w, b, sh, &fat, &now);
             *box = ga2d_aabb_union(*box, fat);
         }
+        /* its boxes grew: their excess is past what box_slack's body
+           knew, but the motion that took the shape out of them is more
+           than its slack, so the next step finds them anew */
         c->refits[k >> 6] |= (uint64_t)1 << (k & 63);
     }
 }
@@ -12390,25 +12486,6 @@ static void ga2d__cap_body(ga2d__step_context *c, ga2d__body *b, int slot)
         ga2d__contain(c->world, slot);
 }
 
-/* A stage over the moving bodies that counts (ga2d__counts) rather than
-   writing the world's counters, and leaves a body whose velocity is no
-   longer finite to be contained after it: one body's update reads no
-   other's, so containing it later changes nothing, and the stage can run
-   in ranges on the workers.  A range hands its counts here. */
-static void ga2d__counts_add(ga2d__step_context *c, const ga2d__counts *n)
-{
-    ga2d_world *w = c->world;
-    w->counters.speed_caps += n->speed_caps;
-    w->counters.rotation_updates += n->rotation_updates;
-    w->counters.integrated_bodies += n->integrated_bodies;
-    c->unfinite += n->unfinite;
-}
-static void ga2d__counts_put(ga2d__step_context *c, int begin, const ga2d__counts *n)
-{
-    if (c->counts_split) c->counts[begin / GA2D__SPLIT_BLOCK] = *n; /* a range's own slot (ranges start on blocks) */
-    else ga2d__counts_add(c, n);
-}
-
 /* Runs a counting stage over the n moving bodies, on the workers when it
    is long enough (and memory allows), then contains the bodies it left
    with a velocity not finite. */
@@ -12548,7 +12625,7 @@ static void ga2d__kick(ga2d__step_context *c, int begin, int end)
     ga2d__body *bodies = w->bodies; /* in locals: see ga2d__gather */
     const int *moving = w->moving;
     ga2d_real h = c->h;
-    ga2d__counts n = {0, 0, 0, 0};
+    ga2d__counts n = {0, 0, 0, 0, 0};
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &bodies[moving[k]];
@@ -12694,7 +12771,7 @@ static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
     ga2d__body *bodies = w->bodies; /* in locals: see ga2d__gather */
     const int *moving = w->moving;
     const ga2d_real max_speed = GA2D__MAX_SPEED * w->def.length_units_per_meter, max_turn_rate = GA2D__MAX_TURN / c->h;
-    ga2d__counts n = {0, 0, 0, 0};
+    ga2d__counts n = {0, 0, 0, 0, 0};
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &bodies[moving[k]];
@@ -13105,6 +13182,7 @@ static void ga2d__step_begin(ga2d_world *w, ga2d_real dt, ga2d_real h)
     w->counters.sensor_tests = 0;
     w->counters.round_contacts = 0;
     w->counters.colouring_kept = 0;
+    w->counters.boxes_kept = 0;
 }
 
 /* Book-keeping after the impulses are stored: each constraint that
@@ -13166,7 +13244,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__step_begin(w, dt, h);
     /* collision: fat boxes, new pairs, manifolds */
     ga2d__bits_zero(c->refits, w->moving_count);
-    ga2d__run_split(c, ga2d__mark_refits, w->moving_count);
+    ga2d__run_counted(c, ga2d__mark_refits, w->moving_count);
     ga2d__refit_proxies(c);
     ga2d__run(c, ga2d__find_pairs, w->move_count);
     ga2d__create_pairs(c);
