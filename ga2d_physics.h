@@ -4873,6 +4873,9 @@ typedef struct ga2d__step_context {
     int joint_bias_in_relax;     /* the PGS kinds' velocity passes push joints together too */
     int *joint_order;            /* the step's joints (pool slots): in creation order, then by colour */
     int joint_order_capacity, joint_active;
+    ga2d__lane_key *joint_keys;  /* each step joint's bodies and sides moved (ga2d__joint_key), in
+                                    joint_order's creation order, from ga2d__prepare_joints */
+    int joint_key_capacity;
     int *joint_sorted;           /* scratch while joints are coloured: the order by colour */
     int joint_sorted_capacity;
     int *joint_perm;             /* the colour order as positions in creation order (kept with the colouring) */
@@ -4924,6 +4927,7 @@ typedef struct ga2d__step_context {
     uint64_t *changed;           /* a bit per pool contact the narrowphase flagged */
     int changed_capacity;        /* in 64-bit words */
     uint64_t *refits;            /* a bit per moving body whose tree leaf holds a new box */
+    ga2d__tree *stray_tree;      /* the tree ga2d__flag_strays looks through */
     int refit_capacity;          /* in 64-bit words */
     ga2d__counts *counts;        /* a body stage's counts per block (ga2d__run_counted) */
     int counts_capacity, counts_split;
@@ -8183,13 +8187,26 @@ static void ga2d__mark_strays(ga2d__step_context *c, int begin, int end)
     }
 }
 
+/* Stage, over the leaves of c->stray_tree given new boxes this step,
+   with every box above them tightened: each that has left its sibling at
+   some level (ga2d__tree_strayed) is flagged for moving, its entry in
+   the tree's units made ~leaf.  The tree is only read, so the leaves are
+   looked at in ranges on the workers, all in the tree as tightened. */
+static void ga2d__flag_strays(ga2d__step_context *c, int begin, int end)
+{
+    ga2d__tree *t = c->stray_tree;
+    int i;
+    for (i = begin; i < end; ++i)
+        if (ga2d__tree_strayed(t, t->units[i])) t->units[i] = ~t->units[i];
+}
+
 /* Book-keeping: the marked bodies' new shape boxes are fitted into their
    trees: every box above them tightened, then each that left its
-   parent's box moved (taken out, put back by the heuristic), in the
-   moving list's order (the trees' shape depends on it; the pairs they
-   give, on the boxes alone); the shapes queue for pair finding.  Then
-   the queue is sorted, without destroyed shapes and repeats (a slot
-   destroyed and reused). */
+   parent's box in the tree so tightened moved (taken out, put back by the
+   heuristic), in the moving list's order (the trees' shape depends on it;
+   the pairs they give, on the boxes alone); the shapes queue for pair
+   finding.  Then the queue is sorted, without destroyed shapes and
+   repeats (a slot destroyed and reused). */
 static void ga2d__refit_proxies(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
@@ -8208,8 +8225,10 @@ static void ga2d__refit_proxies(ga2d__step_context *c)
         ga2d__tree *t = &w->trees[k];
         int i;
         if (t->marked) ga2d__tree_tighten(t);
+        c->stray_tree = t;
+        ga2d__run_split(c, ga2d__flag_strays, t->moved);
         for (i = 0; i < t->moved; ++i)
-            if (ga2d__tree_strayed(t, t->units[i])) ga2d__tree_move(t, t->units[i], t->nodes[t->units[i]].box);
+            if (t->units[i] < 0) ga2d__tree_move(t, ~t->units[i], t->nodes[~t->units[i]].box);
         t->moved = 0;
     }
     if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
@@ -10013,7 +10032,6 @@ static void ga2d__joints_kept(ga2d__step_context *c)
    its colouring step after step; 0 when not kept. */
 static int ga2d__lanes_kept(ga2d__step_context *c)
 {
-    const ga2d_world *w = c->world;
     int i, gi, l, extras = 0, round = 0, n = c->constraint_count;
     if (c->joint_active != c->kept_joints || c->lane_key_count != n + c->joint_active) return 0;
     for (i = 0; i < n; ++i) {
@@ -10022,10 +10040,8 @@ static int ga2d__lanes_kept(ga2d__step_context *c)
         if (k->a != cc->a || k->b != cc->b || k->moves != cc->moves) return 0;
     }
     for (i = 0; i < c->joint_active; ++i) {
-        ga2d__lane_key now;
-        const ga2d__lane_key *k = &c->lane_keys[n + i];
-        ga2d__joint_key(&w->joints[c->joint_order[i]], &now);
-        if (k->a != now.a || k->b != now.b || k->moves != now.moves) return 0;
+        const ga2d__lane_key *k = &c->lane_keys[n + i], *now = &c->joint_keys[i];
+        if (k->a != now->a || k->b != now->b || k->moves != now->moves) return 0;
     }
     if (!ga2d__reserve_sbodies(c)) {
         (void)ga2d__solve_nothing(c);
@@ -11466,7 +11482,8 @@ static void ga2d__order_joints(ga2d__step_context *c)
     uint64_t last = 0; /* the largest serial listed */
     c->joint_active = 0;
     if (w->joint_count == 0) return;
-    if (!ga2d__grow(&w->mem, (void **)&c->joint_order, &c->joint_order_capacity, w->joint_count, sizeof *c->joint_order)) {
+    if (!ga2d__grow(&w->mem, (void **)&c->joint_order, &c->joint_order_capacity, w->joint_count, sizeof *c->joint_order) ||
+        !ga2d__grow(&w->mem, (void **)&c->joint_keys, &c->joint_key_capacity, w->joint_count, sizeof *c->joint_keys)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
@@ -11544,6 +11561,7 @@ static void ga2d__prepare_joints(ga2d__step_context *c, int begin, int end)
         j->iia = ma ? a->sim.inv_inertia : 0;
         j->iib = mb ? b->sim.inv_inertia : 0;
         j->axial_mass = j->iia + j->iib > 0 ? 1 / (j->iia + j->iib) : 0;
+        ga2d__joint_key(j, &c->joint_keys[i]); /* for ga2d__lanes_kept, read here while j is at hand */
         /* a spring asked stiffer than a quarter of the substep rate is
            made at that rate (as contacts are): stiffer, the one biased
            pass a substep rings and grows */
@@ -12325,6 +12343,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->tally, c->tally_capacity);
     GA2D__FREE_ARRAY(a, c->counts, c->counts_capacity);
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
+    GA2D__FREE_ARRAY(a, c->joint_keys, c->joint_key_capacity);
     GA2D__FREE_ARRAY(a, c->joint_sorted, c->joint_sorted_capacity);
     GA2D__FREE_ARRAY(a, c->joint_perm, c->joint_perm_capacity);
     GA2D__FREE_ARRAY(a, c->jgroups, c->jgroup_capacity);
