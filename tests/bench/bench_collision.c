@@ -257,7 +257,7 @@ static void tree_pair_found(void *ctx, int other)
     if (bp->in_move[other] && other < q->self) return; /* the smaller queued slot finds it */
     if (bp->sc->is_static[other] && bp->sc->is_static[q->self]) return;
     key = pair_key(q->self, other);
-    if (ga2d__pairs_find(bp->w, key) >= 0) return;
+    if (ga2d__pairs_has(bp->w, key)) return;
     if (bp->new_count == bp->new_cap) {
         bp->new_cap = bp->new_cap ? 2 * bp->new_cap : 1024;
         bp->new_pairs = (uint64_t *)realloc(bp->new_pairs, (size_t)bp->new_cap * sizeof *bp->new_pairs);
@@ -295,7 +295,7 @@ static void tree_find_pairs(tree_bp *bp)
         uint64_t key = bp->new_pairs[k];
         if (k > 0 && bp->new_pairs[k - 1] == key) continue;
         if (!ga2d__pairs_reserve(bp->w)) exit(2);
-        ga2d__pairs_put(bp->w->pair_keys, bp->w->pair_vals, bp->w->pair_capacity, key, 0);
+        ga2d__pairs_put(bp->w->pair_keys, bp->w->pair_capacity, key);
         ++bp->w->contact_count; /* the pair set's fill: one key per contact (ga2d__pairs_reserve) */
         if (bp->list_count == bp->list_cap) {
             bp->list_cap = bp->list_cap ? 2 * bp->list_cap : 1024;
