@@ -8673,6 +8673,14 @@ struct ga2d__group_extra {
 /* A point's anchors now, relative to each centre. */
 typedef struct ga2d__wanchors { ga2d__w ax, ay, bx, by; } ga2d__wanchors;
 
+/* A point's arms there: each anchor's outer product with the normal n and
+   the tangent t = (ny, -nx), r ^ u = rx uy - ry ux, the e12 part of r u.
+   They are all a pass needs of the anchors: the bodies' spins move the
+   point along u by w (rB ^ u) - w (rA ^ u), an impulse lambda u turns
+   each by lambda (r ^ u) over its inertia, and the effective mass is
+   1 / (mA^-1 + mB^-1 + IA^-1 (rA ^ u)^2 + IB^-1 (rB ^ u)^2). */
+typedef struct ga2d__warms { ga2d__w na, nb, ta, tb; } ga2d__warms;
+
 struct ga2d__group {
     int a[GA2D__LANES], b[GA2D__LANES];
     /* beside the body slots, which every pass reads first */
@@ -8695,7 +8703,7 @@ struct ga2d__group {
     ga2d__w k12;            /* the points' normal coupling (ga2d__coupling) */
     ga2d__w share;          /* where the point lies from A's anchor to B's (ga2d__share) */
     /* found once per position of the bodies (ga2d__wfind), with the masses */
-    ga2d__wanchors at[2];   /* the points' anchors there */
+    ga2d__warms arm[2];     /* the points' arms there */
     ga2d__w sep[2];         /* their separations there */
 };
 
@@ -9317,36 +9325,41 @@ static GA2D__HOT ga2d__w ga2d__wpoint_now(const ga2d__group *g, int k, const ga2
     return ga2d__wadd(g->adjust[k], ga2d__wdot(ex, ey, g->nx, g->ny));
 }
 
-/* The relative velocity of the anchor points along (ux, uy), as
-   ga2d__relative_velocity. */
-static GA2D__HOT ga2d__w ga2d__wrelative(const ga2d__wbody *A, const ga2d__wbody *B, const ga2d__wanchors *r, ga2d__w ux,
-                                         ga2d__w uy)
+/* r ^ u = rx uy - ry ux, lane by lane (the arm of u at r) */
+static GA2D__HOT ga2d__w ga2d__wwedge(ga2d__w rx, ga2d__w ry, ga2d__w ux, ga2d__w uy)
 {
-    ga2d__w rvx = ga2d__wsub(ga2d__wsub(B->vx, ga2d__wmul(r->by, B->w)), ga2d__wsub(A->vx, ga2d__wmul(r->ay, A->w)));
-    ga2d__w rvy = ga2d__wsub(ga2d__wadd(B->vy, ga2d__wmul(r->bx, B->w)), ga2d__wadd(A->vy, ga2d__wmul(r->ax, A->w)));
-    return ga2d__wdot(rvx, rvy, ux, uy);
+    return ga2d__wsub(ga2d__wmul(rx, uy), ga2d__wmul(ry, ux));
 }
 
-/* The impulse lambda (ux, uy) at the anchors, as ga2d__apply_impulse. */
-static GA2D__HOT void ga2d__wapply(const ga2d__group *g, ga2d__wbody *A, ga2d__wbody *B, const ga2d__wanchors *r,
-                                   ga2d__w px, ga2d__w py)
+/* The relative velocity of a point's anchors along u, as
+   ga2d__relative_velocity, from the centres' along u (`lin`, the same for
+   both points) and the arms of u there (a, b). */
+static GA2D__HOT ga2d__w ga2d__wrelative(const ga2d__wbody *A, const ga2d__wbody *B, ga2d__w lin, ga2d__w a, ga2d__w b)
+{
+    return ga2d__wsub(ga2d__wadd(lin, ga2d__wmul(B->w, b)), ga2d__wmul(A->w, a));
+}
+
+/* The impulse (px, py) through both centres and the moments ma, mb (the
+   impulses' arms times their sizes, summed over the points), as
+   ga2d__apply_impulse. */
+static GA2D__HOT void ga2d__wapply(const ga2d__group *g, ga2d__wbody *A, ga2d__wbody *B, ga2d__w px, ga2d__w py,
+                                   ga2d__w ma, ga2d__w mb)
 {
     A->vx = ga2d__wsub(A->vx, ga2d__wmul(px, g->ima));
     A->vy = ga2d__wsub(A->vy, ga2d__wmul(py, g->ima));
-    A->w = ga2d__wsub(A->w, ga2d__wmul(g->iia, ga2d__wsub(ga2d__wmul(r->ax, py), ga2d__wmul(r->ay, px))));
+    A->w = ga2d__wsub(A->w, ga2d__wmul(g->iia, ma));
     B->vx = ga2d__wadd(B->vx, ga2d__wmul(px, g->imb));
     B->vy = ga2d__wadd(B->vy, ga2d__wmul(py, g->imb));
-    B->w = ga2d__wadd(B->w, ga2d__wmul(g->iib, ga2d__wsub(ga2d__wmul(r->bx, py), ga2d__wmul(r->by, px))));
+    B->w = ga2d__wadd(B->w, ga2d__wmul(g->iib, mb));
 }
 
-/* ga2d__effective_mass for the lanes, zero where the point is absent (a
-   second point by has2; an empty lane's first has no inverse mass). */
-static GA2D__HOT ga2d__w ga2d__weffective_mass(const ga2d__group *g, int k, const ga2d__wanchors *r, ga2d__w ux, ga2d__w uy)
+/* ga2d__effective_mass for the lanes, from the arms a, b of the
+   direction at the anchors; zero where the point is absent (a second point
+   by has2; an empty lane's first has no inverse mass). */
+static GA2D__HOT ga2d__w ga2d__weffective_mass(const ga2d__group *g, int k, ga2d__w a, ga2d__w b)
 {
-    ga2d__w wa = ga2d__wsub(ga2d__wmul(r->ax, uy), ga2d__wmul(r->ay, ux));
-    ga2d__w wb = ga2d__wsub(ga2d__wmul(r->bx, uy), ga2d__wmul(r->by, ux));
-    ga2d__w kk = ga2d__wadd(ga2d__wadd(ga2d__wadd(g->ima, g->imb), ga2d__wmul(ga2d__wmul(g->iia, wa), wa)),
-                            ga2d__wmul(ga2d__wmul(g->iib, wb), wb));
+    ga2d__w kk = ga2d__wadd(ga2d__wadd(ga2d__wadd(g->ima, g->imb), ga2d__wmul(ga2d__wmul(g->iia, a), a)),
+                            ga2d__wmul(ga2d__wmul(g->iib, b), b));
     ga2d__w zero = ga2d__wsplat(0), one = ga2d__wsplat(1);
     ga2d__wmask pos = ga2d__wgt(kk, zero);
     ga2d__w m = ga2d__wsel(pos, ga2d__wdiv(one, ga2d__wsel(pos, kk, one)), zero);
@@ -9359,15 +9372,13 @@ static GA2D__HOT ga2d__w ga2d__wclamp(ga2d__w x, ga2d__w lo, ga2d__w hi)
     return ga2d__wsel(ga2d__wgt(x, hi), hi, ga2d__wsel(ga2d__wgt(lo, x), lo, x));
 }
 
-/* ga2d__coupling for the lanes, at anchors r (zero where a point is absent). */
-static GA2D__HOT ga2d__w ga2d__wcoupling(const ga2d__group *g, const ga2d__wanchors *r)
+/* ga2d__coupling for the lanes, from the points' normal arms (zero where
+   a point is absent). */
+static GA2D__HOT ga2d__w ga2d__wcoupling(const ga2d__group *g)
 {
-    ga2d__w a1 = ga2d__wsub(ga2d__wmul(r[0].ax, g->ny), ga2d__wmul(r[0].ay, g->nx));
-    ga2d__w a2 = ga2d__wsub(ga2d__wmul(r[1].ax, g->ny), ga2d__wmul(r[1].ay, g->nx));
-    ga2d__w b1 = ga2d__wsub(ga2d__wmul(r[0].bx, g->ny), ga2d__wmul(r[0].by, g->nx));
-    ga2d__w b2 = ga2d__wsub(ga2d__wmul(r[1].bx, g->ny), ga2d__wmul(r[1].by, g->nx));
-    ga2d__w k = ga2d__wadd(ga2d__wadd(ga2d__wadd(g->ima, g->imb), ga2d__wmul(ga2d__wmul(g->iia, a1), a2)),
-                           ga2d__wmul(ga2d__wmul(g->iib, b1), b2));
+    const ga2d__warms *r = g->arm;
+    ga2d__w k = ga2d__wadd(ga2d__wadd(ga2d__wadd(g->ima, g->imb), ga2d__wmul(ga2d__wmul(g->iia, r[0].na), r[1].na)),
+                           ga2d__wmul(ga2d__wmul(g->iib, r[0].nb), r[1].nb));
     return ga2d__wmul(k, g->has2);
 }
 
@@ -9382,13 +9393,20 @@ static GA2D__HOT ga2d__w ga2d__wcoupling(const ga2d__group *g, const ga2d__wanch
    changes none. */
 static GA2D__HOT void ga2d__wfind(ga2d__group *g, const ga2d__wbody *A, const ga2d__wbody *B, int friction, int extras)
 {
+    ga2d__w tx = g->ny, ty = ga2d__wsub(ga2d__wsplat(0), g->nx);
     int k;
     for (k = 0; k < 2; ++k) {
-        g->sep[k] = ga2d__wpoint_now(g, k, A, B, &g->at[k], extras);
-        g->nmass[k] = ga2d__weffective_mass(g, k, &g->at[k], g->nx, g->ny);
-        if (friction) g->tmass[k] = ga2d__weffective_mass(g, k, &g->at[k], g->ny, ga2d__wsub(ga2d__wsplat(0), g->nx));
+        ga2d__wanchors r;
+        ga2d__warms *m = &g->arm[k];
+        g->sep[k] = ga2d__wpoint_now(g, k, A, B, &r, extras);
+        m->na = ga2d__wwedge(r.ax, r.ay, g->nx, g->ny);
+        m->nb = ga2d__wwedge(r.bx, r.by, g->nx, g->ny);
+        m->ta = ga2d__wwedge(r.ax, r.ay, tx, ty);
+        m->tb = ga2d__wwedge(r.bx, r.by, tx, ty);
+        g->nmass[k] = ga2d__weffective_mass(g, k, m->na, m->nb);
+        if (friction) g->tmass[k] = ga2d__weffective_mass(g, k, m->ta, m->tb);
     }
-    g->k12 = ga2d__wcoupling(g, g->at);
+    g->k12 = ga2d__wcoupling(g);
 }
 
 /* The two normal points of each lane solved together, as the linear
@@ -9446,16 +9464,23 @@ static GA2D__HOT void ga2d__wblock(const ga2d__group *g, const ga2d__w *inv_a, c
 static GA2D__HOT void ga2d__warm_group(ga2d__step_context *c, ga2d__group *g, int extras, int find, int friction)
 {
     ga2d__wbody A, B;
+    ga2d__w n, t, ma, mb;
     int k;
     ga2d__wload(c->sbodies, g->a, &A, find);
     ga2d__wload(c->sbodies, g->b, &B, find);
     if (find) ga2d__wfind(g, &A, &B, friction, extras);
+    /* both points' impulses at once: their sums along n and the tangent
+       (ny, -nx) through the centres, and their moments */
+    n = ga2d__wadd(g->nimp[0], g->nimp[1]);
+    t = ga2d__wadd(g->timp[0], g->timp[1]);
+    ma = mb = ga2d__wsplat(0);
     for (k = 0; k < 2; ++k) {
-        /* tangent (ny, -nx) */
-        ga2d__w px = ga2d__wadd(ga2d__wmul(g->nx, g->nimp[k]), ga2d__wmul(g->ny, g->timp[k]));
-        ga2d__w py = ga2d__wsub(ga2d__wmul(g->ny, g->nimp[k]), ga2d__wmul(g->nx, g->timp[k]));
-        ga2d__wapply(g, &A, &B, &g->at[k], px, py);
+        const ga2d__warms *m = &g->arm[k];
+        ma = ga2d__wadd(ma, ga2d__wadd(ga2d__wmul(m->na, g->nimp[k]), ga2d__wmul(m->ta, g->timp[k])));
+        mb = ga2d__wadd(mb, ga2d__wadd(ga2d__wmul(m->nb, g->nimp[k]), ga2d__wmul(m->tb, g->timp[k])));
     }
+    ga2d__wapply(g, &A, &B, ga2d__wadd(ga2d__wmul(g->nx, n), ga2d__wmul(g->ny, t)),
+                 ga2d__wsub(ga2d__wmul(g->ny, n), ga2d__wmul(g->nx, t)), ma, mb);
     if (extras && g->rolling) { /* the rolling resistance's, as the points' */
         A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, g->x->rimp));
         B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, g->x->rimp));
@@ -9516,10 +9541,11 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
 {
     const ga2d__w zero = ps->zero, one = ps->one;
     const int bias_kind = ps->bias_kind;
-    const ga2d__wanchors *r = g->at;
+    const ga2d__warms *r = g->arm;
     ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
     ga2d__wbody A, B;
-    ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero, vn;
+    ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero, vn, dvx, dvy, lin;
+    ga2d__w ma, mb, tsum;
     int k;
     ga2d__wload(c->sbodies, g->a, &A, fresh);
     ga2d__wload(c->sbodies, g->b, &B, fresh);
@@ -9530,6 +9556,10 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         soft_mass = ga2d__wsel(both, ps->soft_mass, ps->stiff_mass);
         soft_impulse = ga2d__wsel(both, ps->soft_impulse, ps->stiff_impulse);
     }
+    /* the centres' relative velocity along n, shared by both points */
+    dvx = ga2d__wsub(B.vx, A.vx);
+    dvy = ga2d__wsub(B.vy, A.vy);
+    lin = ga2d__wdot(dvx, dvy, g->nx, g->ny);
     for (k = 0; k < 2; ++k) {
         ga2d__w s = g->sep[k];
         ga2d__wmask apart = ga2d__wgt(s, zero);
@@ -9544,7 +9574,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
            disc), and the step went to NaN in two substeps; NGS's moves
            did the same with deep overlaps of small bodies.  Found once
            per position of the bodies (ga2d__wfind) */
-        vn = ga2d__wrelative(&A, &B, &r[k], g->nx, g->ny);
+        vn = ga2d__wrelative(&A, &B, lin, r[k].na, r[k].nb);
         if (bias_kind == GA2D__BIAS_SOFT) {
             /* the spring in impulse: its bias's push, and the part of
                the impulse it carries that the soft step lets go each pass
@@ -9588,23 +9618,39 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(vn, bias)), ga2d__wmul(impulse_scale, g->nimp[k])));
     }
     ga2d__wblock(g, inv_a, own, lambda);
-    for (k = 0; k < 2; ++k) {
-        g->nimp[k] = ga2d__wadd(g->nimp[k], lambda[k]);
-        ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(g->nx, lambda[k]), ga2d__wmul(g->ny, lambda[k]));
-    }
-    for (k = 0; ps->friction && k < 2; ++k) {
-        ga2d__w cap = ga2d__wmul(g->friction, g->nimp[k]), dt, total;
-        if (bias_kind == GA2D__BIAS_SOFT) { /* the cone only: the pass's velocities carry the bias */
-            total = ga2d__wclamp(g->timp[k], ga2d__wsub(zero, cap), cap);
-        } else {
-            ga2d__w vt = ga2d__wrelative(&A, &B, &r[k], tx, ty);
+    /* both points' impulses at once (they were found together) */
+    g->nimp[0] = ga2d__wadd(g->nimp[0], lambda[0]);
+    g->nimp[1] = ga2d__wadd(g->nimp[1], lambda[1]);
+    tsum = ga2d__wadd(lambda[0], lambda[1]);
+    ma = ga2d__wadd(ga2d__wmul(r[0].na, lambda[0]), ga2d__wmul(r[1].na, lambda[1]));
+    mb = ga2d__wadd(ga2d__wmul(r[0].nb, lambda[0]), ga2d__wmul(r[1].nb, lambda[1]));
+    ga2d__wapply(g, &A, &B, ga2d__wmul(g->nx, tsum), ga2d__wmul(g->ny, tsum), ma, mb);
+    if (ps->friction && bias_kind == GA2D__BIAS_SOFT) {
+        /* the cone only: the pass's velocities carry the bias.  No
+           velocity is read, so both points' changes go at once */
+        ga2d__w d[2];
+        for (k = 0; k < 2; ++k) {
+            ga2d__w cap = ga2d__wmul(g->friction, g->nimp[k]);
+            ga2d__w total = ga2d__wclamp(g->timp[k], ga2d__wsub(zero, cap), cap);
+            d[k] = ga2d__wsub(total, g->timp[k]);
+            g->timp[k] = total;
+        }
+        tsum = ga2d__wadd(d[0], d[1]);
+        ma = ga2d__wadd(ga2d__wmul(r[0].ta, d[0]), ga2d__wmul(r[1].ta, d[1]));
+        mb = ga2d__wadd(ga2d__wmul(r[0].tb, d[0]), ga2d__wmul(r[1].tb, d[1]));
+        ga2d__wapply(g, &A, &B, ga2d__wmul(tx, tsum), ga2d__wmul(ty, tsum), ma, mb);
+    } else if (ps->friction) {
+        /* point by point: the second sees the first's change */
+        for (k = 0; k < 2; ++k) {
+            ga2d__w cap = ga2d__wmul(g->friction, g->nimp[k]), dt, total, vt;
+            vt = ga2d__wrelative(&A, &B, ga2d__wdot(ga2d__wsub(B.vx, A.vx), ga2d__wsub(B.vy, A.vy), tx, ty), r[k].ta, r[k].tb);
             if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
             dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
             total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
+            dt = ga2d__wsub(total, g->timp[k]);
+            g->timp[k] = total;
+            ga2d__wapply(g, &A, &B, ga2d__wmul(tx, dt), ga2d__wmul(ty, dt), ga2d__wmul(r[k].ta, dt), ga2d__wmul(r[k].tb, dt));
         }
-        dt = ga2d__wsub(total, g->timp[k]);
-        g->timp[k] = total;
-        ga2d__wapply(g, &A, &B, &r[k], ga2d__wmul(tx, dt), ga2d__wmul(ty, dt));
     }
     if (extras && g->rolling) {
         /* rolling resistance: a torque impulse against the bodies'
