@@ -12553,11 +12553,11 @@ static void ga2d__cap_body(ga2d__step_context *c, ga2d__body *b, int slot)
 
 /* Runs a counting stage over the n moving bodies, on the workers when it
    is long enough (and memory allows), then contains the bodies it left
-   with a velocity not finite. */
-static void ga2d__run_counted(ga2d__step_context *c, ga2d__range_fn *fn, int n)
+   with a velocity not finite; returns how many it contained. */
+static int ga2d__run_counted(ga2d__step_context *c, ga2d__range_fn *fn, int n)
 {
     ga2d_world *w = c->world;
-    int blocks = (n + GA2D__SPLIT_BLOCK - 1) / GA2D__SPLIT_BLOCK, k;
+    int blocks = (n + GA2D__SPLIT_BLOCK - 1) / GA2D__SPLIT_BLOCK, k, contained;
     c->unfinite = 0;
     if (n >= GA2D__SPLIT_MIN && w->def.worker_count > 1 && w->def.enqueue_task &&
         ga2d__grow(&w->mem, (void **)&c->counts, &c->counts_capacity, blocks, sizeof *c->counts)) {
@@ -12569,12 +12569,14 @@ static void ga2d__run_counted(ga2d__step_context *c, ga2d__range_fn *fn, int n)
     } else {
         ga2d__run(c, fn, n);
     }
+    contained = c->unfinite;
     for (k = 0; k < n && c->unfinite > 0; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
         if (b->type != GA2D_BODY_DYNAMIC || (ga2d__finite_vec(b->sim.v) && ga2d__finite(b->sim.w))) continue;
         ga2d__contain(w, w->moving[k]);
         --c->unfinite;
     }
+    return contained;
 }
 
 /* Stage, over the moving bodies: caches the field's acceleration (Verlet). */
@@ -12874,6 +12876,47 @@ typedef struct ga2d__stage { ga2d__stage_fn *run; int repeat; } ga2d__stage;
 
 static void ga2d__stage_gather(ga2d__step_context *c) { ga2d__run_split(c, ga2d__gather, c->world->moving_count); }
 static void ga2d__stage_scatter(ga2d__step_context *c) { ga2d__run_split(c, ga2d__scatter, c->world->moving_count); }
+
+static int ga2d__min_int(int a, int b) { return a < b ? a : b; }
+
+/* The soft step's stages over the bodies, joined: symplectic Euler's
+   kick and the gather after it; the scatter after the soft pass, the
+   drift and the gather before the relax pass.  Each block of bodies goes
+   through all of them while it is in cache, where the stages one after
+   another passed over every body two and three times a substep.  The
+   same operations on the same bodies in the same order: the bits are
+   those of the stages apart.  A body contained after the kick or drift
+   (run_counted) was gathered as it was before: the solver bodies are then
+   gathered again. */
+static void ga2d__kick_gather(ga2d__step_context *c, int begin, int end)
+{
+    int k, stop;
+    for (k = begin; k < end; k = stop) {
+        stop = ga2d__min_int(k + GA2D__SPLIT_BLOCK, end);
+        ga2d__kick(c, k, stop);
+        ga2d__gather(c, k, stop);
+    }
+}
+static void ga2d__scatter_drift_gather(ga2d__step_context *c, int begin, int end)
+{
+    int k, stop;
+    for (k = begin; k < end; k = stop) {
+        stop = ga2d__min_int(k + GA2D__SPLIT_BLOCK, end);
+        ga2d__scatter(c, k, stop);
+        ga2d__drift_bodies(c, k, stop);
+        ga2d__gather(c, k, stop);
+    }
+}
+static void ga2d__stage_kick_gather(ga2d__step_context *c)
+{
+    ga2d__eval_field(c->world, c->t);
+    if (ga2d__run_counted(c, ga2d__kick_gather, c->world->moving_count) > 0) ga2d__stage_gather(c);
+}
+static void ga2d__stage_drift_gather(ga2d__step_context *c)
+{
+    c->masses_stale = 1;
+    if (ga2d__run_counted(c, ga2d__scatter_drift_gather, c->world->moving_count) > 0) ga2d__stage_gather(c);
+}
 /* A colour of a solver pass handed to the workers: its joints in blocks
    of GA2D__JOINT_BLOCK, then its groups in blocks of GA2D__GROUP_BLOCK,
    one run of block indices over both. */
@@ -12882,8 +12925,6 @@ typedef struct ga2d__colour_task {
     ga2d__range_fn *joints, *groups;
     int joint_begin, joint_end, joint_blocks, group_begin, group_end;
 } ga2d__colour_task;
-
-static int ga2d__min_int(int a, int b) { return a < b ? a : b; }
 
 static void ga2d__colour_entry(int start, int end, int worker, void *context)
 {
@@ -12995,19 +13036,23 @@ static int ga2d__plan_add(ga2d__stage *plan, int n, ga2d__stage_fn *run, int rep
                positions, position_iterations passes that push bodies
                apart.
    The solver passes work on the solver bodies, gathered before them and
-   scattered after. */
+   scattered after (the soft step with symplectic Euler joins those stages
+   over the bodies: ga2d__kick_gather). */
 static int ga2d__plan_substep(const ga2d_world *w, ga2d__stage *plan)
 {
     int n = 0, soft = w->def.solver == GA2D_SOLVER_SOFT_STEP, ngs = w->def.solver == GA2D_SOLVER_PGS_NGS;
-    n = ga2d__plan_add(plan, n, ga2d__integrate_velocities, 1);
-    n = ga2d__plan_add(plan, n, ga2d__stage_gather, 1);
+    int joined = soft && w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER; /* ga2d__kick_gather */
+    n = ga2d__plan_add(plan, n, joined ? ga2d__stage_kick_gather : ga2d__integrate_velocities, 1);
+    if (!joined) n = ga2d__plan_add(plan, n, ga2d__stage_gather, 1);
     if (w->def.enable_warm_starting) n = ga2d__plan_add(plan, n, ga2d__stage_warm_start, 1);
     if (soft) n = ga2d__plan_add(plan, n, ga2d__stage_solve, 1);
     else n = ga2d__plan_add(plan, n, ngs ? ga2d__stage_relax : ga2d__stage_baumgarte, w->def.velocity_iterations);
-    n = ga2d__plan_add(plan, n, ga2d__stage_scatter, 1);
-    n = ga2d__plan_add(plan, n, ga2d__integrate_positions, 1);
+    if (!joined) {
+        n = ga2d__plan_add(plan, n, ga2d__stage_scatter, 1);
+        n = ga2d__plan_add(plan, n, ga2d__integrate_positions, 1);
+    }
     if (soft) {
-        n = ga2d__plan_add(plan, n, ga2d__stage_gather, 1);
+        n = ga2d__plan_add(plan, n, joined ? ga2d__stage_drift_gather : ga2d__stage_gather, 1);
         n = ga2d__plan_add(plan, n, ga2d__stage_relax, 1);
         n = ga2d__plan_add(plan, n, ga2d__stage_scatter, 1);
     }
