@@ -12887,7 +12887,8 @@ static int ga2d__min_int(int a, int b) { return a < b ? a : b; }
    same operations on the same bodies in the same order: the bits are
    those of the stages apart.  A body contained after the kick or drift
    (run_counted) was gathered as it was before: the solver bodies are then
-   gathered again. */
+   gathered again, as the stages apart had them (after the kick, this is
+   what keeps a force's overflow from the body's neighbours). */
 static void ga2d__kick_gather(ga2d__step_context *c, int begin, int end)
 {
     int k, stop;
