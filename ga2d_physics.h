@@ -4890,6 +4890,8 @@ typedef struct ga2d__step_context {
     int joint_lane_capacity;
     int masses_stale;            /* the solver bodies have moved since the warm start or a pass found
                                     the lanes' anchors and masses (ga2d__wfind) */
+    int scatter_due;             /* the relax pass's velocities are still only the solver bodies'
+                                    (ga2d__stage_defer_scatter) */
     int *kicked;                 /* by slot, in restitution: the impulses applied when it last took one */
     int kicked_capacity;
     ga2d_result error;           /* what the step will report */
@@ -12898,6 +12900,16 @@ static void ga2d__kick_gather(ga2d__step_context *c, int begin, int end)
         ga2d__gather(c, k, stop);
     }
 }
+static void ga2d__scatter_kick_gather(ga2d__step_context *c, int begin, int end)
+{
+    int k, stop;
+    for (k = begin; k < end; k = stop) {
+        stop = ga2d__min_int(k + GA2D__SPLIT_BLOCK, end);
+        ga2d__scatter(c, k, stop);
+        ga2d__kick(c, k, stop);
+        ga2d__gather(c, k, stop);
+    }
+}
 static void ga2d__scatter_drift_gather(ga2d__step_context *c, int begin, int end)
 {
     int k, stop;
@@ -12908,10 +12920,26 @@ static void ga2d__scatter_drift_gather(ga2d__step_context *c, int begin, int end
         ga2d__gather(c, k, stop);
     }
 }
+/* The relax pass's scatter waits for the next substep's kick (or the
+   step's end, ga2d__scatter_if_due), unless a force callback is to read the
+   bodies first. */
+static void ga2d__scatter_if_due(ga2d__step_context *c)
+{
+    if (!c->scatter_due) return;
+    c->scatter_due = 0;
+    ga2d__stage_scatter(c);
+}
+static void ga2d__stage_defer_scatter(ga2d__step_context *c) { c->scatter_due = 1; }
 static void ga2d__stage_kick_gather(ga2d__step_context *c)
 {
+    ga2d__range_fn *fn = c->scatter_due ? ga2d__scatter_kick_gather : ga2d__kick_gather;
+    if (c->world->def.force_callback) {
+        ga2d__scatter_if_due(c);
+        fn = ga2d__kick_gather;
+    }
+    c->scatter_due = 0;
     ga2d__eval_field(c->world, c->t);
-    if (ga2d__run_counted(c, ga2d__kick_gather, c->world->moving_count) > 0) ga2d__stage_gather(c);
+    if (ga2d__run_counted(c, fn, c->world->moving_count) > 0) ga2d__stage_gather(c);
 }
 static void ga2d__stage_drift_gather(ga2d__step_context *c)
 {
@@ -13055,7 +13083,7 @@ static int ga2d__plan_substep(const ga2d_world *w, ga2d__stage *plan)
     if (soft) {
         n = ga2d__plan_add(plan, n, joined ? ga2d__stage_drift_gather : ga2d__stage_gather, 1);
         n = ga2d__plan_add(plan, n, ga2d__stage_relax, 1);
-        n = ga2d__plan_add(plan, n, ga2d__stage_scatter, 1);
+        n = ga2d__plan_add(plan, n, joined ? ga2d__stage_defer_scatter : ga2d__stage_scatter, 1);
     }
     if (ngs) n = ga2d__plan_add(plan, n, ga2d__stage_push_apart, w->def.position_iterations);
     return n;
@@ -13384,6 +13412,7 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
         for (i = 0; i < stages; ++i)
             for (r = 0; r < plan[i].repeat; ++r) plan[i].run(c);
     }
+    ga2d__scatter_if_due(c);
     /* impulses kept for the next step, bodies finished, sleep */
     ga2d__run_split(c, ga2d__store_impulses, c->group_count);
     ga2d__run_split(c, ga2d__store_hinges, c->jgroup_count);
