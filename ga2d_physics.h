@@ -12881,45 +12881,42 @@ static void ga2d__stage_scatter(ga2d__step_context *c) { ga2d__run_split(c, ga2d
 
 static int ga2d__min_int(int a, int b) { return a < b ? a : b; }
 
-/* The soft step's stages over the bodies, joined: symplectic Euler's
-   kick and the gather after it; the scatter after the soft pass, the
-   drift and the gather before the relax pass.  Each block of bodies goes
-   through all of them while it is in cache, where the stages one after
+/* The soft step's stages over the bodies, joined (ga2d__joined):
+   symplectic Euler's kick and the gather after it, with the last
+   substep's scatter before them when it waited (ga2d__stage_kick_gather);
+   the scatter after the soft pass, the drift and the gather before the
+   relax pass.  Each block of bodies goes through all of them while it is
+   in cache, where the stages one after
    another passed over every body two and three times a substep.  The
    same operations on the same bodies in the same order: the bits are
    those of the stages apart.  A body contained after the kick or drift
    (run_counted) was gathered as it was before: the solver bodies are then
    gathered again, as the stages apart had them (after the kick, this is
    what keeps a force's overflow from the body's neighbours). */
-static void ga2d__kick_gather(ga2d__step_context *c, int begin, int end)
+static void ga2d__joined(ga2d__step_context *c, int begin, int end, ga2d__range_fn *const *fns, int n)
 {
-    int k, stop;
+    int k, stop, i;
     for (k = begin; k < end; k = stop) {
         stop = ga2d__min_int(k + GA2D__SPLIT_BLOCK, end);
-        ga2d__kick(c, k, stop);
-        ga2d__gather(c, k, stop);
+        for (i = 0; i < n; ++i) fns[i](c, k, stop);
     }
+}
+static void ga2d__kick_gather(ga2d__step_context *c, int begin, int end)
+{
+    static ga2d__range_fn *const fns[] = {ga2d__kick, ga2d__gather};
+    ga2d__joined(c, begin, end, fns, 2);
 }
 static void ga2d__scatter_kick_gather(ga2d__step_context *c, int begin, int end)
 {
-    int k, stop;
-    for (k = begin; k < end; k = stop) {
-        stop = ga2d__min_int(k + GA2D__SPLIT_BLOCK, end);
-        ga2d__scatter(c, k, stop);
-        ga2d__kick(c, k, stop);
-        ga2d__gather(c, k, stop);
-    }
+    static ga2d__range_fn *const fns[] = {ga2d__scatter, ga2d__kick, ga2d__gather};
+    ga2d__joined(c, begin, end, fns, 3);
 }
 static void ga2d__scatter_drift_gather(ga2d__step_context *c, int begin, int end)
 {
-    int k, stop;
-    for (k = begin; k < end; k = stop) {
-        stop = ga2d__min_int(k + GA2D__SPLIT_BLOCK, end);
-        ga2d__scatter(c, k, stop);
-        ga2d__drift_bodies(c, k, stop);
-        ga2d__gather(c, k, stop);
-    }
+    static ga2d__range_fn *const fns[] = {ga2d__scatter, ga2d__drift_bodies, ga2d__gather};
+    ga2d__joined(c, begin, end, fns, 3);
 }
+
 /* The relax pass's scatter waits for the next substep's kick (or the
    step's end, ga2d__scatter_if_due), unless a force callback is to read the
    bodies first. */
