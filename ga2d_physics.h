@@ -4797,6 +4797,7 @@ typedef struct ga2d__fill { int count, skip; } ga2d__fill;
 typedef struct ga2d__counts { int speed_caps, rotation_updates, integrated_bodies, unfinite, boxes_kept; } ga2d__counts;
 typedef struct ga2d__group_extra ga2d__group_extra;
 typedef struct ga2d__sbody ga2d__sbody;
+typedef struct ga2d__kbody ga2d__kbody;
 typedef struct ga2d__lane_key ga2d__lane_key;
 typedef struct ga2d__joint ga2d__joint;
 typedef struct ga2d__jgroup ga2d__jgroup;
@@ -4892,6 +4893,11 @@ typedef struct ga2d__step_context {
                                     the lanes' anchors and masses (ga2d__wfind) */
     int scatter_due;             /* the relax pass's velocities are still only the solver bodies'
                                     (ga2d__stage_defer_scatter) */
+    ga2d__kbody *kbodies;        /* by moving index, while the substeps integrate on the solver bodies */
+    int kbody_capacity;
+    int compact;                 /* they do (ga2d__compact_begin): the bodies are behind until
+                                    ga2d__compact_end */
+    int compact_fresh;           /* the first kick loads them first (ga2d__kload) */
     int *kicked;                 /* by slot, in restitution: the impulses applied when it last took one */
     int kicked_capacity;
     ga2d_result error;           /* what the step will report */
@@ -5222,7 +5228,8 @@ static int ga2d__flip_island(ga2d_world *w, int slot, int from);
 static void ga2d__lane_clear(ga2d__step_context *c, int lane);
 static void ga2d__contain(ga2d_world *w, int slot);
 static int ga2d__reserve_rk4(ga2d_world *w, int n);
-static int ga2d__reserve_refits(ga2d_world *w, int n);
+static int ga2d__reserve_moving(ga2d_world *w, int n);
+static int ga2d__reserve_slots(ga2d_world *w, int n);
 static void ga2d__step_release(ga2d_world *w);
 static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c);
 static void ga2d__update_sleep(ga2d__step_context *c);
@@ -7037,7 +7044,8 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
     /* every allocation first: a failure leaves the world as it was */
     slot = w->free_head >= 0 ? w->free_head : w->body_used;
     if (!ga2d__grow(&w->mem, (void **)&w->bodies, &w->body_capacity, slot + 1, sizeof *w->bodies)) return id;
-    if (!ga2d__grow(&w->mem, (void **)&w->wake_queue, &w->wake_capacity, w->body_used + 1, sizeof *w->wake_queue))
+    if (!ga2d__grow(&w->mem, (void **)&w->wake_queue, &w->wake_capacity, w->body_used + 1, sizeof *w->wake_queue) ||
+        !ga2d__reserve_slots(w, w->body_used + 1))
         return id;
     if (moves) {
         /* room for every slot: sleeping bodies come back without allocating */
@@ -7046,7 +7054,7 @@ static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)
         if (w->def.integrator == GA2D_INTEGRATOR_RK4 &&
             !ga2d__reserve_rk4(w, w->moving_capacity))
             return id;
-        if (!ga2d__reserve_refits(w, w->moving_capacity)) return id;
+        if (!ga2d__reserve_moving(w, w->moving_capacity)) return id;
     }
     if (def->polygon.count > 0) {
         if (!ga2d__shape_reserve(w, moves)) return id;
@@ -8656,6 +8664,20 @@ struct ga2d__sbody {
     ga2d_real vx, vy, w, pad, dpx, dpy, dqc, dqs;
 };
 
+/* The integration state of a moving body while the soft step's substeps
+   integrate on the solver bodies (ga2d__compact_begin): what its kick and
+   drift read beside the solver body, 40 bytes (float) where its own
+   record is 232, so that the passes over the bodies stream two short
+   arrays.  Without a force callback the kick is the same every substep:
+   it is kept as h a, h alpha, found as ga2d__kick finds it. */
+struct ga2d__kbody {
+    ga2d_rotor q, q0;            /* its rotor now, and where the step began */
+    ga2d_vec dv;                 /* h a (ga2d__acceleration) */
+    ga2d_real dw;                /* h alpha */
+    ga2d_real lin, ang;          /* the damping's factors 1/(1 + c h) (ga2d__damp), 1 without */
+    int dynamic;
+};
+
 /* GA2D__LANES constraints, lane by lane: the bodies (the dummy slot in an empty
    lane), which of them the lane moves, its constraint's index, and the
    constraint's data.  A one-point contact's second point and an empty lane
@@ -9821,7 +9843,7 @@ static int ga2d__reserve_sbodies(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
     ga2d__sbody *dummy;
-    if (!ga2d__grow(&w->mem, (void **)&c->sbodies, &c->sbody_capacity, w->body_used + 1, sizeof *c->sbodies)) {
+    if (!ga2d__reserve_slots(w, w->body_used)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return 0;
     }
@@ -12335,11 +12357,22 @@ static int ga2d__reserve_rk4(ga2d_world *w, int n)
     return ga2d__grow(&w->mem, (void **)&w->step.rk4, &w->step.rk4_capacity, n, sizeof *w->step.rk4);
 }
 
-/* A refit bit for each of n moving bodies: kept at the moving list's
-   capacity, so that a step never allocates it. */
-static int ga2d__reserve_refits(ga2d_world *w, int n)
+/* A refit bit and a kbody for each of n moving bodies: kept at the
+   moving list's capacity, so that a step never allocates them. */
+static int ga2d__reserve_moving(ga2d_world *w, int n)
 {
-    return ga2d__grow(&w->mem, (void **)&w->step.refits, &w->step.refit_capacity, (n + 63) / 64, sizeof *w->step.refits);
+    ga2d__step_context *c = &w->step;
+    return ga2d__grow(&w->mem, (void **)&c->refits, &c->refit_capacity, (n + 63) / 64, sizeof *c->refits) &&
+           ga2d__grow(&w->mem, (void **)&c->kbodies, &c->kbody_capacity, n, sizeof *c->kbodies);
+}
+
+/* A solver body for each of n body slots and the dummy past them: kept at
+   the slots' count, so that a step never allocates them
+   (ga2d__compact_begin, ga2d__reserve_sbodies; ga2d_world_compact gives
+   them back, and the next step takes them again). */
+static int ga2d__reserve_slots(ga2d_world *w, int n)
+{
+    return ga2d__grow(&w->mem, (void **)&w->step.sbodies, &w->step.sbody_capacity, n + 1, sizeof *w->step.sbodies);
 }
 
 /* The solver's arrays given back (ga2d_world_compact); the next step
@@ -12382,6 +12415,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->fill, c->fill_capacity);
     GA2D__FREE_ARRAY(a, c->group_extras, c->group_extra_capacity);
     GA2D__FREE_ARRAY(a, c->sbodies, c->sbody_capacity);
+    GA2D__FREE_ARRAY(a, c->kbodies, c->kbody_capacity);
     GA2D__FREE_ARRAY(a, c->last_group, c->last_group_capacity);
     GA2D__FREE_ARRAY(a, c->colour_masks, c->colour_mask_capacity);
     GA2D__FREE_ARRAY(a, c->lane_constraints, c->lane_constraint_capacity);
@@ -12537,12 +12571,16 @@ static GA2D__HOT int ga2d__cap_turn(ga2d_real *th, ga2d_real max)
 /* The velocity cap and the largest turn per substep, as Box2D: beyond
    them a body is tunnelling anyway; each capped body counts in
    speed_caps.  Returns 0 for a velocity that is not finite. */
+static GA2D__HOT int ga2d__clamp_vw(const ga2d_world *w, ga2d_vec *v, ga2d_real *om, ga2d_real h, int *caps)
+{
+    if (!ga2d__finite_vec(*v) || !ga2d__finite(*om)) return 0;
+    *caps += ga2d__cap_length(v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
+    *caps += ga2d__cap_turn(om, GA2D__MAX_TURN / h);
+    return 1;
+}
 static GA2D__HOT int ga2d__clamp_velocity(const ga2d_world *w, ga2d__body_sim *b, ga2d_real h, int *caps)
 {
-    if (!ga2d__finite_vec(b->v) || !ga2d__finite(b->w)) return 0;
-    *caps += ga2d__cap_length(&b->v, GA2D__MAX_SPEED * w->def.length_units_per_meter);
-    *caps += ga2d__cap_turn(&b->w, GA2D__MAX_TURN / h);
-    return 1;
+    return ga2d__clamp_vw(w, &b->v, &b->w, h, caps);
 }
 
 /* A dynamic body's velocities capped, or the body contained when they are
@@ -12551,6 +12589,51 @@ static void ga2d__cap_body(ga2d__step_context *c, ga2d__body *b, int slot)
 {
     if (b->type == GA2D_BODY_DYNAMIC && !ga2d__clamp_velocity(c->world, &b->sim, c->h, &c->world->counters.speed_caps))
         ga2d__contain(c->world, slot);
+}
+
+
+/* Moving body k's kbody and solver body, from its record: at the step's
+   first kick, and again for a body contained since. */
+static GA2D__HOT void ga2d__kload(ga2d__step_context *c, int k)
+{
+    const ga2d_world *w = c->world;
+    int slot = w->moving[k];
+    const ga2d__body_sim *b = &w->bodies[slot].sim;
+    ga2d__kbody *r = &c->kbodies[k];
+    ga2d__sbody *s = &c->sbodies[slot];
+    ga2d_real h = c->h, alpha;
+    ga2d_vec a;
+    ga2d_rotor dq = ga2d_rotor_mul(b->q, ga2d_rotor_inverse(b->q0)); /* as ga2d__gather */
+    ga2d__acceleration(w, b, &a, &alpha);
+    r->q = b->q;
+    r->q0 = b->q0;
+    r->dv = ga2d_vec_scale(a, h);
+    r->dw = alpha * h;
+    r->lin = b->linear_damping > 0 ? 1 / (1 + h * b->linear_damping) : 1; /* x 1 keeps every bit */
+    r->ang = b->angular_damping > 0 ? 1 / (1 + h * b->angular_damping) : 1;
+    r->dynamic = w->bodies[slot].type == GA2D_BODY_DYNAMIC;
+    s->vx = b->v.x;
+    s->vy = b->v.y;
+    s->w = b->w;
+    s->pad = 0;
+    s->dpx = b->dp.x;
+    s->dpy = b->dp.y;
+    s->dqc = dq.c;
+    s->dqs = dq.s;
+}
+
+/* Whether moving body k is dynamic with a velocity not finite (where the
+   step keeps it now: ga2d__compact_begin). */
+static int ga2d__unfinite_velocity(const ga2d__step_context *c, int k)
+{
+    int slot = c->world->moving[k];
+    const ga2d__body *b = &c->world->bodies[slot];
+    if (b->type != GA2D_BODY_DYNAMIC) return 0;
+    if (c->compact) {
+        const ga2d__sbody *s = &c->sbodies[slot];
+        return !ga2d__finite(s->vx) || !ga2d__finite(s->vy) || !ga2d__finite(s->w);
+    }
+    return !ga2d__finite_vec(b->sim.v) || !ga2d__finite(b->sim.w);
 }
 
 /* Runs a counting stage over the n moving bodies, on the workers when it
@@ -12573,9 +12656,9 @@ static int ga2d__run_counted(ga2d__step_context *c, ga2d__range_fn *fn, int n)
     }
     contained = c->unfinite;
     for (k = 0; k < n && c->unfinite > 0; ++k) {
-        ga2d__body *b = &w->bodies[w->moving[k]];
-        if (b->type != GA2D_BODY_DYNAMIC || (ga2d__finite_vec(b->sim.v) && ga2d__finite(b->sim.w))) continue;
+        if (!ga2d__unfinite_velocity(c, k)) continue;
         ga2d__contain(w, w->moving[k]);
+        if (c->compact) ga2d__kload(c, k); /* as contained */
         --c->unfinite;
     }
     return contained;
@@ -12710,6 +12793,33 @@ static void ga2d__kick(ga2d__step_context *c, int begin, int end)
     ga2d__counts_put(c, begin, &n);
 }
 
+/* Stage, over the moving bodies: ga2d__kick on the solver bodies
+   (ga2d__compact_begin), the same operations in the same order. */
+static void ga2d__ckick(ga2d__step_context *c, int begin, int end)
+{
+    const ga2d_world *w = c->world;
+    const int *moving = w->moving; /* in locals: see ga2d__gather */
+    const ga2d__kbody *kb = c->kbodies;
+    ga2d__sbody *sb = c->sbodies;
+    ga2d_real h = c->h;
+    ga2d__counts n = {0, 0, 0, 0, 0};
+    int k;
+    for (k = begin; k < end; ++k) {
+        const ga2d__kbody *r = &kb[k];
+        ga2d__sbody *s = &sb[moving[k]];
+        ga2d_vec v;
+        ga2d_real om;
+        if (!r->dynamic) continue;
+        v = ga2d_vec_scale(ga2d_vec_make(s->vx + r->dv.x, s->vy + r->dv.y), r->lin);
+        om = (s->w + r->dw) * r->ang;
+        n.unfinite += !ga2d__clamp_vw(w, &v, &om, h, &n.speed_caps); /* contained after the stage */
+        s->vx = v.x;
+        s->vy = v.y;
+        s->w = om;
+    }
+    ga2d__counts_put(c, begin, &n);
+}
+
 /* Stage, over the moving bodies: a Verlet half kick, capped. */
 static void ga2d__half_kicks(ga2d__step_context *c, int begin, int end, int damp)
 {
@@ -12814,21 +12924,21 @@ static void ga2d__rk4_positions(ga2d__step_context *c, int begin, int end)
    a cap by more than the kick's own rounding of it (a rigid pass may
    take the speed back before the next kick sees it: a distance joint of
    absurd length pushing out at the cap, uncounted, for ever). */
-static GA2D__HOT void ga2d__cap_motion(ga2d__body_sim *b, ga2d_real max_speed, ga2d_real max_turn_rate, ga2d__counts *n)
+static GA2D__HOT void ga2d__cap_motion(ga2d_vec *bv, ga2d_real *bw, ga2d_real max_speed, ga2d_real max_turn_rate, ga2d__counts *n)
 {
     const ga2d_real slack = 1 + 16 * GA2D__EPS; /* above the kick's capped length, rounded */
-    ga2d_vec v = b->v;
-    ga2d_real om = b->w, s = 1;
+    ga2d_vec v = *bv;
+    ga2d_real om = *bw, s = 1;
     if (ga2d__cap_length(&v, max_speed * slack)) {
-        ga2d_real m = GA2D__FABS(b->v.x) > GA2D__FABS(b->v.y) ? GA2D__FABS(b->v.x) : GA2D__FABS(b->v.y);
-        v = b->v;
+        ga2d_real m = GA2D__FABS(bv->x) > GA2D__FABS(bv->y) ? GA2D__FABS(bv->x) : GA2D__FABS(bv->y);
+        v = *bv;
         (void)ga2d__cap_length(&v, max_speed);
         s = (GA2D__FABS(v.x) > GA2D__FABS(v.y) ? GA2D__FABS(v.x) : GA2D__FABS(v.y)) / m;
     }
-    if (ga2d__cap_turn(&om, max_turn_rate) && om / b->w < s) s = om / b->w;
+    if (ga2d__cap_turn(&om, max_turn_rate) && om / *bw < s) s = om / *bw;
     if (s < 1) {
-        b->v = ga2d_vec_scale(b->v, s);
-        b->w *= s;
+        *bv = ga2d_vec_scale(*bv, s);
+        *bw *= s;
         ++n->speed_caps;
     }
 }
@@ -12844,10 +12954,70 @@ static void ga2d__drift_bodies(ga2d__step_context *c, int begin, int end)
     int k;
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &bodies[moving[k]];
-        if (b->type == GA2D_BODY_DYNAMIC) ga2d__cap_motion(&b->sim, max_speed, max_turn_rate, &n);
+        if (b->type == GA2D_BODY_DYNAMIC) ga2d__cap_motion(&b->sim.v, &b->sim.w, max_speed, max_turn_rate, &n);
         ga2d__drift(w, &b->sim, c->h, &n);
     }
     ga2d__counts_put(c, begin, &n);
+}
+
+/* Stage, over the moving bodies: ga2d__drift_bodies on the solver bodies
+   (ga2d__compact_begin), and the solver's turn dq = q q0~ as
+   ga2d__gather finds it; x = x0 + dp waits for ga2d__compact_end. */
+static void ga2d__cdrift(ga2d__step_context *c, int begin, int end)
+{
+    const ga2d_world *w = c->world;
+    const int *moving = w->moving;
+    ga2d__kbody *kb = c->kbodies;
+    ga2d__sbody *sb = c->sbodies;
+    const ga2d_real h = c->h, max_speed = GA2D__MAX_SPEED * w->def.length_units_per_meter, max_turn_rate = GA2D__MAX_TURN / h;
+    ga2d__counts n = {0, 0, 0, 0, 0};
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__kbody *r = &kb[k];
+        ga2d__sbody *s = &sb[moving[k]];
+        ga2d_vec v = ga2d_vec_make(s->vx, s->vy);
+        ga2d_real om = s->w;
+        ga2d_rotor dq;
+        if (r->dynamic) {
+            ga2d__cap_motion(&v, &om, max_speed, max_turn_rate, &n);
+            s->vx = v.x;
+            s->vy = v.y;
+            s->w = om;
+        }
+        s->dpx += v.x * h;
+        s->dpy += v.y * h;
+        if (om != 0) {
+            r->q = ga2d__turn(r->q, om * h, w->def.rotation_update);
+            ++n.rotation_updates;
+        }
+        dq = ga2d_rotor_mul(r->q, ga2d_rotor_inverse(r->q0));
+        s->dqc = dq.c;
+        s->dqs = dq.s;
+        ++n.integrated_bodies;
+    }
+    ga2d__counts_put(c, begin, &n);
+}
+
+/* Stage, over the moving bodies: their state back from the solver bodies
+   and kbodies, after the substeps (ga2d__compact_begin). */
+static void ga2d__cstore(ga2d__step_context *c, int begin, int end)
+{
+    ga2d__body *bodies = c->world->bodies;
+    const int *moving = c->world->moving;
+    const ga2d__kbody *kb = c->kbodies;
+    const ga2d__sbody *sb = c->sbodies;
+    int k;
+    for (k = begin; k < end; ++k) {
+        ga2d__body_sim *b = &bodies[moving[k]].sim;
+        const ga2d__sbody *s = &sb[moving[k]];
+        if (kb[k].dynamic) {
+            b->v = ga2d_vec_make(s->vx, s->vy);
+            b->w = s->w;
+        }
+        b->dp = ga2d_vec_make(s->dpx, s->dpy);
+        b->center = ga2d_vec_add(b->center0, b->dp);
+        b->q = kb[k].q;
+    }
 }
 
 /* The position phase of the world's integrator, ending the substep. */
@@ -12915,6 +13085,59 @@ static void ga2d__scatter_drift_gather(ga2d__step_context *c, int begin, int end
 {
     static ga2d__range_fn *const fns[] = {ga2d__scatter, ga2d__drift_bodies, ga2d__gather};
     ga2d__joined(c, begin, end, fns, 3);
+}
+
+/* The soft step with symplectic Euler and no force callback integrates on
+   the solver bodies and the kbodies beside them, and puts the bodies'
+   state back once, after the substeps (ga2d__compact_end): nothing reads
+   a body's record in between.  A substep passes over the bodies twice,
+   the kick and the drift, reading 72 bytes a body (float) where the
+   stages on the records (ga2d__kick_gather) read and wrote most of 232:
+   a 22 000-body world's records do not stay in cache.  The same
+   operations in the same order as those stages: the same bits.  Where
+   memory runs out for the solver bodies, the step reports it and takes
+   those stages. */
+static int ga2d__compact_begin(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    c->compact = 0;
+    if (w->def.solver != GA2D_SOLVER_SOFT_STEP || w->def.integrator != GA2D_INTEGRATOR_SYMPLECTIC_EULER ||
+        w->def.force_callback || w->moving_count == 0)
+        return 0;
+    GA2D_ASSERT(c->kbody_capacity >= w->moving_count); /* ga2d__reserve_moving */
+    if (!ga2d__reserve_slots(w, w->body_used)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY; /* and the stages on the records run */
+        return 0;
+    }
+    c->compact = c->compact_fresh = 1;
+    return 1;
+}
+static void ga2d__compact_end(ga2d__step_context *c)
+{
+    if (!c->compact) return;
+    ga2d__run_split(c, ga2d__cstore, c->world->moving_count);
+    c->compact = 0;
+}
+static void ga2d__kload_range(ga2d__step_context *c, int begin, int end)
+{
+    int k;
+    for (k = begin; k < end; ++k) ga2d__kload(c, k);
+}
+static void ga2d__load_kick(ga2d__step_context *c, int begin, int end)
+{
+    static ga2d__range_fn *const fns[] = {ga2d__kload_range, ga2d__ckick};
+    ga2d__joined(c, begin, end, fns, 2);
+}
+static void ga2d__stage_ckick(ga2d__step_context *c)
+{
+    ga2d__range_fn *fn = c->compact_fresh ? ga2d__load_kick : ga2d__ckick;
+    c->compact_fresh = 0;
+    (void)ga2d__run_counted(c, fn, c->world->moving_count);
+}
+static void ga2d__stage_cdrift(ga2d__step_context *c)
+{
+    c->masses_stale = 1;
+    (void)ga2d__run_counted(c, ga2d__cdrift, c->world->moving_count);
 }
 
 /* The relax pass's scatter waits for the next substep's kick (or the
@@ -13064,10 +13287,17 @@ static int ga2d__plan_add(ga2d__stage *plan, int n, ga2d__stage_fn *run, int rep
    The solver passes work on the solver bodies, gathered before them and
    scattered after (the soft step with symplectic Euler joins those stages
    over the bodies: ga2d__kick_gather). */
-static int ga2d__plan_substep(const ga2d_world *w, ga2d__stage *plan)
+static int ga2d__plan_substep(const ga2d_world *w, ga2d__stage *plan, int compact)
 {
     int n = 0, soft = w->def.solver == GA2D_SOLVER_SOFT_STEP, ngs = w->def.solver == GA2D_SOLVER_PGS_NGS;
     int joined = soft && w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER; /* ga2d__kick_gather */
+    if (compact) { /* ga2d__compact_begin */
+        n = ga2d__plan_add(plan, n, ga2d__stage_ckick, 1);
+        if (w->def.enable_warm_starting) n = ga2d__plan_add(plan, n, ga2d__stage_warm_start, 1);
+        n = ga2d__plan_add(plan, n, ga2d__stage_solve, 1);
+        n = ga2d__plan_add(plan, n, ga2d__stage_cdrift, 1);
+        return ga2d__plan_add(plan, n, ga2d__stage_relax, 1);
+    }
     n = ga2d__plan_add(plan, n, joined ? ga2d__stage_kick_gather : ga2d__integrate_velocities, 1);
     if (!joined) n = ga2d__plan_add(plan, n, ga2d__stage_gather, 1);
     if (w->def.enable_warm_starting) n = ga2d__plan_add(plan, n, ga2d__stage_warm_start, 1);
@@ -13403,13 +13633,14 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__run_split(c, ga2d__fill_hinges, c->jgroup_count);
     c->masses_stale = 1;
     /* the substeps */
-    stages = ga2d__plan_substep(w, plan);
+    stages = ga2d__plan_substep(w, plan, ga2d__compact_begin(c));
     for (s = 0; s < w->def.substeps; ++s) {
         c->t = c->t0 + (double)h * s; /* no drift from summing h */
         for (i = 0; i < stages; ++i)
             for (r = 0; r < plan[i].repeat; ++r) plan[i].run(c);
     }
     ga2d__scatter_if_due(c);
+    ga2d__compact_end(c);
     /* impulses kept for the next step, bodies finished, sleep */
     ga2d__run_split(c, ga2d__store_impulses, c->group_count);
     ga2d__run_split(c, ga2d__store_hinges, c->jgroup_count);
@@ -14596,10 +14827,11 @@ static int ga2d__snap_read_bodies(ga2d_world *t, ga2d__codec *k)
     if (used == 0) return free_head == -1 && count == 0;
     if (!ga2d__grow(&t->mem, (void **)&t->bodies, &t->body_capacity, used, sizeof *t->bodies) ||
         !ga2d__grow(&t->mem, (void **)&t->wake_queue, &t->wake_capacity, used, sizeof *t->wake_queue) ||
-        !ga2d__grow(&t->mem, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving))
+        !ga2d__grow(&t->mem, (void **)&t->moving, &t->moving_capacity, used, sizeof *t->moving) ||
+        !ga2d__reserve_slots(t, used))
         return -1;
     if (t->def.integrator == GA2D_INTEGRATOR_RK4 && !ga2d__reserve_rk4(t, t->moving_capacity)) return -1;
-    if (!ga2d__reserve_refits(t, t->moving_capacity)) return -1;
+    if (!ga2d__reserve_moving(t, t->moving_capacity)) return -1;
     memset(t->bodies, 0, (size_t)used * sizeof *t->bodies);
     t->body_used = used;
     t->body_count = count;
