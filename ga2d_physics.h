@@ -2161,7 +2161,7 @@ static ga2d_rotor ga2d__exp_e12(ga2d_real a)
    step toward |q| = 1 (r (3 - |r|^2)/2 takes a norm of 1 + d to 1 + O(d^2),
    so rounding never accumulates); or to first order, q (1 + angle e12)
    renormalized, which turns by atan(angle) instead of angle. */
-static ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update mode)
+static GA2D__HOT ga2d_rotor ga2d__turn(ga2d_rotor q, ga2d_real angle, ga2d_rotation_update mode)
 {
     ga2d_rotor r;
     ga2d_real k;
@@ -4658,12 +4658,15 @@ typedef struct ga2d__contact {
     int flags;               /* GA2D__CONTACT_*: what the narrowphase found, until book-kept */
     int shape_a, shape_b;    /* shape slots, shape_a < shape_b */
     int extras;              /* a shape is round, a conveyor, rolls with resistance or reports hits */
-    ga2d_manifold manifold;
+    /* what listing the touching contacts reads of each (ga2d__touch_holds,
+       ga2d__order_constraints): at the back of the record, the two
+       random passes over the contacts read two lines of each */
+    uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
     ga2d_real friction, restitution;
+    ga2d_manifold manifold;
     ga2d_vec end_normal;     /* an ended touch's new normal, while its end is reported */
     ga2d_real peak[2];       /* each point's largest normal impulse in the last step (hit events) */
     ga2d__held held;         /* the manifold in A's frame, while touching */
-    uint64_t serial;         /* creation order (snapshots rebuild the lists by it) */
 } ga2d__contact;
 
 /* A touching contact in the solver's canonical order: by A's slot, then
@@ -12977,7 +12980,7 @@ static void ga2d__cdrift(ga2d__step_context *c, int begin, int end)
         ga2d__sbody *s = &sb[moving[k]];
         ga2d_vec v = ga2d_vec_make(s->vx, s->vy);
         ga2d_real om = s->w;
-        ga2d_rotor dq;
+        ga2d_rotor q = r->q, dq;
         if (r->dynamic) {
             ga2d__cap_motion(&v, &om, max_speed, max_turn_rate, &n);
             s->vx = v.x;
@@ -12987,10 +12990,12 @@ static void ga2d__cdrift(ga2d__step_context *c, int begin, int end)
         s->dpx += v.x * h;
         s->dpy += v.y * h;
         if (om != 0) {
-            r->q = ga2d__turn(r->q, om * h, w->def.rotation_update);
+            q = ga2d__turn(q, om * h, w->def.rotation_update);
+            r->q = q;
             ++n.rotation_updates;
         }
-        dq = ga2d_rotor_mul(r->q, ga2d_rotor_inverse(r->q0));
+        dq = ga2d_rotor_mul(q, ga2d_rotor_inverse(r->q0)); /* q from the register: read back from r, its
+                                                               halves' stores stalled the load */
         s->dqc = dq.c;
         s->dqs = dq.s;
         ++n.integrated_bodies;
