@@ -10166,18 +10166,21 @@ static int ga2d__lanes_kept(ga2d__step_context *c)
 {
     int i, gi, l, extras = 0, round = 0, n = c->constraint_count;
     if (c->joint_active != c->kept_joints || c->lane_key_count != n + c->joint_active) return 0;
+    if (!ga2d__reserve_sbodies(c)) { /* as the colouring anew would report it */
+        (void)ga2d__solve_nothing(c);
+        return 1;
+    }
+    /* each constraint's key, and what it keeps (in the same pass over
+       them: a colouring found anew does all of ga2d__lane_seen again) */
     for (i = 0; i < n; ++i) {
         const ga2d__contact_constraint *cc = &c->constraints[i];
         const ga2d__lane_key *k = &c->lane_keys[i];
         if (k->a != cc->a || k->b != cc->b || k->moves != cc->moves) return 0;
+        ga2d__lane_seen(c, cc, &extras, &round);
     }
     for (i = 0; i < c->joint_active; ++i) {
         const ga2d__lane_key *k = &c->lane_keys[n + i], *now = &c->joint_keys[i];
         if (k->a != now->a || k->b != now->b || k->moves != now->moves) return 0;
-    }
-    if (!ga2d__reserve_sbodies(c)) {
-        (void)ga2d__solve_nothing(c);
-        return 1;
     }
     ga2d__joints_kept(c);
     c->group_count = c->kept_groups;
@@ -10185,7 +10188,6 @@ static int ga2d__lanes_kept(ga2d__step_context *c)
     c->world->counters.colouring_kept = 1;
     for (gi = 0; gi < c->group_count; ++gi)
         for (l = 0; l < c->fill[gi].count; ++l) c->constraints[c->lane_constraints[gi * GA2D__LANES + l]].lane = gi * GA2D__LANES + l;
-    for (i = 0; i < c->constraint_count; ++i) ga2d__lane_seen(c, &c->constraints[i], &extras, &round);
     (void)ga2d__lanes_done(c, extras, round);
     return 1;
 }
