@@ -2140,24 +2140,10 @@ GA2D_API ga2d_transform ga2d_transform_inv_mul(ga2d_transform a, ga2d_transform 
    (c, s) -> (-s, c).  The series (Horner, reciprocal factorials) stop where
    the next term at pi/4 is below half an ulp: r^9 / r^10 in float,
    r^17 / r^18 in double. */
-static ga2d_rotor ga2d__exp_e12(ga2d_real a)
+/* exp(r e12) for |r| <= pi/4: the polynomials of cos and sin there */
+static GA2D__HOT ga2d_rotor ga2d__exp_e12_near(ga2d_real r)
 {
-#ifdef GA2D_DOUBLE
-    const ga2d_real pio2_hi = 1.5707963267341256, pio2_lo = 6.077100506506192e-11; /* hi: 33 bits */
-#else
-    const ga2d_real pio2_hi = 1.5707963705062866f, pio2_lo = -4.371139000186243e-08f; /* float pi/2 and the rest */
-#endif
-    ga2d_real r = a, r2, c, s, t;
-    long quarter = 0;
-    if (!(GA2D__FABS(a) <= GA2D__R(0.78539816339744831))) {
-        ga2d_real k;
-        if (!ga2d__finite(a)) return ga2d__rotor(a - a, a - a); /* NaN: the step reports it */
-        if (GA2D__FABS(a) > GA2D__R(1e6)) a = (ga2d_real)fmod((double)a, 6.283185307179586); /* exact */
-        k = (ga2d_real)floor((double)(a * GA2D__R(0.63661977236758134) + GA2D__R(0.5)));
-        r = (a - k * pio2_hi) - k * pio2_lo;
-        quarter = (long)k & 3;
-    }
-    r2 = r * r;
+    ga2d_real r2 = r * r, c, s;
 #ifdef GA2D_DOUBLE
     c = 1 + r2 * (-1.0 / 2 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800 +
         r2 * (1.0 / 479001600 + r2 * (-1.0 / 87178291200.0 + r2 * (1.0 / 20922789888000.0))))))));
@@ -2167,8 +2153,34 @@ static ga2d_rotor ga2d__exp_e12(ga2d_real a)
     c = 1 + r2 * (-1.0f / 2 + r2 * (1.0f / 24 + r2 * (-1.0f / 720 + r2 * (1.0f / 40320))));
     s = r * (1 + r2 * (-1.0f / 6 + r2 * (1.0f / 120 + r2 * (-1.0f / 5040 + r2 * (1.0f / 362880)))));
 #endif
-    for (; quarter > 0; --quarter) { t = c; c = -s; s = t; }
     return ga2d__rotor(c, s);
+}
+
+/* exp(a e12) past pi/4: a less its nearest multiple k of pi/2 (in two
+   parts, so the difference is exact), then turned by k quarters. */
+static ga2d_rotor ga2d__exp_e12_far(ga2d_real a)
+{
+#ifdef GA2D_DOUBLE
+    const ga2d_real pio2_hi = 1.5707963267341256, pio2_lo = 6.077100506506192e-11; /* hi: 33 bits */
+#else
+    const ga2d_real pio2_hi = 1.5707963705062866f, pio2_lo = -4.371139000186243e-08f; /* float pi/2 and the rest */
+#endif
+    ga2d_real k, t;
+    ga2d_rotor e;
+    long quarter;
+    if (!ga2d__finite(a)) return ga2d__rotor(a - a, a - a); /* NaN: the step reports it */
+    if (GA2D__FABS(a) > GA2D__R(1e6)) a = (ga2d_real)fmod((double)a, 6.283185307179586); /* exact */
+    k = (ga2d_real)floor((double)(a * GA2D__R(0.63661977236758134) + GA2D__R(0.5)));
+    e = ga2d__exp_e12_near((a - k * pio2_hi) - k * pio2_lo);
+    for (quarter = (long)k & 3; quarter > 0; --quarter) { t = e.c; e.c = -e.s; e.s = t; }
+    return e;
+}
+
+/* The turns of a substep are small: the near case inline. */
+static GA2D__HOT ga2d_rotor ga2d__exp_e12(ga2d_real a)
+{
+    if (!(GA2D__FABS(a) <= GA2D__R(0.78539816339744831))) return ga2d__exp_e12_far(a);
+    return ga2d__exp_e12_near(a);
 }
 
 /* q turned by `angle`: exactly, q exp(angle e12) followed by one Newton
