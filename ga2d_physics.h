@@ -13379,7 +13379,9 @@ static int ga2d__plan_add(ga2d__stage *plan, int n, ga2d__stage_fn *run, int rep
                apart.
    The solver passes work on the solver bodies, gathered before them and
    scattered after (the soft step with symplectic Euler joins those stages
-   over the bodies: ga2d__kick_gather). */
+   over the bodies: ga2d__kick_gather; without a force callback it
+   integrates on the solver bodies themselves, `compact`:
+   ga2d__compact_begin). */
 static int ga2d__plan_substep(const ga2d_world *w, ga2d__stage *plan, int compact)
 {
     int n = 0, soft = w->def.solver == GA2D_SOLVER_SOFT_STEP, ngs = w->def.solver == GA2D_SOLVER_PGS_NGS;

@@ -414,13 +414,16 @@ static void fail_free(void *p, size_t size, void *ctx)
    before it must say OK, the step that makes it must say OUT_OF_MEMORY (a
    failed allocation is never swallowed, even when the next one succeeds),
    and the steps after it, with memory back, OK. */
-static ga2d_world *oom_scene(failing *f)
+/* 60 overlapping boxes; with `restitution` their contacts bounce, and
+   restitution's own scratch is among the step's allocations. */
+static ga2d_world *oom_scene(failing *f, ga2d_real restitution)
 {
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
     ga2d_body_def d = ga2d_default_body_def();
     int i;
     d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+    d.restitution = restitution;
     f->fail_from = 1000000;
     wd.allocator.alloc = fail_alloc;
     wd.allocator.free = fail_free;
@@ -435,13 +438,13 @@ static ga2d_world *oom_scene(failing *f)
     return w;
 }
 
-static void step_out_of_memory(void)
+static void step_out_of_memory(ga2d_real restitution)
 {
     long k, cum[3];
     int i;
     {
         failing f = {0, 0, 0};
-        ga2d_world *w = oom_scene(&f);
+        ga2d_world *w = oom_scene(&f, restitution);
         long start;
         CHECK(w != NULL);
         if (!w) return;
@@ -455,7 +458,7 @@ static void step_out_of_memory(void)
     }
     for (k = 1; k <= cum[2] + 1; ++k) {
         failing f = {0, 0, 0};
-        ga2d_world *w = oom_scene(&f);
+        ga2d_world *w = oom_scene(&f, restitution);
         int oom = 0;
         if (!w) { CHECK(!"world"); continue; }
         f.fail_from = f.calls + k; /* fail the k-th allocation from here, alone */
@@ -477,6 +480,9 @@ static void step_out_of_memory(void)
         CHECK(f.live == 0);
     }
 }
+
+static void step_out_of_memory_plain(void) { step_out_of_memory(0); }
+static void step_out_of_memory_bouncy(void) { step_out_of_memory((ga2d_real)0.5); }
 
 /* The debug draw: one polygon per live body, with its id and state
    colour; one contact call per touching manifold point; nothing drawn that
@@ -1110,7 +1116,8 @@ void suite_contacts(void)
     test_run("contacts: destroy and refilter end contacts", destroy_and_refilter);
     test_run("contacts: late static bodies and teleports", teleport_and_new_static);
     test_run("contacts: a touching pair set apart within its boxes ends at once", parted_within_boxes_ends);
-    test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory);
+    test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory_plain);
+    test_run("contacts: a step of bouncing contacts out of memory reports it and recovers", step_out_of_memory_bouncy);
     test_run("contacts: debug draw", debug_draw);
     test_run("contacts: a resting pair's manifold is carried, and remade past half a slop", carried_manifolds);
     test_run("contacts: a round pair is carried by its cores, every pair in both roles", carried_round_pairs);
