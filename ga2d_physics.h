@@ -10496,16 +10496,21 @@ static ga2d_transform ga2d__pose_after(const ga2d__body *b, ga2d_vec a, ga2d_rea
 }
 
 /* Whether a contact's shapes, moving as they move now, come within slop
-   of each other before time `look`: conservative advancement (Mirtich).
-   No two of their points approach faster than u = |vB - vA| + |wA| ext_A
-   + |wB| ext_B + |aB - aA| look (ext a body's reach from its centre), so
-   shapes d apart at time t cannot touch before t + (d - slop) / u.  A
-   manifold kept to the points within u (look - t) + slop finds them
-   farther than that (none: they cannot meet in time) or gives d.  The
-   manifold's one normal is only the closest features' now: a pair that
-   closes along it at the step's start may slide past (two discs passing
-   side by side at 100 m/s, 5 cm apart at their closest, bounced off each
-   other).  Undecided after the iterations, it meets. */
+   of each other before time `look`: conservative advancement (Mirtich),
+   on the shapes' true distance d and its direction n (GJK, from A's
+   closest point to B's).  From time t, each body's motion is a straight
+   line at its velocity then, plus a turn that moves no point more than
+   |w| ext s (ext its reach from its centre) and an acceleration that
+   moves none more than |a| s^2 / 2.  The straight part alone moves the
+   cores' Minkowski difference along a line, and a point's distance to a
+   convex set is convex along a line: it is never below its tangent,
+   d + (vB - vA).n s.  Distance moves by at most what a point moves, so
+   d(t + s) >= d - u s with u = max(0, -(vB - vA).n) + |wA| ext_A +
+   |wB| ext_B + |aB - aA| (look - t) / 2, and the shapes cannot come
+   within slop before t + (d - slop) / u.  Only the approach along n
+   counts: two discs passing side by side at 100 m/s, 5 cm apart at their
+   closest, never meet, and the advance says so in a few steps.  Undecided
+   after the iterations, it meets. */
 /* Point k's normal mass at its anchors as the step began (the lane
    solver finds its own, per position: ga2d__wfind); only a bounce needs
    this one, so it is found here rather than for every constraint. */
@@ -10518,21 +10523,28 @@ static int ga2d__meets_within(const ga2d_world *w, const ga2d__contact_constrain
 {
     const ga2d__contact *ct = &w->contacts[cc->contact];
     const ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
-    ga2d_vec fa = ga2d__free_accel(w, a), fb = ga2d__free_accel(w, b);
-    ga2d_real u = ga2d__length(ga2d_vec_sub(b->sim.v, a->sim.v)) + GA2D__FABS(a->sim.w) * a->extent +
-                  GA2D__FABS(b->sim.w) * b->extent + ga2d__length(ga2d_vec_sub(fb, fa)) * look;
-    ga2d_real t = 0;
-    int i, k;
+    ga2d_shape_proxy pa = ga2d_shape_proxy_of(&w->shapes[ct->shape_a].geom), pb = ga2d_shape_proxy_of(&w->shapes[ct->shape_b].geom);
+    ga2d_simplex_cache cache;
+    ga2d_vec fa = ga2d__free_accel(w, a), fb = ga2d__free_accel(w, b), dv = ga2d_vec_sub(b->sim.v, a->sim.v),
+             df = ga2d_vec_sub(fb, fa);
+    ga2d_real spin = GA2D__FABS(a->sim.w) * a->extent + GA2D__FABS(b->sim.w) * b->extent, dfl = ga2d__length(df), t = 0;
+    int i;
+    cache.count = 0;
     for (i = 0; i < GA2D__ADVANCE_ITERATIONS; ++i) {
-        ga2d_manifold m;
-        ga2d_real d;
-        ga2d__collide_geometries(&w->shapes[ct->shape_a].geom, ga2d__pose_after(a, fa, t), &w->shapes[ct->shape_b].geom,
-                                 ga2d__pose_after(b, fb, t), w->slop, u * (look - t) + w->slop, &m);
-        if (m.count == 0) return 0;
-        d = m.points[0].separation;
-        for (k = 1; k < m.count; ++k) d = m.points[k].separation < d ? m.points[k].separation : d;
-        if (d <= w->slop) return 1;
-        t += (d - w->slop) / u;
+        ga2d_transform xa = ga2d__pose_after(a, fa, t), xb = ga2d__pose_after(b, fb, t);
+        ga2d_distance_result d = ga2d__distance(&pa, &pb, ga2d_transform_inv_mul(xa, xb), &cache);
+        ga2d_vec n = ga2d_rotate(xa.q, d.normal), vt = ga2d_vec_add(dv, ga2d_vec_scale(df, t)), gap;
+        ga2d_real approach = -ga2d_dot(vt, n), vv = ga2d_dot(vt, vt), s_near = 0, u;
+        if (d.distance <= w->slop) return 1;
+        /* the closest points themselves, carried on: the straight line
+           brings them nearest at s_near (within the look), and turn and
+           acceleration move them apart by at most spin s + |a| s^2 / 2 */
+        if (approach > 0 && vv > 0) s_near = d.distance * approach / vv < look - t ? d.distance * approach / vv : look - t;
+        gap = ga2d_vec_add(ga2d_vec_scale(n, d.distance), ga2d_vec_scale(vt, s_near));
+        if (ga2d__length(gap) + spin * s_near + dfl * s_near * s_near / 2 <= w->slop) return 1;
+        u = (approach > 0 ? approach : 0) + spin + dfl * (look - t) / 2;
+        if (!(u > 0)) return 0; /* not closing, turning or accelerating: it never meets */
+        t += (d.distance - w->slop) / u;
         if (!(t < look)) return 0;
     }
     return 1;
@@ -10619,7 +10631,13 @@ static void ga2d__restitute(ga2d__step_context *c)
             for (k = 0; k < cc->count; ++k) {
                 ga2d__apply_impulse(cc, &a->sim, &b->sim, cc->p[k].ra, cc->p[k].rb, ga2d_vec_scale(cc->normal, lambda[k]));
             }
-            if (kicked) kicked[cc->a] = kicked[cc->b] = ++applied;
+            /* a side the impulse cannot move (static, kinematic) is not
+               marked: its contacts see nothing new from this one */
+            if (kicked) {
+                ++applied;
+                if (cc->inv_ma != 0 || cc->inv_ia != 0) kicked[cc->a] = applied;
+                if (cc->inv_mb != 0 || cc->inv_ib != 0) kicked[cc->b] = applied;
+            }
         }
     }
     /* passes of a restitution above 1 multiply a speed: one that overflowed
