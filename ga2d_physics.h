@@ -10525,17 +10525,26 @@ static ga2d_real ga2d__normal_mass(const ga2d__contact_constraint *cc, int k)
     return ga2d__effective_mass(cc, cc->p[k].ra, cc->p[k].rb, cc->normal);
 }
 
+/* Whether two bodies' shapes (proxies pa, pb), moving as they move now,
+   are within slop of each other at time t. */
+static int ga2d__within_at(const ga2d_world *w, const ga2d__body *a, const ga2d__body *b, ga2d_vec fa, ga2d_vec fb,
+                           const ga2d_shape_proxy *pa, const ga2d_shape_proxy *pb, ga2d_simplex_cache *cache, ga2d_real t)
+{
+    ga2d_transform xa = ga2d__pose_after(a, fa, t), xb = ga2d__pose_after(b, fb, t);
+    return ga2d__distance(pa, pb, ga2d_transform_inv_mul(xa, xb), cache).distance <= w->slop;
+}
+
 static int ga2d__meets_within(const ga2d_world *w, const ga2d__contact_constraint *cc, ga2d_real look)
 {
     const ga2d__contact *ct = &w->contacts[cc->contact];
     const ga2d__body *a = &w->bodies[cc->a], *b = &w->bodies[cc->b];
     ga2d_shape_proxy pa = ga2d_shape_proxy_of(&w->shapes[ct->shape_a].geom), pb = ga2d_shape_proxy_of(&w->shapes[ct->shape_b].geom);
-    ga2d_simplex_cache cache;
+    ga2d_simplex_cache cache, probe;
     ga2d_vec fa = ga2d__free_accel(w, a), fb = ga2d__free_accel(w, b), dv = ga2d_vec_sub(b->sim.v, a->sim.v),
              df = ga2d_vec_sub(fb, fa);
     ga2d_real spin = GA2D__FABS(a->sim.w) * a->extent + GA2D__FABS(b->sim.w) * b->extent, dfl = ga2d__length(df), t = 0;
     int i;
-    cache.count = 0;
+    cache.count = probe.count = 0;
     for (i = 0; i < GA2D__ADVANCE_ITERATIONS; ++i) {
         ga2d_transform xa = ga2d__pose_after(a, fa, t), xb = ga2d__pose_after(b, fb, t);
         ga2d_distance_result d = ga2d__distance(&pa, &pb, ga2d_transform_inv_mul(xa, xb), &cache);
@@ -10548,6 +10557,10 @@ static int ga2d__meets_within(const ga2d_world *w, const ga2d__contact_constrain
         if (approach > 0 && vv > 0) s_near = d.distance * approach / vv < look - t ? d.distance * approach / vv : look - t;
         gap = ga2d_vec_add(ga2d_vec_scale(n, d.distance), ga2d_vec_scale(vt, s_near));
         if (ga2d__length(gap) + spin * s_near + dfl * s_near * s_near / 2 <= w->slop) return 1;
+        /* and where the straight approach along n closes the gap (or at
+           the look's end): a distance within slop there is a meeting */
+        if (approach > 0 && ga2d__within_at(w, a, b, fa, fb, &pa, &pb, &probe, t + d.distance / approach < look ? t + d.distance / approach : look))
+            return 1;
         u = (approach > 0 ? approach : 0) + spin + dfl * (look - t) / 2;
         if (!(u > 0)) return 0; /* not closing, turning or accelerating: it never meets */
         t += (d.distance - w->slop) / u;
