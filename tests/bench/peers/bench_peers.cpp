@@ -20,7 +20,11 @@
                            csv defaults to build/bench/peers.csv.
      BENCH_RUNS=n          runs per engine and scene (default 3).
      PEERS_MAX_RUN_S=s     a run stops once its steps took s seconds (default
-                           120); the engine's row says so, with no median. */
+                           120); the engine's row says so, with no median.
+     PEERS_ENGINES=a,b     runs only the engines named (their names in the
+                           tables: ga2d, Box2D, Chipmunk, Box2D-v3, ga2d-2w,
+                           Box2D-v3-2w, ga2d-avx2); the others' rows say they
+                           were left out, and a ratio against one is nan. */
 #include <box2d/box2d.h>
 #include <chipmunk/chipmunk.h>
 
@@ -596,6 +600,7 @@ static const int kBox2d = 1;                                  /* Box2D 2.4.1's i
 static const int kV3 = PEERS_B2V3 ? 3 : -1;                   /* Box2D v3's index, -1 when not built */
 static const int kGa2d2w = PEERS_B2V3 ? 4 : 3;                /* ga2d on 2 workers */
 static const int kV32w = PEERS_B2V3 ? 5 : -1;                 /* Box2D v3 on 2 workers, -1 when not built */
+static bool g_engine_on[kEngineCount];                        /* PEERS_ENGINES: the engines to run */
 
 /* ------------------------------------------------------- accuracy figures */
 /* The scene's boxes (their nominal size, no engine's skin) placed by an
@@ -1112,6 +1117,22 @@ int main(int argc, char **argv)
         }
         g_max_run_ms = sec * 1e3;
     }
+    /* the engines asked for: all, or PEERS_ENGINES's names separated by commas */
+    const char *engines = getenv("PEERS_ENGINES");
+    for (int e = 0; e < kEngineCount; ++e) g_engine_on[e] = !engines || !*engines;
+    for (const char *name = engines; name && *name;) {
+        size_t n = strcspn(name, ",");
+        bool known = false;
+        for (int e = 0; e < kEngineCount; ++e)
+            if (strlen(kEngines[e].name) == n && strncmp(name, kEngines[e].name, n) == 0) known = g_engine_on[e] = true;
+        if (!known) {
+            fprintf(stderr, "peers: unknown engine '%.*s' in PEERS_ENGINES; engines:", (int)n, name);
+            for (int e = 0; e < kEngineCount; ++e) fprintf(stderr, " %s", kEngines[e].name);
+            fprintf(stderr, "\n");
+            return 2;
+        }
+        name += n + (name[n] == ',');
+    }
     /* the scenes asked for: "all", or names separated by commas */
     bool wanted[kSceneCount];
     const char *asked = argc > 1 ? argv[1] : "all";
@@ -1153,7 +1174,7 @@ int main(int argc, char **argv)
         std::vector<double> ms[kEngineCount], fig[kEngineCount];
         std::string check[kEngineCount], failed[kEngineCount], blown[kEngineCount];
         bool left_out[kEngineCount];
-        for (int e = 0; e < kEngineCount; ++e) left_out[e] = !kEngines[e].builds(s);
+        for (int e = 0; e < kEngineCount; ++e) left_out[e] = !kEngines[e].builds(s) || !g_engine_on[e];
         for (int r = 0; r < runs; ++r)
             for (int e = 0; e < kEngineCount; ++e) {
                 if (left_out[e] || !failed[e].empty() || !blown[e].empty()) continue;
@@ -1178,8 +1199,8 @@ int main(int argc, char **argv)
         std::string notes;
         for (int e = 0; e < kEngineCount; ++e) {
             if (left_out[e]) {
-                printf("  %-14s %-11s left out: the runner builds it boxes and centred circles with pins only\n", s.name,
-                       kEngines[e].name);
+                printf("  %-14s %-11s left out: %s\n", s.name, kEngines[e].name,
+                       g_engine_on[e] ? "the runner builds it boxes and centred circles with pins only" : "not in PEERS_ENGINES");
                 if (csv)
                     fprintf(csv, "%s,%s,nan,nan,\"%s\",nan,nan,nan,nan\n", s.name, kEngines[e].name,
                             bench_scene_figure_name(&s));
