@@ -5776,8 +5776,36 @@ static void ga2d__update_proxy(ga2d_world *w, int slot)
     }
 }
 
-/* Pair finding for one queued shape: the query callback's context. */
-typedef struct ga2d__pair_query { ga2d_world *w; int self; } ga2d__pair_query;
+/* Pair finding for one queued shape: the query callback's context.  The
+   pairs it wants are looked up in the pair set a batch at a time, each
+   batch's slots prefetched first: a look-up is a cache miss in a big
+   world, and the batch's misses overlap rather than wait in turn. */
+#define GA2D__PAIR_BATCH 32
+typedef struct ga2d__pair_query {
+    ga2d_world *w;
+    int self;
+    int count;                           /* pairs waiting in keys */
+    uint64_t keys[GA2D__PAIR_BATCH];
+} ga2d__pair_query;
+
+/* The waiting pairs that have no contact join the new pairs. */
+static void ga2d__pairs_flush(ga2d__pair_query *q)
+{
+    ga2d_world *w = q->w;
+    int k;
+    if (w->pair_capacity)
+        for (k = 0; k < q->count; ++k) GA2D__PREFETCH_READ(&w->pair_keys[ga2d__hash(q->keys[k]) & (uint32_t)(w->pair_capacity - 1)]);
+    for (k = 0; k < q->count; ++k) {
+        if (ga2d__pairs_has(w, q->keys[k])) continue;
+        if (!ga2d__grow(&w->mem, (void **)&w->new_pairs, &w->new_pair_capacity, w->new_pair_count + 1,
+                        sizeof *w->new_pairs)) {
+            w->step.error = GA2D_ERR_OUT_OF_MEMORY;
+            break;
+        }
+        w->new_pairs[w->new_pair_count++] = q->keys[k];
+    }
+    q->count = 0;
+}
 
 static void ga2d__pair_found(void *ctx, int other)
 {
@@ -5787,13 +5815,9 @@ static void ga2d__pair_found(void *ctx, int other)
     if (other == q->self) return;
     /* both queued: the one queued first (smaller slot) finds the pair */
     if (w->shapes[other].in_move && other < q->self) return;
-    if (!ga2d__pair_wanted(w, a, b) || ga2d__pairs_has(w, ga2d__pair_key(a, b))) return;
-    if (!ga2d__grow(&w->mem, (void **)&w->new_pairs, &w->new_pair_capacity, w->new_pair_count + 1,
-                    sizeof *w->new_pairs)) {
-        w->step.error = GA2D_ERR_OUT_OF_MEMORY;
-        return;
-    }
-    w->new_pairs[w->new_pair_count++] = ga2d__pair_key(a, b);
+    if (!ga2d__pair_wanted(w, a, b)) return;
+    q->keys[q->count++] = ga2d__pair_key(a, b);
+    if (q->count == GA2D__PAIR_BATCH) ga2d__pairs_flush(q);
 }
 
 static int ga2d__cmp_int(const void *x, const void *y) { int a = *(const int *)x, b = *(const int *)y; return (a > b) - (a < b); }
@@ -8322,8 +8346,10 @@ static void ga2d__find_pairs(ga2d__step_context *c, int begin, int end)
         uint32_t mask = f->group_index > 0 ? GA2D__ALL_CATEGORIES : f->mask_bits;
         q.w = w;
         q.self = s;
+        q.count = 0;
         ga2d__tree_query(&w->trees[1], box, mask, ga2d__pair_found, &q);
         if (w->bodies[w->shapes[s].body].type != GA2D_BODY_STATIC) ga2d__tree_query(&w->trees[0], box, mask, ga2d__pair_found, &q);
+        ga2d__pairs_flush(&q);
     }
 }
 
