@@ -11894,7 +11894,7 @@ typedef char ga2d__joint_block_holds_groups[GA2D__JOINT_BLOCK % GA2D__LANES == 0
 /* Book-keeping, after the joints are coloured and sorted (each colour's
    bare hinges first, ga2d__sort_joints): a group for every GA2D__LANES of
    them.  Out of memory, none is packed: every joint is solved one by
-   one, to the same bits. */
+   one, to the same bits, and the step reports it. */
 static void ga2d__pack_hinges(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
@@ -11902,10 +11902,12 @@ static void ga2d__pack_hinges(ga2d__step_context *c)
     c->jgroup_count = 0;
     if (c->joint_active == 0) return;
     for (k = 0; k < c->colour_count; ++k) groups += c->joint_bare[k] / GA2D__LANES;
-    if (groups == 0 ||
-        !ga2d__grow(&w->mem, (void **)&c->jgroups, &c->jgroup_capacity, groups, sizeof *c->jgroups) ||
-        !ga2d__grow(&w->mem, (void **)&c->joint_lane, &c->joint_lane_capacity, c->joint_active, sizeof *c->joint_lane))
+    if (groups == 0) return;
+    if (!ga2d__grow(&w->mem, (void **)&c->jgroups, &c->jgroup_capacity, groups, sizeof *c->jgroups) ||
+        !ga2d__grow(&w->mem, (void **)&c->joint_lane, &c->joint_lane_capacity, c->joint_active, sizeof *c->joint_lane)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
+    }
     memset(c->joint_lane, 0, (size_t)c->joint_active * sizeof *c->joint_lane);
     for (k = 0; k < c->colour_count; ++k)
         for (m = 0; m < c->joint_bare[k] / GA2D__LANES; ++m, ++g) {
@@ -12801,15 +12803,19 @@ static int ga2d__unfinite_velocity(const ga2d__step_context *c, int k)
 }
 
 /* Runs a counting stage over the n moving bodies, on the workers when it
-   is long enough (and memory allows), then contains the bodies it left
+   is long enough (and memory allows; out of memory is reported), then contains the bodies it left
    with a velocity not finite; returns how many it contained. */
 static int ga2d__run_counted(ga2d__step_context *c, ga2d__range_fn *fn, int n)
 {
     ga2d_world *w = c->world;
     int blocks = (n + GA2D__SPLIT_BLOCK - 1) / GA2D__SPLIT_BLOCK, k, contained;
+    int split = n >= GA2D__SPLIT_MIN && w->def.worker_count > 1 && w->def.enqueue_task;
     c->unfinite = 0;
-    if (n >= GA2D__SPLIT_MIN && w->def.worker_count > 1 && w->def.enqueue_task &&
-        ga2d__grow(&w->mem, (void **)&c->counts, &c->counts_capacity, blocks, sizeof *c->counts)) {
+    if (split && !ga2d__grow(&w->mem, (void **)&c->counts, &c->counts_capacity, blocks, sizeof *c->counts)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY; /* reported; the stage runs here, to the same bits */
+        split = 0;
+    }
+    if (split) {
         memset(c->counts, 0, (size_t)blocks * sizeof *c->counts);
         c->counts_split = 1;
         ga2d__run_blocks(c, fn, 0, n, GA2D__SPLIT_BLOCK);

@@ -415,9 +415,12 @@ static void fail_free(void *p, size_t size, void *ctx)
    failed allocation is never swallowed, even when the next one succeeds),
    and the steps after it, with memory back, OK. */
 /* 60 overlapping boxes; with `restitution` their contacts bounce, and
-   restitution's own scratch is among the step's allocations. */
-static ga2d_world *oom_scene(failing *f, ga2d_real restitution)
+   restitution's own scratch is among the step's allocations; `hinged`,
+   each box is pinned to the next by a bare revolute joint, and the
+   solver's hinge lanes are among them. */
+static ga2d_world *oom_scene(failing *f, ga2d_real restitution, int hinged)
 {
+    ga2d_body_id ids[60];
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
     ga2d_body_def d = ga2d_default_body_def();
@@ -433,18 +436,26 @@ static ga2d_world *oom_scene(failing *f, ga2d_real restitution)
     d.type = GA2D_BODY_DYNAMIC;
     for (i = 0; i < 60; ++i) {
         d.position = ga2d_vec_make((ga2d_real)(0.3 * (i % 10)), (ga2d_real)(0.3 * (i / 10)));
-        ga2d_body_create(w, &d);
+        ids[i] = ga2d_body_create(w, &d);
+    }
+    for (i = 0; hinged && i + 1 < 60; ++i) {
+        ga2d_revolute_joint_def jd = ga2d_default_revolute_joint_def();
+        jd.body_a = ids[i];
+        jd.body_b = ids[i + 1];
+        jd.local_anchor_a = ga2d_body_local_point(w, ids[i], ga2d_vec_scale(ga2d_vec_add(ga2d_body_position(w, ids[i]), ga2d_body_position(w, ids[i + 1])), (ga2d_real)0.5));
+        jd.local_anchor_b = ga2d_body_local_point(w, ids[i + 1], ga2d_vec_scale(ga2d_vec_add(ga2d_body_position(w, ids[i]), ga2d_body_position(w, ids[i + 1])), (ga2d_real)0.5));
+        CHECK(!ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &jd)));
     }
     return w;
 }
 
-static void step_out_of_memory(ga2d_real restitution)
+static void step_out_of_memory(ga2d_real restitution, int hinged)
 {
     long k, cum[3];
     int i;
     {
         failing f = {0, 0, 0};
-        ga2d_world *w = oom_scene(&f, restitution);
+        ga2d_world *w = oom_scene(&f, restitution, hinged);
         long start;
         CHECK(w != NULL);
         if (!w) return;
@@ -458,7 +469,7 @@ static void step_out_of_memory(ga2d_real restitution)
     }
     for (k = 1; k <= cum[2] + 1; ++k) {
         failing f = {0, 0, 0};
-        ga2d_world *w = oom_scene(&f, restitution);
+        ga2d_world *w = oom_scene(&f, restitution, hinged);
         int oom = 0;
         if (!w) { CHECK(!"world"); continue; }
         f.fail_from = f.calls + k; /* fail the k-th allocation from here, alone */
@@ -481,8 +492,9 @@ static void step_out_of_memory(ga2d_real restitution)
     }
 }
 
-static void step_out_of_memory_plain(void) { step_out_of_memory(0); }
-static void step_out_of_memory_bouncy(void) { step_out_of_memory((ga2d_real)0.5); }
+static void step_out_of_memory_plain(void) { step_out_of_memory(0, 0); }
+static void step_out_of_memory_bouncy(void) { step_out_of_memory((ga2d_real)0.5, 0); }
+static void step_out_of_memory_hinged(void) { step_out_of_memory(0, 1); }
 
 /* The debug draw: one polygon per live body, with its id and state
    colour; one contact call per touching manifold point; nothing drawn that
@@ -1118,6 +1130,7 @@ void suite_contacts(void)
     test_run("contacts: a touching pair set apart within its boxes ends at once", parted_within_boxes_ends);
     test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory_plain);
     test_run("contacts: a step of bouncing contacts out of memory reports it and recovers", step_out_of_memory_bouncy);
+    test_run("contacts: a step of hinged boxes out of memory reports it and recovers", step_out_of_memory_hinged);
     test_run("contacts: debug draw", debug_draw);
     test_run("contacts: a resting pair's manifold is carried, and remade past half a slop", carried_manifolds);
     test_run("contacts: a round pair is carried by its cores, every pair in both roles", carried_round_pairs);
