@@ -1675,7 +1675,10 @@ GA2D_API ga2d_result ga2d_time_of_impact(const ga2d_shape_proxy *a, const ga2d_s
    allocator) or another query's callback: the world is locked while a
    query runs, so its callback can read the world but not change it.
    Errors: INVALID_ARGUMENT for a NULL world or callback or a zero
-   translation, NOT_FINITE for a value not finite. */
+   translation, NOT_FINITE for a value not finite; the shape queries
+   also TOO_LARGE for a proxy point or radius, x's position or a cast's
+   end (x.p + translation) beyond GA2D_MAX_COORDINATE, as a shape's or a
+   body's would be. */
 
 /* The closest hit along origin + t translation, t in [0, 1] (the null
    shape and hit 0 for none, or on any error). */
@@ -14307,11 +14310,24 @@ static int ga2d__cast_shape_leaf(void *ctx, int k)
     return 1;
 }
 
-static ga2d_result ga2d__shape_query_input(const ga2d_shape_proxy *p, ga2d_transform x)
+/* A world shape query's proxy and placement (translation: a cast's, or
+   NULL).  Values not finite first; then the bounds a shape and a body
+   keep: proxy points, radius, x's position and its end within
+   GA2D_MAX_COORDINATE.  Past them GJK's squared lengths overflow (a point
+   at 3e163 in double) and a hit's point comes out NaN. */
+static ga2d_result ga2d__shape_query_input(const ga2d_shape_proxy *p, ga2d_transform x, const ga2d_vec *translation)
 {
     ga2d_result r = ga2d__proxy_input(p);
-    int bad = ga2d__collide_input(x, x, 1);
-    return r != GA2D_OK ? r : bad ? (ga2d_result)-bad : GA2D_OK;
+    int i, bad = ga2d__collide_input(x, x, 1);
+    if (r != GA2D_OK) return r;
+    if (bad) return (ga2d_result)-bad;
+    if (translation && (!ga2d__finite_vec(*translation) || !ga2d__finite_vec(ga2d_vec_add(x.p, *translation))))
+        return GA2D_ERR_NOT_FINITE;
+    for (i = 0; i < p->count && r == GA2D_OK; ++i) r = ga2d__point_check(p->points[i]);
+    if (r == GA2D_OK) r = ga2d__radius_check(p->radius);
+    if (r == GA2D_OK) r = ga2d__point_check(x.p);
+    if (r == GA2D_OK && translation) r = ga2d__point_check(ga2d_vec_add(x.p, *translation));
+    return r;
 }
 
 GA2D_API ga2d_result ga2d_world_overlap_shape(const ga2d_world *cw, const ga2d_shape_proxy *proxy, ga2d_transform x,
@@ -14319,7 +14335,7 @@ GA2D_API ga2d_result ga2d_world_overlap_shape(const ga2d_world *cw, const ga2d_s
 {
     ga2d__shape_query q;
     ga2d_world *w;
-    ga2d_result r = ga2d__shape_query_input(proxy, x);
+    ga2d_result r = ga2d__shape_query_input(proxy, x, NULL);
     int k;
     if (r == GA2D_OK) r = ga2d__query_begin(cw, fn != NULL, &w);
     if (r != GA2D_OK) return r;
@@ -14343,10 +14359,8 @@ GA2D_API ga2d_result ga2d_world_cast_shape(const ga2d_world *cw, const ga2d_shap
     ga2d__shape_query q;
     ga2d_world *w;
     ga2d_aabb from, to;
-    ga2d_result r = ga2d__shape_query_input(proxy, x);
+    ga2d_result r = ga2d__shape_query_input(proxy, x, &translation);
     int k;
-    if (r == GA2D_OK && (!ga2d__finite_vec(translation) || !ga2d__finite_vec(ga2d_vec_add(x.p, translation))))
-        r = GA2D_ERR_NOT_FINITE;
     if (r == GA2D_OK) r = ga2d__query_begin(cw, fn != NULL, &w);
     if (r != GA2D_OK) return r;
     memset(&q, 0, sizeof q);

@@ -143,7 +143,7 @@ static void regress_world(void) { replay("world", world_one, 9, 6); }
 static void regress_snapshot(void) { replay("snapshot", snapshot_one, 0, 5); }
 static void regress_reentry(void) { replay("reentry", reentry_one, 8, 7); }
 static void regress_shapes(void) { replay("shapes", shapes_one, 17, 9); }
-static void regress_shape_world(void) { replay("shape_world", shape_world_one, 24, 14); }
+static void regress_shape_world(void) { replay("shape_world", shape_world_one, 25, 14); }
 
 /* The empty input and a few fixed ones, which need no files. */
 static void fixed_inputs(void)

@@ -1368,6 +1368,75 @@ static void answers_finite_at_extremes(void)
     }
 }
 
+/* The world's shape queries take a proxy and placement within the bounds
+   a shape and a body keep (GA2D_MAX_COORDINATE, M): past them each is
+   refused with TOO_LARGE and no callback, at them the answers are finite.
+   The fuzz finding: a proxy point at -3.2e163 (double) squared to inf
+   inside GJK, and a cast passed its callback a NaN point. */
+typedef struct bound_ctx { int calls, finite; } bound_ctx;
+static ga2d_real bound_cast(ga2d_shape_id s, ga2d_vec p, ga2d_vec n, ga2d_real fraction, void *ctx)
+{
+    bound_ctx *c = (bound_ctx *)ctx;
+    double l2 = (double)n.x * (double)n.x + (double)n.y * (double)n.y;
+    (void)s;
+    ++c->calls;
+    /* a unit normal, rounded: 16 eps (0 only for a hit at 0 in overlap) */
+    c->finite += ext_finite_vec(p) && fraction >= 0 && fraction <= 1 && (fabs(l2 - 1) <= 16 * REAL_EPS || l2 == 0);
+    return 1;
+}
+static int bound_overlap(ga2d_shape_id s, void *ctx)
+{
+    (void)s;
+    ++((bound_ctx *)ctx)->calls;
+    return 1;
+}
+
+static void shape_queries_bounded(void)
+{
+    const ga2d_real M = (ga2d_real)GA2D_MAX_COORDINATE;
+    /* squares past the real range: 1e163 in double, 1e30 in float */
+    const ga2d_real huge = sizeof(ga2d_real) == sizeof(double) ? (ga2d_real)1e163 : (ga2d_real)1e30;
+    const ga2d_real beyond[2] = {2 * M, huge};
+    ga2d_world *w = ga2d_world_create(NULL);
+    ga2d_body_def bd = ga2d_default_body_def();
+    ga2d_filter all = ga2d_default_filter();
+    ga2d_transform x = ga2d_transform_identity();
+    ga2d_vec down = ga2d_vec_make(0, -5), pts[2];
+    ga2d_shape_proxy p;
+    bound_ctx c;
+    int i, k;
+    bd.type = GA2D_BODY_DYNAMIC;
+    bd.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
+    ga2d_body_create(w, &bd);
+    /* a segment from -M to M, 2 m above the box: at the bound, each query answers */
+    pts[0] = ga2d_vec_make(-M, 2);
+    pts[1] = ga2d_vec_make(M, 2);
+    p = ga2d_make_proxy(pts, 2, (ga2d_real)0.25);
+    memset(&c, 0, sizeof c);
+    CHECK_RESULT(ga2d_world_cast_shape(w, &p, x, down, all, bound_cast, &c), GA2D_OK);
+    CHECK(c.calls == 1 && c.finite == 1);
+    memset(&c, 0, sizeof c);
+    x.p = ga2d_vec_make(0, -2); /* down onto the box */
+    CHECK_RESULT(ga2d_world_overlap_shape(w, &p, x, all, bound_overlap, &c), GA2D_OK);
+    CHECK(c.calls == 1);
+    /* past it: each of a point, the radius, the position and a cast's end */
+    for (k = 0; k < 2; ++k)
+        for (i = 0; i < 4; ++i) {
+            ga2d_shape_proxy q = p;
+            ga2d_transform y = ga2d_transform_identity();
+            ga2d_vec t = down;
+            if (i == 0) q.points[1].x = beyond[k];
+            if (i == 1) q.radius = beyond[k];
+            if (i == 2) y.p.y = -beyond[k];
+            if (i == 3) t.y = -beyond[k];
+            memset(&c, 0, sizeof c);
+            CHECK_RESULT(ga2d_world_cast_shape(w, &q, y, t, all, bound_cast, &c), GA2D_ERR_TOO_LARGE);
+            if (i < 3) CHECK_RESULT(ga2d_world_overlap_shape(w, &q, y, all, bound_overlap, &c), GA2D_ERR_TOO_LARGE);
+            CHECK(c.calls == 0);
+        }
+    ga2d_world_destroy(w);
+}
+
 /* Bodies the step carries far from where their start velocity reaches
    (the step fits the broadphase boxes to that reach at its start): rigid
    distance joints pulling boxes, capsules and circles 2 to 14 m to their
@@ -1651,6 +1720,7 @@ void suite_queries(void)
     test_run("queries: refusals and locks", query_refusals);
     test_run("queries: list bodies", list_bodies);
     test_run("queries: answers finite at the extremes", answers_finite_at_extremes);
+    test_run("queries: shape queries refuse a proxy past the coordinate bound, answer at it", shape_queries_bounded);
     test_run("queries: bodies a step carries out of their boxes are found after it", carried_bodies_found);
     test_run("queries: a far centre of mass moves no shape out of its box", far_centre_keeps_boxes);
     test_run("queries: a centre of mass set off the shape widens its reach", mass_centre_off_the_shape);

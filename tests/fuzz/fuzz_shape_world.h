@@ -2479,6 +2479,18 @@ static int fsw_q_proxy_refused(const ga2d_shape_proxy *p)
     return 0;
 }
 
+/* Finite, but past the bounds a shape and a body keep (a proxy point or
+   radius, the placement or a cast's end beyond GA2D_MAX_COORDINATE): the
+   query refuses it.  The end is summed in ga2d_real, as the library does. */
+static int fsw_q_beyond(const ga2d_shape_proxy *p, ga2d_transform x, ga2d_vec t, int cast)
+{
+    const double M = (double)GA2D_MAX_COORDINATE;
+    ga2d_vec end = ga2d_vec_add(x.p, t);
+    int i, out = fabs((double)p->radius) > M || fabs((double)x.p.x) > M || fabs((double)x.p.y) > M;
+    for (i = 0; i < p->count; ++i) out |= fabs((double)p->points[i].x) > M || fabs((double)p->points[i].y) > M;
+    return out || (cast && (fabs((double)end.x) > M || fabs((double)end.y) > M));
+}
+
 /* A shape overlap or a shape cast. */
 static void fsw_q_shape_query(fsw_state *s, int cast, ga2d_filter f, int mode, int meddle)
 {
@@ -2511,6 +2523,8 @@ static void fsw_q_shape_query(fsw_state *s, int cast, ga2d_filter f, int mode, i
     FUZZ_CHECK((int)r >= 0 && r < GA2D_RESULT_COUNT);
     if (fsw_q_proxy_refused(&px) || !fz_finite_vec(x.p) || !fw_rotor_ok(x.q) || (cast && !fz_finite_vec(t)))
         FUZZ_CHECK(r == GA2D_ERR_NOT_FINITE || r == GA2D_ERR_INVALID_ARGUMENT);
+    else if (fsw_q_beyond(&px, x, t, cast))
+        FUZZ_CHECK(r != GA2D_OK);
     else if (!wild)
         FUZZ_CHECK(r == GA2D_OK); /* a unit rotor, ordinary sizes */
     else
