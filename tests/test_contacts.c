@@ -414,29 +414,58 @@ static void fail_free(void *p, size_t size, void *ctx)
    before it must say OK, the step that makes it must say OUT_OF_MEMORY (a
    failed allocation is never swallowed, even when the next one succeeds),
    and the steps after it, with memory back, OK. */
+/* Runs every range at once, here, and returns NULL (finish is not called):
+   a task system that makes the step split its stages, in one thread. */
+static void *oom_enqueue(ga2d_task_fn *task, int count, int min_range, void *context, void *user)
+{
+    (void)min_range;
+    (void)user;
+    task(0, count, 0, context);
+    return NULL;
+}
+static void oom_finish(void *task, void *user)
+{
+    (void)task;
+    (void)user;
+}
+
 /* 60 overlapping boxes; with `restitution` their contacts bounce, and
    restitution's own scratch is among the step's allocations; `hinged`,
    each box is pinned to the next by a bare revolute joint, and the
-   solver's hinge lanes are among them. */
-static ga2d_world *oom_scene(failing *f, ga2d_real restitution, int hinged)
+   solver's hinge lanes are among them.  `split`: OOM_SPLIT_BOXES boxes in
+   rows, each overlapping its neighbours by 0.1 m, stepped by two workers
+   (oom_enqueue), so that the stages over the moving bodies are split and
+   their per-block counts are among the allocations (ga2d__run_counted
+   splits from 1024 moving bodies). */
+#define OOM_SPLIT_BOXES 1100
+static ga2d_world *oom_scene(failing *f, ga2d_real restitution, int hinged, int split)
 {
     ga2d_body_id ids[60];
     ga2d_world_def wd = ga2d_default_world_def();
     ga2d_world *w;
     ga2d_body_def d = ga2d_default_body_def();
-    int i;
+    int i, n = split ? OOM_SPLIT_BOXES : 60;
     d.polygon = ga2d_polygon_box((ga2d_real)0.5, (ga2d_real)0.5);
     d.restitution = restitution;
     f->fail_from = 1000000;
     wd.allocator.alloc = fail_alloc;
     wd.allocator.free = fail_free;
     wd.allocator.ctx = f;
+    if (split) {
+        wd.worker_count = 2;
+        wd.enqueue_task = oom_enqueue;
+        wd.finish_task = oom_finish;
+    }
     w = ga2d_world_create(&wd);
     if (!w) return NULL;
     d.type = GA2D_BODY_DYNAMIC;
-    for (i = 0; i < 60; ++i) {
-        d.position = ga2d_vec_make((ga2d_real)(0.3 * (i % 10)), (ga2d_real)(0.3 * (i / 10)));
-        ids[i] = ga2d_body_create(w, &d);
+    for (i = 0; i < n; ++i) {
+        ga2d_real gap = (ga2d_real)(split ? 0.9 : 0.3);
+        ga2d_body_id id;
+        d.position = ga2d_vec_make(gap * (ga2d_real)(i % (split ? 40 : 10)), gap * (ga2d_real)(i / (split ? 40 : 10)));
+        id = ga2d_body_create(w, &d);
+        CHECK(!ga2d_body_id_is_null(id));
+        if (i < 60) ids[i] = id;
     }
     for (i = 0; hinged && i + 1 < 60; ++i) {
         ga2d_revolute_joint_def jd = ga2d_default_revolute_joint_def();
@@ -449,13 +478,13 @@ static ga2d_world *oom_scene(failing *f, ga2d_real restitution, int hinged)
     return w;
 }
 
-static void step_out_of_memory(ga2d_real restitution, int hinged)
+static void step_out_of_memory(ga2d_real restitution, int hinged, int split)
 {
     long k, cum[3];
     int i;
     {
         failing f = {0, 0, 0};
-        ga2d_world *w = oom_scene(&f, restitution, hinged);
+        ga2d_world *w = oom_scene(&f, restitution, hinged, split);
         long start;
         CHECK(w != NULL);
         if (!w) return;
@@ -469,7 +498,7 @@ static void step_out_of_memory(ga2d_real restitution, int hinged)
     }
     for (k = 1; k <= cum[2] + 1; ++k) {
         failing f = {0, 0, 0};
-        ga2d_world *w = oom_scene(&f, restitution, hinged);
+        ga2d_world *w = oom_scene(&f, restitution, hinged, split);
         int oom = 0;
         if (!w) { CHECK(!"world"); continue; }
         f.fail_from = f.calls + k; /* fail the k-th allocation from here, alone */
@@ -492,9 +521,10 @@ static void step_out_of_memory(ga2d_real restitution, int hinged)
     }
 }
 
-static void step_out_of_memory_plain(void) { step_out_of_memory(0, 0); }
-static void step_out_of_memory_bouncy(void) { step_out_of_memory((ga2d_real)0.5, 0); }
-static void step_out_of_memory_hinged(void) { step_out_of_memory(0, 1); }
+static void step_out_of_memory_plain(void) { step_out_of_memory(0, 0, 0); }
+static void step_out_of_memory_bouncy(void) { step_out_of_memory((ga2d_real)0.5, 0, 0); }
+static void step_out_of_memory_hinged(void) { step_out_of_memory(0, 1, 0); }
+static void step_out_of_memory_split(void) { step_out_of_memory(0, 0, 1); }
 
 /* The debug draw: one polygon per live body, with its id and state
    colour; one contact call per touching manifold point; nothing drawn that
@@ -1131,6 +1161,7 @@ void suite_contacts(void)
     test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory_plain);
     test_run("contacts: a step of bouncing contacts out of memory reports it and recovers", step_out_of_memory_bouncy);
     test_run("contacts: a step of hinged boxes out of memory reports it and recovers", step_out_of_memory_hinged);
+    test_run("contacts: a step split over two workers out of memory reports it and recovers", step_out_of_memory_split);
     test_run("contacts: debug draw", debug_draw);
     test_run("contacts: a resting pair's manifold is carried, and remade past half a slop", carried_manifolds);
     test_run("contacts: a round pair is carried by its cores, every pair in both roles", carried_round_pairs);
