@@ -164,7 +164,28 @@ done:
    their boxes; the tenth stop (their boxes stick out 2 vh + m ahead: found
    again) and a few the wrap teleports: far under the half that rebuilds,
    so the tree built at the step before is updated leaf by leaf.  The
-   pair set equals the O(n^2) check after every step. */
+   pair set equals the O(n^2) check after every step.
+   And the rebuilt tree is a good one: 1 m boxes queried at random visit
+   (counters.query_nodes) on average at most 252 nodes.  A fat box
+   reaches at most e = 2.83 m (a 2 x 2 m half-box's corner) + 0.4 m (two
+   steps) + 0.1 m from its shape's centre, so a node meets the query only
+   if its centres' cell meets the query grown by e: a square of side s =
+   7.7 m.  The median splits halve the 100 m square level by level into
+   cells of 50 x 100, 50 x 50, 25 x 50, ... m (the bodies lie about evenly
+   over it); a square of side s meets at most (floor(s/a) + 2)
+   (floor(s/b) + 2) of a grid of a x b cells, and no more than the 2^d
+   there are: 1, 2, 4, 4, 4, 4, 4, 6, 9, 12, 16 at depths 0 to 10 (600
+   leaves), 66 nodes, whose children are the nodes looked at: at most 1 +
+   2 x 66 = 133; and the static tree's 119 nodes at most.  A tree split anywhere but at the median has halves that each
+   spread over the whole square, and a query looks at most of its 1 199
+   nodes. */
+static int count_overlap(ga2d_shape_id shape, void *context)
+{
+    (void)shape;
+    ++*(int *)context;
+    return 1;
+}
+
 static void rebuilt_trees_keep_pairs(void)
 {
     const int n = 660, steps = 40, cap = 100000;
@@ -174,6 +195,7 @@ static void rebuilt_trees_keep_pairs(void)
     ga2d_contact_data *buf = (ga2d_contact_data *)malloc(sizeof(ga2d_contact_data) * cap);
     ga2d_world_def wd = ga2d_default_world_def();
     int i, step, rebuilt = 0, min_pairs = cap;
+    long long visited = 0, queries = 0;
     double dir[660];
     s.ids = (ga2d_body_id *)malloc(sizeof(ga2d_body_id) * n);
     if (!mine || !ref || !buf || !s.ids) { CHECK(!"out of memory"); goto done; }
@@ -211,6 +233,15 @@ static void rebuilt_trees_keep_pairs(void)
         CHECK(nm == nr);
         CHECK(nm <= cap && memcmp(mine, ref, sizeof(uint64_t) * (size_t)(nm < nr ? nm : nr)) == 0);
         min_pairs = nm < min_pairs ? nm : min_pairs;
+        for (i = 0; i < 20 && step % 2 == 0; ++i) { /* the rebuilt tree, queried */
+            ga2d_aabb q;
+            int found = 0;
+            q.lower = ga2d_vec_make((ga2d_real)rng_uniform(&rng, -50, 49), (ga2d_real)rng_uniform(&rng, -50, 49));
+            q.upper = ga2d_vec_make(q.lower.x + 1, q.lower.y + 1);
+            CHECK_RESULT(ga2d_world_overlap_aabb(s.w, q, ga2d_default_filter(), count_overlap, &found), GA2D_OK);
+            visited += ga2d_world_get_counters(s.w).query_nodes;
+            ++queries;
+        }
         for (i = 60; i < n; ++i) { /* wrapped round the square */
             ga2d_vec p = ga2d_body_position(s.w, s.ids[i]);
             if (p.x > 50 || p.x < -50 || p.y > 50 || p.y < -50) {
@@ -221,6 +252,7 @@ static void rebuilt_trees_keep_pairs(void)
         }
     }
     CHECK(rebuilt == steps / 2);
+    CHECK((double)visited <= 252.0 * (double)queries);
     CHECK(min_pairs > 50); /* busy enough to test something */
     ga2d_world_destroy(s.w);
 done:
