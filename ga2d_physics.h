@@ -5180,6 +5180,7 @@ struct ga2d_world {
     /* contacts: a pool, and the set of pairs that have one */
     ga2d__contact *contacts;
     int contact_capacity, contact_used, contact_free, contact_count;
+    int touching_count;          /* contacts with manifold points: the counter, kept as they flip */
     uint64_t contact_serial;     /* the next contact's */
     ga2d__touch *touches, *touches_next; /* the touching contacts, canonical order, kept step to step */
     int touch_count, touch_capacity, touch_next_capacity;
@@ -5543,6 +5544,7 @@ static void ga2d__destroy_contact(ga2d_world *w, int ci)
     ga2d__unlink_contact(w, ci, 0);
     ga2d__unlink_contact(w, ci, 1);
     ga2d__pairs_remove(w, ga2d__pair_key(c->shape_a, c->shape_b));
+    w->touching_count -= c->touching;
     c->next_free = w->contact_free;
     w->contact_free = ci;
     --w->contact_count;
@@ -6392,7 +6394,7 @@ GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w)
     c.joint_count = w->joint_count;
     c.moving_body_count = w->moving_count;
     c.pair_count = w->contact_count;
-    c.touching_count = ga2d_world_get_contacts(w, NULL, 0);
+    c.touching_count = w->touching_count;
     c.awake_body_count = 0;
     {
         int k;
@@ -8671,11 +8673,13 @@ static void ga2d__contact_changes(ga2d__step_context *c)
             continue;
         }
         if (f & GA2D__CONTACT_ENDED) {
+            --w->touching_count;
             ga2d__push_event(w, 1, ct);
             memset(&ct->manifold, 0, sizeof ct->manifold); /* as ga2d__collide left it: no point */
             ct->manifold.normal = ct->end_normal;
         }
         if (f & GA2D__CONTACT_BEGAN) {
+            ++w->touching_count;
             ga2d__push_event(w, 0, ct);
             /* for the touching list (out of memory: reported, and the
                list is walked anew) */
@@ -15497,6 +15501,7 @@ static int ga2d__snap_read_contacts(ga2d_world *t, ga2d__codec *k)
         ct = &t->contacts[t->contact_used - 1];
         ct->manifold = c.manifold;
         ct->touching = c.touching;
+        t->touching_count += c.touching;
         ct->friction = c.friction;
         ct->restitution = c.restitution;
         ct->held = c.held;

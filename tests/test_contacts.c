@@ -1262,6 +1262,80 @@ static void noop_field_keeps_bits(void)
     ga2d_world_destroy(fielded);
 }
 
+/* The touching counter is kept as contacts begin, end and go, not counted
+   at each call: it must equal the pairs whose manifold has points, read
+   from the pair list, after every step and every call that ends contacts
+   (a body destroyed, a shape destroyed, a filter changed, a teleport, a
+   snapshot loaded into another world).  40 boxes fall into a bin with
+   sleep on, so pairs also sleep and wake. */
+#define TC_BOXES 40
+static int tc_touching_pairs(const ga2d_world *w)
+{
+    static ga2d_contact_data cd[1024];
+    int i, n = ga2d_world_get_pairs(w, cd, 1024), t = 0;
+    CHECK(n <= 1024);
+    for (i = 0; i < n && i < 1024; ++i) t += cd[i].manifold.count > 0;
+    return t;
+}
+
+static void touching_counter_follows_contacts(void)
+{
+    ga2d_world *w = ga2d_world_create(NULL), *copy = ga2d_world_create(NULL);
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_body_id box[TC_BOXES];
+    ga2d_shape_id sh;
+    int i, k, most = 0, agree = 1;
+    unsigned char *buf;
+    size_t size;
+    d.type = GA2D_BODY_STATIC;
+    d.polygon = ga2d_polygon_box(6, (ga2d_real)0.5);
+    ga2d_body_create(w, &d);
+    d.polygon = ga2d_polygon_box((ga2d_real)0.5, 6);
+    d.position = ga2d_vec_make(-6, 6);
+    ga2d_body_create(w, &d);
+    d.position = ga2d_vec_make(6, 6);
+    ga2d_body_create(w, &d);
+    d.type = GA2D_BODY_DYNAMIC;
+    d.polygon = ga2d_polygon_box((ga2d_real)0.4, (ga2d_real)0.4);
+    for (i = 0; i < TC_BOXES; ++i) {
+        d.position = ga2d_vec_make((ga2d_real)(-4 + (i % 8)), (ga2d_real)(1 + (i / 8)));
+        d.rotor = ga2d_rotor_from_angle((ga2d_real)(0.1 * i));
+        box[i] = ga2d_body_create(w, &d);
+    }
+    for (k = 0; k < 600; ++k) {
+        ga2d_filter f = ga2d_default_filter();
+        CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+        if (k == 200) for (i = 0; i < 5; ++i) CHECK_RESULT(ga2d_body_destroy(w, box[i]), GA2D_OK);
+        if (k == 260) {
+            f.group_index = -3; /* the same negative group: their touching pairs go */
+            for (i = 10; i < 20; ++i) CHECK_RESULT(ga2d_body_set_filter(w, box[i], f), GA2D_OK);
+        }
+        if (k == 300 && ga2d_body_get_shapes(w, box[30], &sh, 1) == 1) CHECK_RESULT(ga2d_shape_destroy(w, sh, 1), GA2D_OK);
+        if (k == 340) CHECK_RESULT(ga2d_body_set_transform(w, box[35], ga2d_vec_make(0, 30), ga2d_rotor_identity()), GA2D_OK);
+        if (k == 400) CHECK_RESULT(ga2d_body_set_awake(w, box[25], 1), GA2D_OK);
+        agree &= ga2d_world_get_counters(w).touching_count == tc_touching_pairs(w);
+        if (ga2d_world_get_counters(w).touching_count > most) most = ga2d_world_get_counters(w).touching_count;
+    }
+    CHECK(agree);
+    /* 40 boxes in rows of 8 on a 12 m floor: each rests on the floor or a
+       box (at least 40 pairs once they land), so the count was not idle */
+    CHECK(most >= TC_BOXES);
+    size = ga2d_world_snapshot_size(w);
+    buf = (unsigned char *)malloc(size);
+    CHECK(buf != NULL);
+    if (buf) {
+        CHECK_RESULT(ga2d_world_snapshot_save(w, buf, size), GA2D_OK);
+        CHECK_RESULT(ga2d_world_snapshot_load(copy, buf, size), GA2D_OK);
+        CHECK(ga2d_world_get_counters(copy).touching_count == tc_touching_pairs(copy));
+        CHECK(ga2d_world_get_counters(copy).touching_count == ga2d_world_get_counters(w).touching_count);
+        CHECK_RESULT(ga2d_world_step(copy, (ga2d_real)(1.0 / 60)), GA2D_OK);
+        CHECK(ga2d_world_get_counters(copy).touching_count == tc_touching_pairs(copy));
+        free(buf);
+    }
+    ga2d_world_destroy(w);
+    ga2d_world_destroy(copy);
+}
+
 void suite_contacts(void)
 {
     test_run("contacts: a force callback that adds nothing changes no bit of a sliding, rolling pile", noop_field_keeps_bits);
@@ -1271,6 +1345,7 @@ void suite_contacts(void)
     test_run("contacts: begin and end events follow the manifolds", begin_and_end_events);
     test_run("contacts: no static-static or kinematic-only pairs", pair_rules);
     test_run("contacts: destroy and refilter end contacts", destroy_and_refilter);
+    test_run("contacts: the touching counter follows begins, ends, destroys, refilters and snapshots", touching_counter_follows_contacts);
     test_run("contacts: late static bodies and teleports", teleport_and_new_static);
     test_run("contacts: a touching pair set apart within its boxes ends at once", parted_within_boxes_ends);
     test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory_plain);
