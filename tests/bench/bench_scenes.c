@@ -38,7 +38,11 @@
    per worker count, "1,1234.5": the fastest run's time in ms of every step
    but the first, summed (Box2D's measure: its runs step the scene's steps
    and time all but the first; so do these, 500 for large_pyramid as
-   there).  The worker counts are WORKER_COUNTS'. */
+   there).  The worker counts are WORKER_COUNTS', one run of each in every
+   round, taken in turn (the order reversed every other round): the
+   2-worker line gives the ratio of the medians and the median of the
+   rounds' ratios (bench_cores says what this machine's second core gave
+   at the time). */
 #define _POSIX_C_SOURCE 200112L
 #define GA2D_IMPLEMENTATION
 #include "ga2d_physics.h"
@@ -202,16 +206,21 @@ int main(int argc, char **argv)
             fprintf(stderr, "bench_scenes: cannot make %s\n", SCENES[i]);
             return 1;
         }
-        /* every worker count's runs in turn; the table gives the first's,
-           and every count must give the first's figure bit for bit */
-        for (c = 0; c < WORKER_COUNT_N; ++c) {
-            wd = sr_scene_def(&s, ga2d_default_world_def());
-            if (!set_workers(&wd, WORKER_COUNTS[c])) {
-                fprintf(stderr, "bench_scenes: cannot step with %d workers\n", WORKER_COUNTS[c]);
-                return 1;
-            }
-            for (r = 0; r < runs; ++r) {
+        /* a run of every worker count in each round, the order reversed
+           every other round, so that a slow spell of the machine (its
+           second core shared for a while: bench_cores) falls on each count
+           alike; the table gives the first count's, and every count must
+           give the first's figure bit for bit */
+        for (r = 0; r < runs; ++r) {
+            int turn;
+            for (turn = 0; turn < WORKER_COUNT_N; ++turn) {
                 sr_result res;
+                c = r % 2 ? WORKER_COUNT_N - 1 - turn : turn;
+                wd = sr_scene_def(&s, ga2d_default_world_def());
+                if (!set_workers(&wd, WORKER_COUNTS[c])) {
+                    fprintf(stderr, "bench_scenes: cannot step with %d workers\n", WORKER_COUNTS[c]);
+                    return 1;
+                }
                 failed |= !sr_run_scene(&s, wd, 0, &res);
                 if (c == 0) ms[r] = res.ms;
                 step_ms[c][r] = res.ms;
@@ -233,13 +242,19 @@ int main(int argc, char **argv)
             bad = 1;
         }
         for (c = 1; c < WORKER_COUNT_N && !failed; ++c) {
-            double one, more;
-            qsort(step_ms[0], (size_t)runs, sizeof step_ms[0][0], sr__cmp_double);
-            qsort(step_ms[c], (size_t)runs, sizeof step_ms[c][0], sr__cmp_double);
-            one = step_ms[0][runs / 2];
-            more = step_ms[c][runs / 2];
-            printf("%-14s %7s %d workers: %.3f ms/step median, %.2f times one worker's speed (the same bits: %s)\n", "", "",
-                   WORKER_COUNTS[c], more, one / more, differ ? "NO" : "yes");
+            double one[MAX_RUNS], more[MAX_RUNS], pair[MAX_RUNS];
+            for (r = 0; r < runs; ++r) { /* the rounds' own ratios: runs of a round share the machine's spell */
+                one[r] = step_ms[0][r];
+                more[r] = step_ms[c][r];
+                pair[r] = one[r] / more[r];
+            }
+            qsort(one, (size_t)runs, sizeof one[0], sr__cmp_double);
+            qsort(more, (size_t)runs, sizeof more[0], sr__cmp_double);
+            qsort(pair, (size_t)runs, sizeof pair[0], sr__cmp_double);
+            printf("%-14s %7s %d workers: %.3f ms/step median, %.2f times one worker's speed (%.2f the median of the "
+                   "rounds' ratios; the same bits: %s)\n",
+                   "", "", WORKER_COUNTS[c], more[runs / 2], one[runs / 2] / more[runs / 2], pair[runs / 2],
+                   differ ? "NO" : "yes");
         }
         if (s.joint_count > 0)
             printf("%-14s %7s %d joints, %.0f solved per step; worst joint separation at the end %.3e m\n", "", "",
