@@ -5161,6 +5161,7 @@ struct ga2d_world {
     int sensor_scratch_count, sensor_scratch_capacity;
     int *moving;                 /* slots of kinematic and dynamic bodies */
     int moving_count, moving_capacity;
+    int moving_dynamic;          /* of them dynamic: the awake bodies counters report */
     double time, eval_time;
     int lock;                    /* GA2D__LOCK_* bits: why changes are refused now */
     int depth;                   /* entry points under way that may run user code */
@@ -6395,11 +6396,7 @@ GA2D_API ga2d_world_counters ga2d_world_get_counters(const ga2d_world *w)
     c.moving_body_count = w->moving_count;
     c.pair_count = w->contact_count;
     c.touching_count = w->touching_count;
-    c.awake_body_count = 0;
-    {
-        int k;
-        for (k = 0; k < w->moving_count; ++k) c.awake_body_count += w->bodies[w->moving[k]].type == GA2D_BODY_DYNAMIC;
-    }
+    c.awake_body_count = w->moving_dynamic;
     return c;
 }
 
@@ -7196,6 +7193,7 @@ static void ga2d__moving_add(ga2d_world *w, int i)
     w->bodies[i].box_slack = -1;
     w->bodies[i].move_index = w->moving_count;
     w->moving[w->moving_count++] = i;
+    w->moving_dynamic += w->bodies[i].type == GA2D_BODY_DYNAMIC;
 }
 
 static void ga2d__moving_remove(ga2d_world *w, int i)
@@ -7206,6 +7204,7 @@ static void ga2d__moving_remove(ga2d_world *w, int i)
     w->moving[k] = last;
     w->bodies[last].move_index = k;
     w->bodies[i].move_index = -1;
+    w->moving_dynamic -= w->bodies[i].type == GA2D_BODY_DYNAMIC;
 }
 
 static ga2d_body_id ga2d__body_create(ga2d_world *w, const ga2d_body_def *def)

@@ -1267,8 +1267,19 @@ static void noop_field_keeps_bits(void)
    from the pair list, after every step and every call that ends contacts
    (a body destroyed, a shape destroyed, a filter changed, a teleport, a
    snapshot loaded into another world).  40 boxes fall into a bin with
-   sleep on, so pairs also sleep and wake. */
+   sleep on, so pairs also sleep and wake.  The awake counter likewise:
+   the dynamic bodies that say they are awake, listed one by one (a
+   kinematic body flying above moves but is not counted). */
 #define TC_BOXES 40
+static int tc_awake_dynamic(const ga2d_world *w)
+{
+    ga2d_body_id ids[64];
+    int i, n = ga2d_world_get_bodies(w, ids, 64), t = 0;
+    CHECK(n <= 64);
+    for (i = 0; i < n && i < 64; ++i)
+        t += ga2d_body_get_type(w, ids[i]) == GA2D_BODY_DYNAMIC && ga2d_body_is_awake(w, ids[i]);
+    return t;
+}
 static int tc_touching_pairs(const ga2d_world *w)
 {
     static ga2d_contact_data cd[1024];
@@ -1284,7 +1295,7 @@ static void touching_counter_follows_contacts(void)
     ga2d_body_def d = ga2d_default_body_def();
     ga2d_body_id box[TC_BOXES];
     ga2d_shape_id sh;
-    int i, k, most = 0, agree = 1;
+    int i, k, most = 0, agree = 1, awake_agree = 1, fewest_awake = TC_BOXES;
     unsigned char *buf;
     size_t size;
     d.type = GA2D_BODY_STATIC;
@@ -1302,6 +1313,10 @@ static void touching_counter_follows_contacts(void)
         d.rotor = ga2d_rotor_from_angle((ga2d_real)(0.1 * i));
         box[i] = ga2d_body_create(w, &d);
     }
+    d.type = GA2D_BODY_KINEMATIC;
+    d.position = ga2d_vec_make(-20, 40);
+    d.velocity = ga2d_vec_make(2, 0);
+    ga2d_body_create(w, &d);
     for (k = 0; k < 600; ++k) {
         ga2d_filter f = ga2d_default_filter();
         CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
@@ -1314,9 +1329,15 @@ static void touching_counter_follows_contacts(void)
         if (k == 340) CHECK_RESULT(ga2d_body_set_transform(w, box[35], ga2d_vec_make(0, 30), ga2d_rotor_identity()), GA2D_OK);
         if (k == 400) CHECK_RESULT(ga2d_body_set_awake(w, box[25], 1), GA2D_OK);
         agree &= ga2d_world_get_counters(w).touching_count == tc_touching_pairs(w);
+        awake_agree &= ga2d_world_get_counters(w).awake_body_count == tc_awake_dynamic(w);
         if (ga2d_world_get_counters(w).touching_count > most) most = ga2d_world_get_counters(w).touching_count;
+        if (tc_awake_dynamic(w) < fewest_awake) fewest_awake = tc_awake_dynamic(w);
     }
     CHECK(agree);
+    CHECK(awake_agree);
+    /* and not idle: the pile fell asleep (sleep takes 0.5 s of rest; the
+       boxes land within 2 s of the 10) */
+    CHECK(fewest_awake < TC_BOXES - 5);
     /* 40 boxes in rows of 8 on a 12 m floor: each rests on the floor or a
        box (at least 40 pairs once they land), so the count was not idle */
     CHECK(most >= TC_BOXES);
@@ -1328,6 +1349,8 @@ static void touching_counter_follows_contacts(void)
         CHECK_RESULT(ga2d_world_snapshot_load(copy, buf, size), GA2D_OK);
         CHECK(ga2d_world_get_counters(copy).touching_count == tc_touching_pairs(copy));
         CHECK(ga2d_world_get_counters(copy).touching_count == ga2d_world_get_counters(w).touching_count);
+        CHECK(ga2d_world_get_counters(copy).awake_body_count == tc_awake_dynamic(copy));
+        CHECK(ga2d_world_get_counters(copy).awake_body_count == ga2d_world_get_counters(w).awake_body_count);
         CHECK_RESULT(ga2d_world_step(copy, (ga2d_real)(1.0 / 60)), GA2D_OK);
         CHECK(ga2d_world_get_counters(copy).touching_count == tc_touching_pairs(copy));
         free(buf);
@@ -1345,7 +1368,7 @@ void suite_contacts(void)
     test_run("contacts: begin and end events follow the manifolds", begin_and_end_events);
     test_run("contacts: no static-static or kinematic-only pairs", pair_rules);
     test_run("contacts: destroy and refilter end contacts", destroy_and_refilter);
-    test_run("contacts: the touching counter follows begins, ends, destroys, refilters and snapshots", touching_counter_follows_contacts);
+    test_run("contacts: the touching and awake counters follow begins, ends, sleep, destroys, refilters and snapshots", touching_counter_follows_contacts);
     test_run("contacts: late static bodies and teleports", teleport_and_new_static);
     test_run("contacts: a touching pair set apart within its boxes ends at once", parted_within_boxes_ends);
     test_run("contacts: a step out of memory reports it and recovers", step_out_of_memory_plain);
