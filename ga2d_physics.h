@@ -2849,7 +2849,8 @@ static void ga2d__tree_refit(ga2d__tree *t, int i)
 /* Leaves refitted in a step, taken out and put back one by one, would
    rebuild their paths each time: instead each new leaf box marks its
    ancestors up to the root (ga2d__tree_mark), one pass then refits the
-   marked boxes from below (ga2d__tree_tighten), and only the leaves that
+   marked boxes from below (ga2d__tree_tighten; when many moved, every
+   box: ga2d__tree_tighten_all), and only the leaves that
    left their parent's box go back in by the heuristic.  Until the
    tightening a marked box may not hold its children: nothing reads the
    tree in between.  A marked inner node's body, -1 otherwise, is
@@ -2885,6 +2886,34 @@ static int ga2d__tree_strayed(const ga2d__tree *t, int leaf)
    the marks cleared.  The stack holds at most the height + 1 (see
    ga2d__tree_query), each node twice (once down, once up: a tagged
    index). */
+/* Every inner box refitted from below, in one walk over the tree: when
+   many leaves moved, cheaper than marking their paths (a walk up from
+   each leaf, node after dependent node, to the first marked one: half of
+   the book-keeping's time in a swinging 100 x 100 grid).  An inner box
+   not on a moved leaf's path already holds its children exactly (every
+   change refits its ancestors), so it gets the bits ga2d__tree_tighten
+   would leave it. */
+static void ga2d__tree_tighten_all(ga2d__tree *t)
+{
+    ga2d__node *n = t->nodes;
+    int stack[512], top = 0;
+    t->marked = 0;
+    if (t->root < 0 || n[t->root].height == 0) return;
+    stack[top++] = t->root;
+    while (top > 0) {
+        int i = stack[--top];
+        if (i < 0) { /* back up: its children are tight */
+            i = ~i;
+            n[i].box = ga2d_aabb_union(n[n[i].child1].box, n[n[i].child2].box);
+            continue;
+        }
+        GA2D_ASSERT(top + 3 <= 512);
+        stack[top++] = ~i;
+        if (n[n[i].child1].height > 0) stack[top++] = n[i].child1;
+        if (n[n[i].child2].height > 0) stack[top++] = n[i].child2;
+    }
+}
+
 static void ga2d__tree_tighten(ga2d__tree *t)
 {
     ga2d__node *n = t->nodes;
@@ -8391,6 +8420,7 @@ static void ga2d__flag_strays(ga2d__step_context *c, int begin, int end)
    the pairs they give, on the boxes alone); the shapes queue for pair
    finding.  Then the queue is sorted, without destroyed shapes and
    repeats (a slot destroyed and reused). */
+#define GA2D__TIGHTEN_ALL 16 /* past 1 leaf moved in this many: the whole tree refitted */
 static void ga2d__refit_proxies(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
@@ -8401,7 +8431,6 @@ static void ga2d__refit_proxies(ga2d__step_context *c)
             ga2d__shape *sh = &w->shapes[s];
             ga2d__tree *t = ga2d__tree_of(w, sh);
             t->units[t->moved++] = sh->proxy;
-            ga2d__tree_mark(t, sh->proxy);
             ga2d__buffer_move(w, s);
         }
     }
@@ -8414,7 +8443,12 @@ static void ga2d__refit_proxies(ga2d__step_context *c)
             ++w->counters.trees_rebuilt;
             continue;
         }
-        if (t->marked) ga2d__tree_tighten(t);
+        if (t->moved * GA2D__TIGHTEN_ALL > t->leaves) {
+            ga2d__tree_tighten_all(t);
+        } else if (t->moved > 0) {
+            for (i = 0; i < t->moved; ++i) ga2d__tree_mark(t, t->units[i]);
+            ga2d__tree_tighten(t);
+        }
         c->stray_tree = t;
         ga2d__run_split(c, ga2d__flag_strays, t->moved);
         for (i = 0; i < t->moved; ++i)
