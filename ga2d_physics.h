@@ -10349,14 +10349,15 @@ static void ga2d__keep_lanes(ga2d__step_context *c)
    side a joint does not move gets its solver body. */
 static void ga2d__joints_kept(ga2d__step_context *c)
 {
-    const ga2d_world *w = c->world;
     int p;
     for (p = 0; p < c->joint_active; ++p) c->joint_sorted[p] = c->joint_order[c->joint_perm[p]];
     ga2d__swap_arrays((void **)&c->joint_order, &c->joint_order_capacity, (void **)&c->joint_sorted, &c->joint_sorted_capacity);
+    /* from the keys in listing order (ga2d__joint_key), not the joints'
+       records in the colours' order: a cache miss each */
     for (p = 0; p < c->joint_active; ++p) {
-        const ga2d__joint *j = &w->joints[c->joint_order[p]];
-        if (j->ima == 0 && j->iia == 0) ga2d__still_body(c, j->body[0]);
-        if (j->imb == 0 && j->iib == 0) ga2d__still_body(c, j->body[1]);
+        const ga2d__lane_key *k = &c->joint_keys[p];
+        if (!(k->moves & 1)) ga2d__still_body(c, k->a);
+        if (!(k->moves & 2)) ga2d__still_body(c, k->b);
     }
 }
 
