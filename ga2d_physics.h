@@ -4979,6 +4979,7 @@ typedef struct ga2d__group_extra ga2d__group_extra;
 typedef struct ga2d__sbody ga2d__sbody;
 typedef struct ga2d__kbody ga2d__kbody;
 typedef struct ga2d__lane_key ga2d__lane_key;
+typedef struct ga2d__joint_seen ga2d__joint_seen;
 typedef struct ga2d__joint ga2d__joint;
 typedef struct ga2d__jgroup ga2d__jgroup;
 typedef struct ga2d__rk4 ga2d__rk4;
@@ -5057,6 +5058,8 @@ typedef struct ga2d__step_context {
     ga2d__lane_key *joint_keys;  /* each step joint's bodies and sides moved (ga2d__joint_key), in
                                     joint_order's creation order, from ga2d__prepare_joints */
     int joint_key_capacity;
+    ga2d__joint_seen *joint_seen; /* per joint slot, what ga2d__see_joints found of it */
+    int joint_seen_capacity;
     int *joint_sorted;           /* scratch while joints are coloured: the order by colour */
     int joint_sorted_capacity;
     int *joint_perm;             /* the colour order as positions in creation order (kept with the colouring) */
@@ -11859,6 +11862,37 @@ GA2D_API ga2d_vec ga2d_body_local_point(const ga2d_world *w, ga2d_body_id id, ga
 }
 
 /* ---------------------------------------------------------- joint solver */
+/* What the step's listing needs of a joint slot, found on the workers
+   (ga2d__see_joints) so that the listing itself reads one small array in
+   order, not every joint's record and its two bodies'. */
+enum { GA2D__JOINT_GONE, GA2D__JOINT_AWAKE, GA2D__JOINT_ASLEEP };
+struct ga2d__joint_seen {
+    uint64_t serial;
+    int state; /* GA2D__JOINT_*: free slot; an awake dynamic body; neither */
+};
+
+/* Stage, over the joint slots: each one's state and serial. */
+static void ga2d__see_joints(ga2d__step_context *c, int begin, int end)
+{
+    const ga2d_world *w = c->world;
+    int k;
+    for (k = begin; k < end; ++k) {
+        const ga2d__joint *j = &w->joints[k];
+        ga2d__joint_seen *seen = &c->joint_seen[k];
+        const ga2d__body *a, *b;
+        if (j->type < 0) {
+            seen->state = GA2D__JOINT_GONE;
+            continue;
+        }
+        a = &w->bodies[j->body[0]];
+        b = &w->bodies[j->body[1]];
+        seen->serial = j->serial;
+        seen->state = (a->type == GA2D_BODY_DYNAMIC && a->awake) || (b->type == GA2D_BODY_DYNAMIC && b->awake)
+                          ? GA2D__JOINT_AWAKE
+                          : GA2D__JOINT_ASLEEP;
+    }
+}
+
 /* The step's joints: those with an awake dynamic body, in creation order
    (insertion sort on the serial: the pool's order is nearly that, so
    this is about one pass).  Out of memory: the step reports it and no
@@ -11866,37 +11900,39 @@ GA2D_API ga2d_vec ga2d_body_local_point(const ga2d_world *w, ga2d_body_id id, ga
 static void ga2d__order_joints(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
+    const ga2d__joint_seen *seen;
     int k, n = 0;
     uint64_t last = 0; /* the largest serial listed */
     c->joint_active = 0;
     if (w->joint_count == 0) return;
     if (!ga2d__grow(&w->mem, (void **)&c->joint_order, &c->joint_order_capacity, w->joint_count, sizeof *c->joint_order) ||
-        !ga2d__grow(&w->mem, (void **)&c->joint_keys, &c->joint_key_capacity, w->joint_count, sizeof *c->joint_keys)) {
+        !ga2d__grow(&w->mem, (void **)&c->joint_keys, &c->joint_key_capacity, w->joint_count, sizeof *c->joint_keys) ||
+        !ga2d__grow(&w->mem, (void **)&c->joint_seen, &c->joint_seen_capacity, w->joint_used, sizeof *c->joint_seen)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
+    ga2d__run_split(c, ga2d__see_joints, w->joint_used);
+    seen = c->joint_seen;
     for (k = 0; k < w->joint_used; ++k) {
-        const ga2d__joint *j = &w->joints[k];
-        ga2d__body *a, *b;
         int at;
-        if (j->type < 0) continue;
-        a = &w->bodies[j->body[0]];
-        b = &w->bodies[j->body[1]];
-        if (!((a->type == GA2D_BODY_DYNAMIC && a->awake) || (b->type == GA2D_BODY_DYNAMIC && b->awake))) {
+        if (seen[k].state == GA2D__JOINT_GONE) continue;
+        if (seen[k].state == GA2D__JOINT_ASLEEP) {
             /* asleep on a kinematic body that moves: woken at the step's
                end (ga2d__grant_wakes), carried from the next step on */
+            const ga2d__joint *j = &w->joints[k];
+            ga2d__body *a = &w->bodies[j->body[0]], *b = &w->bodies[j->body[1]];
             ga2d__body *sleeper = a->type == GA2D_BODY_DYNAMIC ? a : b;
             const ga2d__body *carrier = sleeper == a ? b : a;
             if (carrier->type == GA2D_BODY_KINEMATIC && (carrier->sim.v.x != 0 || carrier->sim.v.y != 0 || carrier->sim.w != 0))
                 (void)ga2d__field_wakes(w, sleeper, 1);
             continue;
         }
-        if (j->serial > last) { /* the pool's order is nearly creation order */
+        if (seen[k].serial > last) { /* the pool's order is nearly creation order */
             c->joint_order[n++] = k;
-            last = j->serial;
+            last = seen[k].serial;
             continue;
         }
-        for (at = n; at > 0 && w->joints[c->joint_order[at - 1]].serial > j->serial; --at) c->joint_order[at] = c->joint_order[at - 1];
+        for (at = n; at > 0 && seen[c->joint_order[at - 1]].serial > seen[k].serial; --at) c->joint_order[at] = c->joint_order[at - 1];
         c->joint_order[at] = k;
         ++n;
     }
@@ -12746,6 +12782,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->counts, c->counts_capacity);
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
     GA2D__FREE_ARRAY(a, c->joint_keys, c->joint_key_capacity);
+    GA2D__FREE_ARRAY(a, c->joint_seen, c->joint_seen_capacity);
     GA2D__FREE_ARRAY(a, c->joint_sorted, c->joint_sorted_capacity);
     GA2D__FREE_ARRAY(a, c->joint_perm, c->joint_perm_capacity);
     GA2D__FREE_ARRAY(a, c->jgroups, c->jgroup_capacity);

@@ -1201,6 +1201,35 @@ static void destroy_body_destroys_joints(void)
     ga2d_world_destroy(w);
 }
 
+/* A box asleep on a hinge to a kinematic body is woken when that body
+   starts to move (its joint is not solved while the box sleeps, so
+   nothing else would move it), and is carried from then on.  The carrier
+   sets off at 2 m/s: a second later it has gone 2 m, and the box,
+   hanging 0.5 m below on its hinge, follows it within its swing (the
+   hinge holds the anchors together; the box's centre lies within 0.5 m
+   of the carrier's, so at least 1.5 m along). */
+static void sleeper_woken_by_moving_carrier(void)
+{
+    ga2d_world *w = make_world(0, -G, 1);
+    ga2d_body_def kd = ga2d_default_body_def();
+    ga2d_body_id k, b;
+    int i, woke = -1;
+    kd.type = GA2D_BODY_KINEMATIC;
+    k = ga2d_body_create(w, &kd);
+    b = box_body(w, 0, -0.5, 0, 0.1, 0.25, 1);
+    hinge(w, k, b, 0, 0, 0, 0.5);
+    CHECK(sleep_steps(w, b) > 0);
+    CHECK_RESULT(ga2d_body_set_velocity(w, k, v2(2, 0)), GA2D_OK);
+    for (i = 1; i <= 60; ++i) {
+        step(w);
+        if (woke < 0 && ga2d_body_is_awake(w, b)) woke = i;
+    }
+    /* woken at the end of the first step the carrier moves in */
+    CHECK(woke == 1);
+    CHECK((double)ga2d_body_position(w, b).x > 1.5);
+    ga2d_world_destroy(w);
+}
+
 /* A chain of 6 hanging from a static body is one island: all its links
    fall asleep in the same step; an impulse on the bottom link wakes the
    top one; a box dropped on the bottom link wakes them all. */
@@ -1406,6 +1435,7 @@ void suite_joints(void)
     test_run("joints: setter errors and stale ids", setter_errors);
     test_run("joints: destroying a body destroys its joints", destroy_body_destroys_joints);
     test_run("joints: a chain sleeps and wakes as one island", chain_sleeps_as_one_island);
+    test_run("joints: a box asleep on a hinge to a kinematic body wakes when that moves", sleeper_woken_by_moving_carrier);
     test_run("joints: collide_connected", collide_connected);
     test_run("joints: snapshot round trip mid-swing", snapshot_round_trip);
     test_run("joints: determinism after unrelated churn", determinism_after_churn);
