@@ -5089,6 +5089,8 @@ typedef struct ga2d__step_context {
                                     stages read `error` as their own failures) */
     int *order;                  /* the contacts to solve (pool indices), in canonical order */
     int order_capacity;
+    unsigned char *touch_seen;   /* per touching contact, what ga2d__see_touches found */
+    int touch_seen_capacity;
     ga2d__contact_constraint *constraints; /* theirs, in that order */
     int constraint_count, constraint_capacity;
     int bouncy;                  /* of them, those with restitution: none, and the bounce passes are skipped */
@@ -9281,6 +9283,46 @@ static int ga2d__update_touches(ga2d_world *w)
     return 1;
 }
 
+/* Stage, over the touching contacts (workers on hand, no pre-solve
+   callback): whether each is solved (a side the solver moves), and
+   whether it bounces, for the listing after (ga2d__list_seen). */
+#define GA2D__TOUCH_SOLVED 1
+#define GA2D__TOUCH_BOUNCY 2
+static void ga2d__see_touches(ga2d__step_context *c, int begin, int end)
+{
+    const ga2d_world *w = c->world;
+    int i;
+    for (i = begin; i < end; ++i) {
+        const ga2d__contact *ct = &w->contacts[w->touches[i].contact];
+        if (i + GA2D__PREFETCH_AHEAD < end) GA2D__PREFETCH_READ(&w->contacts[w->touches[i + GA2D__PREFETCH_AHEAD].contact].a);
+        c->touch_seen[i] = (unsigned char)(ga2d__solver_moves(&w->bodies[ct->a]) || ga2d__solver_moves(&w->bodies[ct->b])
+                                               ? GA2D__TOUCH_SOLVED | (ct->restitution != 0 ? GA2D__TOUCH_BOUNCY : 0)
+                                               : 0);
+    }
+}
+
+/* The listing from what ga2d__see_touches found, on the calling thread,
+   and the constraints prepared on the workers: the same order and counts
+   as the listing below, which reads every contact and its bodies here.
+   0: out of memory (nothing listed). */
+static int ga2d__list_seen(ga2d__step_context *c)
+{
+    ga2d_world *w = c->world;
+    int i, listed = 0, bouncy = 0;
+    if (!ga2d__grow(&w->mem, (void **)&c->touch_seen, &c->touch_seen_capacity, w->touch_count, sizeof *c->touch_seen))
+        return 0;
+    ga2d__run_split(c, ga2d__see_touches, w->touch_count);
+    for (i = 0; i < w->touch_count; ++i) {
+        if (!(c->touch_seen[i] & GA2D__TOUCH_SOLVED)) continue;
+        c->order[listed++] = w->touches[i].contact;
+        bouncy += (c->touch_seen[i] & GA2D__TOUCH_BOUNCY) != 0;
+    }
+    c->constraint_count = listed;
+    c->bouncy = bouncy;
+    ga2d__prepare_listed(c, 0, 1);
+    return 1;
+}
+
 static void ga2d__order_constraints(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
@@ -9293,6 +9335,10 @@ static void ga2d__order_constraints(ga2d__step_context *c)
     if (!ga2d__grow(&w->mem, (void **)&c->order, &c->order_capacity, w->contact_count, sizeof *c->order) ||
         !ga2d__update_touches(w)) {
         c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return;
+    }
+    if (split && !w->def.pre_solve) {
+        if (!ga2d__list_seen(c)) c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
     order = c->order;
@@ -12766,6 +12812,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
 {
     GA2D__FREE_ARRAY(a, c->rk4, c->rk4_capacity);
     GA2D__FREE_ARRAY(a, c->order, c->order_capacity);
+    GA2D__FREE_ARRAY(a, c->touch_seen, c->touch_seen_capacity);
     GA2D__FREE_ARRAY(a, c->constraints, c->constraint_capacity);
     GA2D__FREE_ARRAY(a, c->groups, c->group_capacity);
     GA2D__FREE_ARRAY(a, c->fill, c->fill_capacity);
