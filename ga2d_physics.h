@@ -2860,7 +2860,7 @@ static void ga2d__tree_refit(ga2d__tree *t, int i)
    rebuild their paths each time: instead each new leaf box marks its
    ancestors up to the root (ga2d__tree_mark), one pass then refits the
    marked boxes from below (ga2d__tree_tighten; when many moved, every
-   box: ga2d__tree_tighten_all), and only the leaves that
+   box), and only the leaves that
    left their parent's box go back in by the heuristic.  Until the
    tightening a marked box may not hold its children: nothing reads the
    tree in between.  A marked inner node's body, -1 otherwise, is
@@ -2892,44 +2892,25 @@ static int ga2d__tree_strayed(const ga2d__tree *t, int leaf)
     return 0;
 }
 
-/* The marked boxes, each the union of its children's again, from below;
-   the marks cleared.  The stack holds at most the height + 1 (see
-   ga2d__tree_query), each node twice (once down, once up: a tagged
-   index). */
-/* Every inner box refitted from below, in one walk over the tree: when
-   many leaves moved, cheaper than marking their paths (a walk up from
+/* The marked boxes (`all`: every inner box), each the union of its
+   children's again, from below; the marks cleared.  The stack holds at
+   most the height + 1 (see ga2d__tree_query), each node twice (once
+   down, once up: a tagged index).  When many leaves moved, one walk over
+   every inner box is cheaper than marking their paths (a walk up from
    each leaf, node after dependent node, to the first marked one: half of
-   the book-keeping's time in a swinging 100 x 100 grid).  An inner box
-   not on a moved leaf's path already holds its children exactly (every
-   change refits its ancestors), so it gets the bits ga2d__tree_tighten
-   would leave it. */
-static void ga2d__tree_tighten_all(ga2d__tree *t)
+   the book-keeping's time in a swinging 100 x 100 grid); a box off every
+   moved leaf's path already holds its children exactly (every change
+   refits its ancestors), so it gets the bits it has. */
+static int ga2d__tree_descends(const ga2d__node *n, int i, int all)
 {
-    ga2d__node *n = t->nodes;
-    int stack[512], top = 0;
-    t->marked = 0;
-    if (t->root < 0 || n[t->root].height == 0) return;
-    stack[top++] = t->root;
-    while (top > 0) {
-        int i = stack[--top];
-        if (i < 0) { /* back up: its children are tight */
-            i = ~i;
-            n[i].box = ga2d_aabb_union(n[n[i].child1].box, n[n[i].child2].box);
-            continue;
-        }
-        GA2D_ASSERT(top + 3 <= 512);
-        stack[top++] = ~i;
-        if (n[n[i].child1].height > 0) stack[top++] = n[i].child1;
-        if (n[n[i].child2].height > 0) stack[top++] = n[i].child2;
-    }
+    return n[i].height > 0 && (all || n[i].body == GA2D__MARKED);
 }
-
-static void ga2d__tree_tighten(ga2d__tree *t)
+static void ga2d__tree_tighten(ga2d__tree *t, int all)
 {
     ga2d__node *n = t->nodes;
     int stack[512], top = 0;
     t->marked = 0;
-    if (t->root < 0 || n[t->root].body != GA2D__MARKED) return;
+    if (t->root < 0 || !ga2d__tree_descends(n, t->root, all)) return;
     stack[top++] = t->root;
     while (top > 0) {
         int i = stack[--top];
@@ -2941,8 +2922,8 @@ static void ga2d__tree_tighten(ga2d__tree *t)
         }
         GA2D_ASSERT(top + 3 <= 512);
         stack[top++] = ~i;
-        if (n[n[i].child1].body == GA2D__MARKED) stack[top++] = n[i].child1;
-        if (n[n[i].child2].body == GA2D__MARKED) stack[top++] = n[i].child2;
+        if (ga2d__tree_descends(n, n[i].child1, all)) stack[top++] = n[i].child1;
+        if (ga2d__tree_descends(n, n[i].child2, all)) stack[top++] = n[i].child2;
     }
 }
 
@@ -8463,10 +8444,10 @@ static void ga2d__refit_proxies(ga2d__step_context *c)
             continue;
         }
         if (t->moved * GA2D__TIGHTEN_ALL > t->leaves) {
-            ga2d__tree_tighten_all(t);
+            ga2d__tree_tighten(t, 1);
         } else if (t->moved > 0) {
             for (i = 0; i < t->moved; ++i) ga2d__tree_mark(t, t->units[i]);
-            ga2d__tree_tighten(t);
+            ga2d__tree_tighten(t, 0);
         }
         c->stray_tree = t;
         ga2d__run_split(c, ga2d__flag_strays, t->moved);
