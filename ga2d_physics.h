@@ -5096,6 +5096,8 @@ typedef struct ga2d__step_context {
     int lane_key_capacity;
     int lane_key_count;          /* how many (constraints, then joints); -1: no colouring is kept */
     int kept_groups, kept_colours, kept_joints; /* its groups, colours and joints */
+    int *still_slots;            /* the bodies its constraints do not move (once each, mostly) */
+    int still_count, still_capacity;
     ga2d__rk4 *rk4;              /* RK4's scratch, one per moving body's capacity */
     int rk4_capacity;
     uint64_t *changed;           /* a bit per pool contact the narrowphase flagged */
@@ -10339,13 +10341,30 @@ static int ga2d__lanes_done(ga2d__step_context *c, int extras, int round)
    of them it moves (1: A, 2: B) and, for a joint, whether it is a bare
    hinge (4).  The colouring is a function of these alone, in order: the
    joints' in creation order, then the constraints' in theirs. */
-struct ga2d__lane_key { int a, b, moves; };
+struct ga2d__lane_key { int a, b, moves, lane; }; /* lane: a constraint's in the kept colouring */
 
 static void ga2d__joint_key(const ga2d__joint *j, ga2d__lane_key *k)
 {
     k->a = j->body[0];
     k->b = j->body[1];
     k->moves = (j->ima != 0 || j->iia != 0) | (j->imb != 0 || j->iib != 0) << 1 | ga2d__bare_hinge(j) << 2;
+    k->lane = -1;
+}
+
+/* A body the kept colouring's constraints do not move, listed for its
+   solver body to be written each step the colouring is kept (a pile's
+   ground comes in runs: the last one listed is not listed again).  0: out
+   of memory, reported. */
+static int ga2d__keep_still(ga2d__step_context *c, int slot)
+{
+    ga2d_world *w = c->world;
+    if (c->still_count > 0 && c->still_slots[c->still_count - 1] == slot) return 1;
+    if (!ga2d__grow(&w->mem, (void **)&c->still_slots, &c->still_capacity, c->still_count + 1, sizeof *c->still_slots)) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    c->still_slots[c->still_count++] = slot;
+    return 1;
 }
 
 /* Remembers the colouring just made, with the constraints it read, for
@@ -10360,11 +10379,15 @@ static void ga2d__keep_lanes(ga2d__step_context *c)
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
+    c->still_count = 0;
     for (i = 0; i < n; ++i) {
         const ga2d__contact_constraint *cc = &c->constraints[i];
         c->lane_keys[i].a = cc->a;
         c->lane_keys[i].b = cc->b;
         c->lane_keys[i].moves = cc->moves;
+        c->lane_keys[i].lane = cc->lane;
+        if (!ga2d__moves_a(cc) && !ga2d__keep_still(c, cc->a)) return;
+        if (!ga2d__moves_b(cc) && !ga2d__keep_still(c, cc->b)) return;
     }
     /* the joints in creation order: where ga2d__sort_joints left it */
     for (i = 0; i < c->joint_active; ++i) ga2d__joint_key(&w->joints[c->joint_sorted[i]], &c->lane_keys[n + i]);
@@ -10391,41 +10414,67 @@ static void ga2d__joints_kept(ga2d__step_context *c)
     }
 }
 
+/* Stage, over the constraints, while a colouring is kept: whether each
+   reads as the kept colouring read it, and if so its lane there; each
+   range's verdict in its first block's tally: the round count (times
+   GA2D__KEPT_ROUND), whether some constraint needs extras, and whether
+   some differs. */
+#define GA2D__KEPT_EXTRAS 1
+#define GA2D__KEPT_DIFFERS 2
+#define GA2D__KEPT_ROUND 4
+static void ga2d__check_kept(ga2d__step_context *c, int begin, int end)
+{
+    int i, verdict = 0;
+    for (i = begin; i < end; ++i) {
+        ga2d__contact_constraint *cc = &c->constraints[i];
+        const ga2d__lane_key *k = &c->lane_keys[i];
+        if (k->a != cc->a || k->b != cc->b || k->moves != cc->moves) {
+            verdict |= GA2D__KEPT_DIFFERS;
+            break;
+        }
+        cc->lane = k->lane;
+        verdict |= cc->needs_extras ? GA2D__KEPT_EXTRAS : 0;
+        verdict += cc->round_a != 0 || cc->round_b != 0 ? GA2D__KEPT_ROUND : 0;
+    }
+    c->tally[begin / GA2D__SPLIT_BLOCK] = verdict; /* a range's own slot (ranges start on blocks) */
+}
+
 /* The last step's colouring, kept when this step's joints and
    constraints are the same bodies, moved the same way, in the same order
    (and the same joints bare hinges or not): the colouring would come out
    the same, so the groups' fills, lanes, the colour starts and the
    joints' places in them are still right, and only what the step keeps
    per constraint and joint is written again (each joint's place in the
-   order, each constraint's lane, the still bodies' solver bodies, the
-   extras and the round count).  A resting pile or a hanging net keeps
-   its colouring step after step; 0 when not kept. */
+   order, each constraint's lane, on the workers: ga2d__check_kept; the
+   still bodies' solver bodies, the extras and the round count).  A
+   resting pile or a hanging net keeps its colouring step after step; 0
+   when not kept. */
 static int ga2d__lanes_kept(ga2d__step_context *c)
 {
-    int i, gi, l, extras = 0, round = 0, n = c->constraint_count;
+    ga2d_world *w = c->world;
+    int i, extras = 0, round = 0, n = c->constraint_count, blocks = (n + GA2D__SPLIT_BLOCK - 1) / GA2D__SPLIT_BLOCK;
     if (c->joint_active != c->kept_joints || c->lane_key_count != n + c->joint_active) return 0;
-    if (!ga2d__reserve_sbodies(c)) { /* as the colouring anew would report it */
+    if (!ga2d__reserve_sbodies(c) || /* as the colouring anew would report it */
+        !ga2d__grow(&w->mem, (void **)&c->tally, &c->tally_capacity, blocks, sizeof *c->tally)) {
         (void)ga2d__solve_nothing(c);
         return 1;
-    }
-    /* each constraint's key, and what it keeps (in the same pass over
-       them: a colouring found anew does all of ga2d__lane_seen again) */
-    for (i = 0; i < n; ++i) {
-        const ga2d__contact_constraint *cc = &c->constraints[i];
-        const ga2d__lane_key *k = &c->lane_keys[i];
-        if (k->a != cc->a || k->b != cc->b || k->moves != cc->moves) return 0;
-        ga2d__lane_seen(c, cc, &extras, &round);
     }
     for (i = 0; i < c->joint_active; ++i) {
         const ga2d__lane_key *k = &c->lane_keys[n + i], *now = &c->joint_keys[i];
         if (k->a != now->a || k->b != now->b || k->moves != now->moves) return 0;
     }
+    if (blocks > 0) memset(c->tally, 0, (size_t)blocks * sizeof *c->tally);
+    ga2d__run_split(c, ga2d__check_kept, n);
+    for (i = 0; i < blocks; ++i) {
+        if (c->tally[i] & GA2D__KEPT_DIFFERS) return 0;
+        extras |= c->tally[i] & GA2D__KEPT_EXTRAS;
+        round += c->tally[i] / GA2D__KEPT_ROUND;
+    }
     ga2d__joints_kept(c);
+    for (i = 0; i < c->still_count; ++i) ga2d__still_body(c, c->still_slots[i]);
     c->group_count = c->kept_groups;
     c->colour_count = c->kept_colours;
-    c->world->counters.colouring_kept = 1;
-    for (gi = 0; gi < c->group_count; ++gi)
-        for (l = 0; l < c->fill[gi].count; ++l) c->constraints[c->lane_constraints[gi * GA2D__LANES + l]].lane = gi * GA2D__LANES + l;
+    w->counters.colouring_kept = 1;
     (void)ga2d__lanes_done(c, extras, round);
     return 1;
 }
@@ -12775,6 +12824,7 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->colour_masks, &c->colour_mask_capacity, sizeof *c->colour_masks);
     ga2d__release(w, (void **)&c->lane_constraints, &c->lane_constraint_capacity, sizeof *c->lane_constraints);
     ga2d__release(w, (void **)&c->lane_keys, &c->lane_key_capacity, sizeof *c->lane_keys);
+    ga2d__release(w, (void **)&c->still_slots, &c->still_capacity, sizeof *c->still_slots);
     c->lane_key_count = -1; /* its groups are gone */
     ga2d__release(w, (void **)&c->joint_sorted, &c->joint_sorted_capacity, sizeof *c->joint_sorted);
     ga2d__release(w, (void **)&c->joint_perm, &c->joint_perm_capacity, sizeof *c->joint_perm);
@@ -12804,6 +12854,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->colour_masks, c->colour_mask_capacity);
     GA2D__FREE_ARRAY(a, c->lane_constraints, c->lane_constraint_capacity);
     GA2D__FREE_ARRAY(a, c->lane_keys, c->lane_key_capacity);
+    GA2D__FREE_ARRAY(a, c->still_slots, c->still_capacity);
     GA2D__FREE_ARRAY(a, c->changed, c->changed_capacity);
     GA2D__FREE_ARRAY(a, c->refits, c->refit_capacity);
     GA2D__FREE_ARRAY(a, c->tally, c->tally_capacity);
