@@ -9216,6 +9216,47 @@ static int ga2d__cmp_touch(const void *x, const void *y)
     return ga2d__touch_before(p, q) ? -1 : (ga2d__touch_before(q, p) ? 1 : 0);
 }
 
+/* Stage, over the touching contacts (workers on hand, no pre-solve
+   callback), before they are brought up to date: whether each still
+   touches (ga2d__touch_holds), whether it is solved (a side the solver
+   moves) and whether it bounces, for the update and the listing after
+   (ga2d__update_touches). */
+#define GA2D__TOUCH_SOLVED 1
+#define GA2D__TOUCH_BOUNCY 2
+#define GA2D__TOUCH_HOLDS 4
+static unsigned char ga2d__touch_flags(const ga2d_world *w, const ga2d__contact *ct)
+{
+    if (!ga2d__solver_moves(&w->bodies[ct->a]) && !ga2d__solver_moves(&w->bodies[ct->b])) return 0;
+    return (unsigned char)(GA2D__TOUCH_SOLVED | (ct->restitution != 0 ? GA2D__TOUCH_BOUNCY : 0));
+}
+static void ga2d__see_touches(ga2d__step_context *c, int begin, int end)
+{
+    const ga2d_world *w = c->world;
+    int i;
+    for (i = begin; i < end; ++i) {
+        const ga2d__touch *t = &w->touches[i];
+        if (i + GA2D__PREFETCH_AHEAD < end) GA2D__PREFETCH_READ(&w->contacts[t[GA2D__PREFETCH_AHEAD].contact].serial);
+        c->touch_seen[i] = ga2d__touch_holds(w, t)
+                               ? (unsigned char)(GA2D__TOUCH_HOLDS | ga2d__touch_flags(w, &w->contacts[t->contact]))
+                               : 0;
+    }
+}
+
+/* Touch t into its place in the next list, and (listing) into the order
+   when it is solved. */
+static void ga2d__touch_put(ga2d_world *w, ga2d__step_context *list, const ga2d__touch *t, int flags, int *n)
+{
+    w->touches_next[(*n)++] = *t;
+    if (!list || !(flags & GA2D__TOUCH_SOLVED)) return;
+    list->order[list->constraint_count++] = t->contact;
+    list->bouncy += (flags & GA2D__TOUCH_BOUNCY) != 0;
+}
+/* A touch that began since the last listing, so: its contact read here. */
+static void ga2d__touch_put_new(ga2d_world *w, ga2d__step_context *list, const ga2d__touch *t, int *n)
+{
+    ga2d__touch_put(w, list, t, list ? ga2d__touch_flags(w, &w->contacts[t->contact]) : 0, n);
+}
+
 /* Book-keeping: the world's touching contacts in canonical order (by A's
    slot, then oldest first: each body's list holds its contacts so, and
    the A sides of the lists in slot order were walked for it each step).
@@ -9224,19 +9265,31 @@ static int ga2d__cmp_touch(const void *x, const void *y)
    reads only the touching ones, not every pair's record from both ends
    (the spinner's walk read 5.5 pairs per touching one, a cache miss
    each).  Walked anew when not known (a new or loaded world, compacted
-   contacts, memory that ran out).  0: out of memory. */
-static int ga2d__update_touches(ga2d_world *w)
+   contacts, memory that ran out).  0: out of memory.
+   `list` (workers on hand, no pre-solve callback): what is kept is found
+   on the workers first (ga2d__see_touches), and the merge lists the
+   solved ones into list's order as it goes, reading no contact but the
+   new ones: the order the listing in ga2d__order_constraints makes. */
+static int ga2d__update_touches(ga2d_world *w, ga2d__step_context *list)
 {
+    const unsigned char *seen = NULL;
     int i, j = 0, k, n = 0, fresh = 0;
     ga2d__touch *out;
     if (!w->touches_known) {
         w->touches_known = ga2d__walk_touches(w);
-        return w->touches_known;
+        if (!w->touches_known || !list) return w->touches_known;
     }
     if (!ga2d__grow(&w->mem, (void **)&w->touches_next, &w->touch_next_capacity, w->touch_count + w->began_count,
                     sizeof *w->touches_next)) {
         w->touches_known = 0;
         return 0;
+    }
+    if (list) {
+        if (!ga2d__grow(&w->mem, (void **)&list->touch_seen, &list->touch_seen_capacity, w->touch_count,
+                        sizeof *list->touch_seen))
+            return 0;
+        ga2d__run_split(list, ga2d__see_touches, w->touch_count);
+        seen = list->touch_seen;
     }
     /* the new ones, still touching, sorted at the end of the next list's room */
     out = w->touches_next;
@@ -9254,55 +9307,21 @@ static int ga2d__update_touches(ga2d_world *w)
        listed already: it did not touch at the last listing) */
     for (i = 0; i < w->touch_count; ++i) {
         const ga2d__touch *t = &w->touches[i];
-        if (i + GA2D__PREFETCH_AHEAD < w->touch_count) GA2D__PREFETCH_READ(&w->contacts[t[GA2D__PREFETCH_AHEAD].contact].serial);
-        if (!ga2d__touch_holds(w, t)) continue;
-        while (j < fresh && ga2d__touch_before(&out[w->touch_count + j], t)) out[n++] = out[w->touch_count + j++];
-        out[n++] = *t;
+        int flags;
+        if (seen) {
+            flags = seen[i];
+        } else {
+            if (i + GA2D__PREFETCH_AHEAD < w->touch_count) GA2D__PREFETCH_READ(&w->contacts[t[GA2D__PREFETCH_AHEAD].contact].serial);
+            flags = ga2d__touch_holds(w, t) ? GA2D__TOUCH_HOLDS : 0;
+        }
+        if (!(flags & GA2D__TOUCH_HOLDS)) continue;
+        for (; j < fresh && ga2d__touch_before(&out[w->touch_count + j], t); ++j) ga2d__touch_put_new(w, list, &out[w->touch_count + j], &n);
+        ga2d__touch_put(w, list, t, flags, &n);
     }
-    while (j < fresh) out[n++] = out[w->touch_count + j++];
+    for (; j < fresh; ++j) ga2d__touch_put_new(w, list, &out[w->touch_count + j], &n);
     ga2d__swap_arrays((void **)&w->touches, &w->touch_capacity, (void **)&w->touches_next, &w->touch_next_capacity);
     w->touch_count = n;
     w->began_count = 0;
-    return 1;
-}
-
-/* Stage, over the touching contacts (workers on hand, no pre-solve
-   callback): whether each is solved (a side the solver moves), and
-   whether it bounces, for the listing after (ga2d__list_seen). */
-#define GA2D__TOUCH_SOLVED 1
-#define GA2D__TOUCH_BOUNCY 2
-static void ga2d__see_touches(ga2d__step_context *c, int begin, int end)
-{
-    const ga2d_world *w = c->world;
-    int i;
-    for (i = begin; i < end; ++i) {
-        const ga2d__contact *ct = &w->contacts[w->touches[i].contact];
-        if (i + GA2D__PREFETCH_AHEAD < end) GA2D__PREFETCH_READ(&w->contacts[w->touches[i + GA2D__PREFETCH_AHEAD].contact].a);
-        c->touch_seen[i] = (unsigned char)(ga2d__solver_moves(&w->bodies[ct->a]) || ga2d__solver_moves(&w->bodies[ct->b])
-                                               ? GA2D__TOUCH_SOLVED | (ct->restitution != 0 ? GA2D__TOUCH_BOUNCY : 0)
-                                               : 0);
-    }
-}
-
-/* The listing from what ga2d__see_touches found, on the calling thread,
-   and the constraints prepared on the workers: the same order and counts
-   as the listing below, which reads every contact and its bodies here.
-   0: out of memory (nothing listed). */
-static int ga2d__list_seen(ga2d__step_context *c)
-{
-    ga2d_world *w = c->world;
-    int i, listed = 0, bouncy = 0;
-    if (!ga2d__grow(&w->mem, (void **)&c->touch_seen, &c->touch_seen_capacity, w->touch_count, sizeof *c->touch_seen))
-        return 0;
-    ga2d__run_split(c, ga2d__see_touches, w->touch_count);
-    for (i = 0; i < w->touch_count; ++i) {
-        if (!(c->touch_seen[i] & GA2D__TOUCH_SOLVED)) continue;
-        c->order[listed++] = w->touches[i].contact;
-        bouncy += (c->touch_seen[i] & GA2D__TOUCH_BOUNCY) != 0;
-    }
-    c->constraint_count = listed;
-    c->bouncy = bouncy;
-    ga2d__prepare_listed(c, 0, 1);
     return 1;
 }
 
@@ -9316,12 +9335,13 @@ static void ga2d__order_constraints(ga2d__step_context *c)
        the order is kept apart from the constraints, so that listing it
        does not pass over their memory once more */
     if (!ga2d__grow(&w->mem, (void **)&c->order, &c->order_capacity, w->contact_count, sizeof *c->order) ||
-        !ga2d__update_touches(w)) {
+        !ga2d__update_touches(w, split && !w->def.pre_solve ? c : NULL)) {
+        c->constraint_count = 0;
         c->error = GA2D_ERR_OUT_OF_MEMORY;
         return;
     }
-    if (split && !w->def.pre_solve) {
-        if (!ga2d__list_seen(c)) c->error = GA2D_ERR_OUT_OF_MEMORY;
+    if (split && !w->def.pre_solve) { /* listed as the touches were brought up to date */
+        ga2d__prepare_listed(c, 0, 1);
         return;
     }
     order = c->order;
