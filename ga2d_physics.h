@@ -5103,6 +5103,8 @@ typedef struct ga2d__step_context {
     uint64_t *changed;           /* a bit per pool contact the narrowphase flagged */
     int changed_capacity;        /* in 64-bit words */
     uint64_t *refits;            /* a bit per moving body whose tree leaf holds a new box */
+    uint64_t *fast;              /* a bit per moving body ga2d__continuous sweeps */
+    int fast_capacity;           /* in 64-bit words */
     ga2d__tree *stray_tree;      /* the tree ga2d__flag_strays looks through */
     int refit_capacity;          /* in 64-bit words */
     ga2d__counts *counts;        /* a body stage's counts per block (ga2d__run_counted) */
@@ -10212,6 +10214,17 @@ static int ga2d__highest_bit(uint32_t set)
     return k;
 #endif
 }
+/* The lowest set bit of a nonzero 64-bit word. */
+static int ga2d__lowest_bit64(uint64_t set)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctzll(set);
+#else
+    int k = 0;
+    while (!(set >> k & 1u)) ++k;
+    return k;
+#endif
+}
 
 /* A constraint's colour, given the colours its moved bodies have taken
    (not all of them): the lowest past all of theirs, so that each body's
@@ -12809,12 +12822,13 @@ static int ga2d__reserve_rk4(ga2d_world *w, int n)
     return ga2d__grow(&w->mem, (void **)&w->step.rk4, &w->step.rk4_capacity, n, sizeof *w->step.rk4);
 }
 
-/* A refit bit and a kbody for each of n moving bodies: kept at the
+/* A refit bit, a fast bit and a kbody for each of n moving bodies: kept at the
    moving list's capacity, so that a step never allocates them. */
 static int ga2d__reserve_moving(ga2d_world *w, int n)
 {
     ga2d__step_context *c = &w->step;
     return ga2d__grow(&w->mem, (void **)&c->refits, &c->refit_capacity, (n + 63) / 64, sizeof *c->refits) &&
+           ga2d__grow(&w->mem, (void **)&c->fast, &c->fast_capacity, (n + 63) / 64, sizeof *c->fast) &&
            ga2d__grow(&w->mem, (void **)&c->kbodies, &c->kbody_capacity, n, sizeof *c->kbodies);
 }
 
@@ -12877,6 +12891,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->still_slots, c->still_capacity);
     GA2D__FREE_ARRAY(a, c->changed, c->changed_capacity);
     GA2D__FREE_ARRAY(a, c->refits, c->refit_capacity);
+    GA2D__FREE_ARRAY(a, c->fast, c->fast_capacity);
     GA2D__FREE_ARRAY(a, c->tally, c->tally_capacity);
     GA2D__FREE_ARRAY(a, c->counts, c->counts_capacity);
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
@@ -13093,9 +13108,11 @@ static int ga2d__unfinite_velocity(const ga2d__step_context *c, int k)
 }
 
 /* Runs a counting stage over the n moving bodies, on the workers when it
-   is long enough (and memory allows; out of memory is reported), then contains the bodies it left
-   with a velocity not finite; returns how many it contained. */
-static int ga2d__run_counted(ga2d__step_context *c, ga2d__range_fn *fn, int n)
+   is long enough (and memory allows; out of memory is reported), then
+   contains the bodies it left not finite (as `unfinite` tells them);
+   returns how many it contained. */
+typedef int ga2d__unfinite_fn(const ga2d__step_context *c, int k);
+static int ga2d__run_checked(ga2d__step_context *c, ga2d__range_fn *fn, int n, ga2d__unfinite_fn *unfinite)
 {
     ga2d_world *w = c->world;
     int blocks = (n + GA2D__SPLIT_BLOCK - 1) / GA2D__SPLIT_BLOCK, k, contained;
@@ -13116,12 +13133,17 @@ static int ga2d__run_counted(ga2d__step_context *c, ga2d__range_fn *fn, int n)
     }
     contained = c->unfinite;
     for (k = 0; k < n && c->unfinite > 0; ++k) {
-        if (!ga2d__unfinite_velocity(c, k)) continue;
+        if (!unfinite(c, k)) continue;
         ga2d__contain(w, w->moving[k]);
         if (c->compact) ga2d__kload(c, k); /* as contained */
         --c->unfinite;
     }
     return contained;
+}
+/* The stages that leave a body with a velocity not finite. */
+static int ga2d__run_counted(ga2d__step_context *c, ga2d__range_fn *fn, int n)
+{
+    return ga2d__run_checked(c, fn, n, ga2d__unfinite_velocity);
 }
 
 /* Stage, over the moving bodies: caches the field's acceleration (Verlet). */
@@ -13910,61 +13932,83 @@ static int ga2d__ccd_leaf(void *ctx, int k)
     return 1;
 }
 
-/* After the substeps: each fast awake dynamic body is swept from where
-   the step began to where it ended against static shapes (and, if a
-   bullet, moving ones), and stopped at its earliest impact: put at the
+/* Fast body `slot` swept (ga2d__continuous). */
+static void ga2d__sweep_fast(ga2d__step_context *c, int slot)
+{
+    ga2d_world *w = c->world;
+    int nodes = 0;
+    ga2d__body *b = &w->bodies[slot];
+    ga2d__ccd q;
+    ga2d_aabb box;
+    ++w->counters.continuous_bodies;
+    q.w = w;
+    q.slot = slot;
+    q.sweep = ga2d__body_sweep(b);
+    q.fraction = 1;
+    /* all the body can cover: its centres' box grown by its reach */
+    box.lower = box.upper = q.sweep.c1;
+    {
+        ga2d_aabb end;
+        end.lower = end.upper = q.sweep.c2;
+        box = ga2d__fatten(ga2d_aabb_union(box, end), b->extent + w->slop);
+    }
+    ga2d__tree_overlap(&w->trees[0], box, ga2d__ccd_leaf, &q, &nodes);
+    if (b->is_bullet) ga2d__tree_overlap(&w->trees[1], box, ga2d__ccd_leaf, &q, &nodes);
+    if (q.fraction < 1) {
+        ga2d_transform x = ga2d_sweep_transform(&q.sweep, q.fraction);
+        ++w->counters.continuous_hits;
+        b->sim.q = x.q;
+        b->sim.center = ga2d_vec_add(q.sweep.c1, ga2d_vec_scale(ga2d_vec_sub(q.sweep.c2, q.sweep.c1), q.fraction));
+        b->sim.dp = ga2d_vec_sub(b->sim.center, b->sim.center0);
+    }
+}
+
+/* After the substeps: each fast awake dynamic body (its bit in c->fast:
+   ga2d__finish_bodies) is swept from where the step began to where it
+   ended against static shapes (and, if a bullet, moving ones), in the
+   moving list's order, and stopped at its earliest impact: put at the
    sweep's pose there, its velocity kept.  The rest of its step's motion
    is lost (1 - t of the step), as in Box2D; the next step's contacts
    take it from there.  Bodies that are not fast cost the motion test. */
 static void ga2d__continuous(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    int k;
+    int word;
     w->counters.continuous_bodies = w->counters.continuous_hits = 0;
-    for (k = 0; k < w->moving_count; ++k) {
-        int slot = w->moving[k], nodes = 0;
-        ga2d__body *b = &w->bodies[slot];
-        ga2d__ccd q;
-        ga2d_aabb box;
-        if (b->type != GA2D_BODY_DYNAMIC || !b->awake || b->shape_head < 0 || !ga2d__is_fast(b)) continue;
-        ++w->counters.continuous_bodies;
-        q.w = w;
-        q.slot = slot;
-        q.sweep = ga2d__body_sweep(b);
-        q.fraction = 1;
-        /* all the body can cover: its centres' box grown by its reach */
-        box.lower = box.upper = q.sweep.c1;
-        {
-            ga2d_aabb end;
-            end.lower = end.upper = q.sweep.c2;
-            box = ga2d__fatten(ga2d_aabb_union(box, end), b->extent + w->slop);
-        }
-        ga2d__tree_overlap(&w->trees[0], box, ga2d__ccd_leaf, &q, &nodes);
-        if (b->is_bullet) ga2d__tree_overlap(&w->trees[1], box, ga2d__ccd_leaf, &q, &nodes);
-        if (q.fraction < 1) {
-            ga2d_transform x = ga2d_sweep_transform(&q.sweep, q.fraction);
-            ++w->counters.continuous_hits;
-            b->sim.q = x.q;
-            b->sim.center = ga2d_vec_add(q.sweep.c1, ga2d_vec_scale(ga2d_vec_sub(q.sweep.c2, q.sweep.c1), q.fraction));
-            b->sim.dp = ga2d_vec_sub(b->sim.center, b->sim.center0);
-        }
+    for (word = 0; word < (w->moving_count + 63) / 64; ++word) {
+        uint64_t bits = c->fast[word];
+        for (; bits != 0; bits &= bits - 1)
+            ga2d__sweep_fast(c, w->moving[word * 64 + ga2d__lowest_bit64(bits)]);
     }
 }
 
-/* Stage, over the moving bodies: a body a contained neighbour's NaN
-   reached (positions too: RK4's own stages, huge coordinates; and
-   velocities: 0 x NaN from a contact reaches kinematic bodies) is
-   contained; the user's forces are spent. */
+/* Stage, over the moving bodies (counted: ga2d__run_checked): the user's
+   forces are spent; a body a contained neighbour's NaN reached
+   (positions too: RK4's own stages, huge coordinates; and velocities: 0
+   x NaN from a contact reaches kinematic bodies) is left to be contained
+   after (ga2d__unfinite_state: it is put back where it began, so it is
+   not fast); and, continuous collision on, each awake dynamic body with
+   shapes that is fast (ga2d__is_fast) gets its bit in c->fast, for
+   ga2d__continuous to sweep. */
 static void ga2d__finish_bodies(ga2d__step_context *c, int begin, int end)
 {
     ga2d_world *w = c->world;
-    int k;
+    ga2d__counts n;
+    int k, ccd = w->def.enable_continuous;
+    memset(&n, 0, sizeof n);
     for (k = begin; k < end; ++k) {
         ga2d__body *b = &w->bodies[w->moving[k]];
-        if (!ga2d__state_finite(&b->sim)) ga2d__contain(w, w->moving[k]);
         b->sim.force = ga2d_vec_make(0, 0);
         b->sim.torque = 0;
+        if (!ga2d__state_finite(&b->sim)) ++n.unfinite;
+        else if (ccd && b->type == GA2D_BODY_DYNAMIC && b->awake && b->shape_head >= 0 && ga2d__is_fast(b))
+            c->fast[k >> 6] |= (uint64_t)1 << (k & 63);
     }
+    ga2d__counts_put(c, begin, &n);
+}
+static int ga2d__unfinite_state(const ga2d__step_context *c, int k)
+{
+    return !ga2d__state_finite(&c->world->bodies[c->world->moving[k]].sim);
 }
 
 /* This step's sensor events: none begun; the ends from destruction since
@@ -14112,7 +14156,8 @@ static void ga2d__step(ga2d_world *w, ga2d_real dt, ga2d_real h)
     ga2d__run_split(c, ga2d__store_hinges, c->jgroup_count);
     c->group_count = c->colour_count = c->jgroup_count = 0;
     if (w->hit_shapes > 0) ga2d__hit_events(c);
-    ga2d__run(c, ga2d__finish_bodies, w->moving_count);
+    ga2d__bits_zero(c->fast, w->moving_count);
+    (void)ga2d__run_checked(c, ga2d__finish_bodies, w->moving_count, ga2d__unfinite_state);
     if (w->def.enable_continuous) ga2d__continuous(c);
     else w->counters.continuous_bodies = w->counters.continuous_hits = 0;
     /* boxes for the queries between steps, and their pairs */
