@@ -5953,6 +5953,16 @@ static void ga2d__pair_found(void *ctx, int other)
 }
 
 static int ga2d__cmp_int(const void *x, const void *y) { int a = *(const int *)x, b = *(const int *)y; return (a > b) - (a < b); }
+/* Whether the n ints at v are in ascending order already (the queue of
+   moved shapes mostly is: the moving list in creation order; qsort took
+   0.1 ms over a swinging grid's 10 000 when they were). */
+static int ga2d__ascending(const int *v, int n)
+{
+    int i;
+    for (i = 1; i < n; ++i)
+        if (v[i - 1] > v[i]) return 0;
+    return 1;
+}
 static int ga2d__cmp_u64(const void *x, const void *y)
 {
     uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
@@ -8459,7 +8469,7 @@ static void ga2d__refit_proxies(ga2d__step_context *c)
             if (t->units[i] < 0) ga2d__tree_move(t, ~t->units[i], t->nodes[~t->units[i]].box);
         t->moved = 0;
     }
-    if (w->move_count > 1) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
+    if (!ga2d__ascending(w->move_buf, w->move_count)) qsort(w->move_buf, (size_t)w->move_count, sizeof *w->move_buf, ga2d__cmp_int);
     for (k = 0, n = 0; k < w->move_count; ++k) {
         int s = w->move_buf[k];
         if (w->shapes[s].type >= 0 && w->shapes[s].in_move && (n == 0 || w->move_buf[n - 1] != s))
