@@ -5954,8 +5954,9 @@ static void ga2d__pair_found(void *ctx, int other)
 
 static int ga2d__cmp_int(const void *x, const void *y) { int a = *(const int *)x, b = *(const int *)y; return (a > b) - (a < b); }
 /* Whether the n ints at v are in ascending order already (the queue of
-   moved shapes mostly is: the moving list in creation order; qsort took
-   0.1 ms over a swinging grid's 10 000 when they were). */
+   moved shapes mostly is, the moving list being in creation order: a
+   swinging grid's 3 000 a step always were, and qsort took about 0.1 ms
+   over them all the same). */
 static int ga2d__ascending(const int *v, int n)
 {
     int i;
