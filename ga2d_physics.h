@@ -10225,17 +10225,6 @@ static int ga2d__highest_bit(uint32_t set)
     return k;
 #endif
 }
-/* The lowest set bit of a nonzero 64-bit word. */
-static int ga2d__lowest_bit64(uint64_t set)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return __builtin_ctzll(set);
-#else
-    int k = 0;
-    while (!(set >> k & 1u)) ++k;
-    return k;
-#endif
-}
 
 /* A constraint's colour, given the colours its moved bodies have taken
    (not all of them): the lowest past all of theirs, so that each body's
@@ -13984,13 +13973,10 @@ static void ga2d__sweep_fast(ga2d__step_context *c, int slot)
 static void ga2d__continuous(ga2d__step_context *c)
 {
     ga2d_world *w = c->world;
-    int word;
+    int k;
     w->counters.continuous_bodies = w->counters.continuous_hits = 0;
-    for (word = 0; word < (w->moving_count + 63) / 64; ++word) {
-        uint64_t bits = c->fast[word];
-        for (; bits != 0; bits &= bits - 1)
-            ga2d__sweep_fast(c, w->moving[word * 64 + ga2d__lowest_bit64(bits)]);
-    }
+    for (k = ga2d__next_bit(c->fast, 0, w->moving_count); k >= 0; k = ga2d__next_bit(c->fast, k + 1, w->moving_count))
+        ga2d__sweep_fast(c, w->moving[k]);
 }
 
 /* Stage, over the moving bodies (counted: ga2d__run_checked): the user's
