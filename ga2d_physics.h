@@ -9485,22 +9485,29 @@ typedef struct ga2d__wbody { ga2d__w vx, vy, w, pad, dpx, dpy, qc, qs; } ga2d__w
 #define GA2D__SHUF(a, b, ...) __builtin_shuffle(a, b, (ga2d__wmask){__VA_ARGS__})
 #endif
 #endif
-/* 8 lanes (AVX floats): an 8 x 8 transpose would cross the register's
-   128-bit halves, each crossing a slow shuffle.  So a row holds two
-   bodies' four reals instead, lane l's in the low half and lane l + 4's
-   in the high half (joined by __builtin_shufflevector: clang, gcc 12), and
-   the four rows are transposed within the halves, where every shuffle is
-   cheap: joint_grid stepped 1.35x as fast as when it gathered field by
-   field, and many_pyramids and large_pyramid 1.15x. */
-#if defined(GA2D__SHUF) && (GA2D__LANES < 8 || defined(__clang__) || __GNUC__ >= 12)
-#if GA2D__LANES == 8
-typedef float ga2d__whalf __attribute__((vector_size(16), aligned(4)));
+/* With AVX (32-byte vectors: 8 float lanes, 4 double) a square
+   transpose would cross the register's 16-byte halves, each crossing a
+   slow shuffle.  So a row holds two bodies' reals instead, lane l's in the
+   low half and lane l + E's in the high half (E = GA2D__LANES / 2, the
+   lanes, and the reals, a half holds; joined by __builtin_shufflevector:
+   clang, gcc 12), and the rows are transposed within the halves, where
+   every shuffle is cheap.  Gathered field by field instead, the float AVX
+   build stepped joint_grid 1.35x and the pyramids 1.15x slower; the
+   square transpose made the double AVX build slower than double SSE2. */
+#if defined(GA2D__SHUF) && (GA2D__BYTES == 16 || defined(__clang__) || __GNUC__ >= 12)
+#if GA2D__BYTES == 32
+#define GA2D__E (GA2D__LANES / 2)
+typedef ga2d_real ga2d__whalf __attribute__((vector_size(16), aligned(sizeof(ga2d_real))));
 static GA2D__HOT ga2d__w ga2d__wrow(const ga2d_real *lo, const ga2d_real *hi)
 {
     ga2d__whalf l, h;
     memcpy(&l, lo, sizeof l);
     memcpy(&h, hi, sizeof h);
+#ifdef GA2D_DOUBLE
+    return __builtin_shufflevector(l, h, 0, 1, 2, 3);
+#else
     return __builtin_shufflevector(l, h, 0, 1, 2, 3, 4, 5, 6, 7);
+#endif
 }
 #else
 static GA2D__HOT ga2d__w ga2d__wrow(const ga2d_real *p)
@@ -9511,9 +9518,9 @@ static GA2D__HOT ga2d__w ga2d__wrow(const ga2d_real *p)
 }
 #endif
 
-/* r[0 .. GA2D__LANES-1] transposed in place (2 or 4 lanes; with 8, the
-   first 4 rows, half by half).  Written out, as are the row loops below:
-   gcc -O2 does not unroll them, and rolled they keep the rows in
+/* r[0 .. GA2D__LANES-1] transposed in place (2 or 4 lanes in 16 bytes; in
+   32, the first 4 rows, half by half).  Written out, as are the row loops
+   below: gcc -O2 does not unroll them, and rolled they keep the rows in
    memory. */
 static GA2D__HOT void ga2d__wtranspose(ga2d__w *r)
 {
@@ -9528,6 +9535,13 @@ static GA2D__HOT void ga2d__wtranspose(ga2d__w *r)
     r[1] = GA2D__SHUF(t0, t1, 2, 3, 10, 11, 6, 7, 14, 15);
     r[2] = GA2D__SHUF(t2, t3, 0, 1, 8, 9, 4, 5, 12, 13);
     r[3] = GA2D__SHUF(t2, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+#elif GA2D__BYTES == 32 /* 4 doubles: rows 0, 1 hold fields 0, 1; rows 2, 3 fields 2, 3 */
+    ga2d__w t0 = GA2D__SHUF(r[0], r[1], 0, 4, 2, 6), t1 = GA2D__SHUF(r[0], r[1], 1, 5, 3, 7);
+    ga2d__w t2 = GA2D__SHUF(r[2], r[3], 0, 4, 2, 6), t3 = GA2D__SHUF(r[2], r[3], 1, 5, 3, 7);
+    r[0] = t0;
+    r[1] = t1;
+    r[2] = t2;
+    r[3] = t3;
 #else
     ga2d__w t0 = GA2D__SHUF(r[0], r[1], 0, 4, 1, 5), t1 = GA2D__SHUF(r[2], r[3], 0, 4, 1, 5);
     ga2d__w t2 = GA2D__SHUF(r[0], r[1], 2, 6, 3, 7), t3 = GA2D__SHUF(r[2], r[3], 2, 6, 3, 7);
@@ -9541,13 +9555,16 @@ static GA2D__HOT void ga2d__wtranspose(ga2d__w *r)
 /* Rows j .. j + GA2D__LANES - 1 of the block: lane l's body from real j
    on, into f[j + l] (load), or back where the lane moves it (store): a
    body a lane does not move may be another lane's, in a group another
-   worker solves at the same time, and is not written.  With 8 lanes, rows
-   j .. j + 3, each with lanes l and l + 4. */
-#if GA2D__LANES == 8
-#define GA2D__ROW(l) f[j + (l)] = ga2d__wrow(&s[slot[l]].vx + j, &s[slot[(l) + 4]].vx + j)
-#define GA2D__HALF(l, at)                                                                                              \
-    if (GA2D__LANE(m, at)) memcpy(&s[slot[at]].vx + j, (char *)&f[j + (l)] + ((at) - (l)) / 4 * sizeof(ga2d__whalf), sizeof(ga2d__whalf))
-#define GA2D__PUT(l) GA2D__HALF(l, l); GA2D__HALF(l, (l) + 4)
+   worker solves at the same time, and is not written.  In 32 bytes, rows
+   j .. j + 3: row l holds lanes l % E and l % E + E, from real j + l / E E
+   on. */
+#if GA2D__BYTES == 32
+#define GA2D__AT(l, h) (&s[slot[(l) % GA2D__E + (h) * GA2D__E]].vx + j + (l) / GA2D__E * GA2D__E)
+#define GA2D__ROW(l) f[j + (l)] = ga2d__wrow(GA2D__AT(l, 0), GA2D__AT(l, 1))
+#define GA2D__HALF(l, h)                                                                                               \
+    if (GA2D__LANE(m, (l) % GA2D__E + (h) * GA2D__E))                                                                  \
+    memcpy(GA2D__AT(l, h), (char *)&f[j + (l)] + (h) * sizeof(ga2d__whalf), sizeof(ga2d__whalf))
+#define GA2D__PUT(l) GA2D__HALF(l, 0); GA2D__HALF(l, 1)
 #else
 #define GA2D__ROW(l) f[j + (l)] = ga2d__wrow(&s[slot[l]].vx + j)
 #define GA2D__PUT(l) if (GA2D__LANE(m, l)) memcpy(&s[slot[l]].vx + j, &f[j + (l)], sizeof f[0])
@@ -9614,6 +9631,8 @@ static GA2D__HOT void ga2d__wstore(ga2d__sbody *s, const int *slot, ga2d__wmask 
 #undef GA2D__ROW
 #undef GA2D__PUT
 #undef GA2D__HALF
+#undef GA2D__AT
+#undef GA2D__E
 #undef GA2D__ROWS
 #else
 /* Field by field, each vector made whole at once (the compiler then sees
