@@ -9795,18 +9795,27 @@ static GA2D__HOT ga2d__w ga2d__wcoupling(const ga2d__group *g)
    changes none. */
 static GA2D__HOT void ga2d__wfind(ga2d__group *g, const ga2d__wbody *A, const ga2d__wbody *B, int friction, int extras)
 {
+    /* the two points side by side, written out: as a loop (gcc -O2 does
+       not unroll it) each point's divisions waited on the last's, and
+       large_pyramid stepped 4-5 % slower */
     ga2d__w tx = g->ny, ty = ga2d__wsub(ga2d__wsplat(0), g->nx);
-    int k;
-    for (k = 0; k < 2; ++k) {
-        ga2d__wanchors r;
-        ga2d__warms *m = &g->arm[k];
-        g->sep[k] = ga2d__wpoint_now(g, k, A, B, &r, extras);
-        m->na = ga2d__wwedge(r.ax, r.ay, g->nx, g->ny);
-        m->nb = ga2d__wwedge(r.bx, r.by, g->nx, g->ny);
-        m->ta = ga2d__wwedge(r.ax, r.ay, tx, ty);
-        m->tb = ga2d__wwedge(r.bx, r.by, tx, ty);
-        g->nmass[k] = ga2d__weffective_mass(g, k, m->na, m->nb);
-        if (friction) g->tmass[k] = ga2d__weffective_mass(g, k, m->ta, m->tb);
+    ga2d__wanchors r0, r1;
+    ga2d__warms *m = g->arm;
+    g->sep[0] = ga2d__wpoint_now(g, 0, A, B, &r0, extras);
+    g->sep[1] = ga2d__wpoint_now(g, 1, A, B, &r1, extras);
+    m[0].na = ga2d__wwedge(r0.ax, r0.ay, g->nx, g->ny);
+    m[0].nb = ga2d__wwedge(r0.bx, r0.by, g->nx, g->ny);
+    m[1].na = ga2d__wwedge(r1.ax, r1.ay, g->nx, g->ny);
+    m[1].nb = ga2d__wwedge(r1.bx, r1.by, g->nx, g->ny);
+    m[0].ta = ga2d__wwedge(r0.ax, r0.ay, tx, ty);
+    m[0].tb = ga2d__wwedge(r0.bx, r0.by, tx, ty);
+    m[1].ta = ga2d__wwedge(r1.ax, r1.ay, tx, ty);
+    m[1].tb = ga2d__wwedge(r1.bx, r1.by, tx, ty);
+    g->nmass[0] = ga2d__weffective_mass(g, 0, m[0].na, m[0].nb);
+    g->nmass[1] = ga2d__weffective_mass(g, 1, m[1].na, m[1].nb);
+    if (friction) {
+        g->tmass[0] = ga2d__weffective_mass(g, 0, m[0].ta, m[0].tb);
+        g->tmass[1] = ga2d__weffective_mass(g, 1, m[1].ta, m[1].tb);
     }
     g->k12 = ga2d__wcoupling(g);
 }
