@@ -757,14 +757,21 @@ typedef int ga2d_pre_solve_fn(ga2d_shape_id shape_a, ga2d_shape_id shape_b, cons
    for all of them; or it runs them itself and returns NULL (finish_task
    is then not called).  The step hands over ranges of the stages whose
    items write only their own data: the narrowphase, the bodies' marks,
-   kicks and drifts, preparing the contacts and filling the solver's lanes,
-   and each colour of every solver pass (constraints are coloured so that
-   no two of a colour move one body), so a step makes a few hundred short
-   jobs: a task system whose workers sleep between jobs loses to one that
-   spins a moment first (examples/task_pool.h).  The joints, ordering the
-   contacts and colouring them still run on the calling thread.  Results
-   are the same bits for any worker count and any split.  The world is
-   locked while a task runs: a task system must not call it. */
+   kicks and drifts, preparing the contacts and filling the solver's
+   lanes; and the solver passes, whose constraints are coloured so that
+   no two of a colour move one body.  Under gcc and clang a substep's
+   passes go as one job of worker_count items, each a member of a team
+   that shares out every colour of every pass among the members running,
+   with atomics of its own: a member waits only for blocks another has
+   taken, never for a member not yet started, so a task system may run
+   the items one after the other, or fewer at once than worker_count
+   (elsewhere each colour of a pass is a job).  So a step makes a few
+   dozen jobs, microseconds apart: a task system whose workers sleep
+   between jobs loses to one that spins a moment first
+   (examples/task_pool.h).  The joints, ordering the contacts and
+   colouring them still run on the calling thread.  Results are the same
+   bits for any worker count and any split.  The world is locked while a
+   task runs: a task system must not call it. */
 typedef void ga2d_task_fn(int start_index, int end_index, int worker_index, void *task_context);
 typedef void *ga2d_enqueue_task_fn(ga2d_task_fn *task, int item_count, int min_range, void *task_context, void *user_context);
 typedef void ga2d_finish_task_fn(void *user_task, void *user_context);
@@ -4964,6 +4971,15 @@ typedef struct ga2d__joint_seen ga2d__joint_seen;
 typedef struct ga2d__joint ga2d__joint;
 typedef struct ga2d__jgroup ga2d__jgroup;
 typedef struct ga2d__rk4 ga2d__rk4;
+/* A stretch of every solver pass (ga2d__segments): joints [joint_begin,
+   joint_end), then lane groups [group_begin, group_end); shared with the
+   workers in `blocks` blocks (joint_blocks of GA2D__JOINT_BLOCK joints,
+   then of GA2D__GROUP_BLOCK groups), or run as one block, in order. */
+typedef struct ga2d__segment {
+    int joint_begin, joint_end, group_begin, group_end;
+    int shared, joint_blocks, blocks;
+} ga2d__segment;
+#define GA2D__SEGMENTS (2 * GA2D__COLOURS + 3) /* two a colour at most, the overflow's and the rest */
 
 /* A soft constraint: a spring of `hertz` and damping ratio `zeta` seen by
    an implicit step of h, as a bias rate and the scales of mass and of the
@@ -5113,6 +5129,10 @@ typedef struct ga2d__step_context {
     int *tally;                  /* a count per block of a split stage's items (a range writes
                                     its first block's), summed after it */
     int tally_capacity;
+    ga2d__segment segments[GA2D__SEGMENTS]; /* the solver passes' (ga2d__segments) */
+    int segment_count;
+    int *team_lines;             /* the workers' team's counters (ga2d__team) */
+    int team_line_capacity;
     ga2d_real rk4_at, rk4_weight; /* the RK4 stage under way: its time in substeps, its weight */
 } ga2d__step_context;
 
@@ -12923,6 +12943,7 @@ static void ga2d__step_release(ga2d_world *w)
     ga2d__release(w, (void **)&c->changed, &c->changed_capacity, sizeof *c->changed);
     ga2d__release(w, (void **)&c->tally, &c->tally_capacity, sizeof *c->tally);
     ga2d__release(w, (void **)&c->counts, &c->counts_capacity, sizeof *c->counts);
+    ga2d__release(w, (void **)&c->team_lines, &c->team_line_capacity, sizeof *c->team_lines);
 }
 
 /* Everything the context holds, freed with its world. */
@@ -12947,6 +12968,7 @@ static void ga2d__step_free(const ga2d_allocator *a, ga2d__step_context *c)
     GA2D__FREE_ARRAY(a, c->fast, c->fast_capacity);
     GA2D__FREE_ARRAY(a, c->tally, c->tally_capacity);
     GA2D__FREE_ARRAY(a, c->counts, c->counts_capacity);
+    GA2D__FREE_ARRAY(a, c->team_lines, c->team_line_capacity);
     GA2D__FREE_ARRAY(a, c->joint_order, c->joint_order_capacity);
     GA2D__FREE_ARRAY(a, c->joint_keys, c->joint_key_capacity);
     GA2D__FREE_ARRAY(a, c->joint_seen, c->joint_seen_capacity);
@@ -13703,102 +13725,263 @@ static void ga2d__stage_drift_gather(ga2d__step_context *c)
     c->masses_stale = 1;
     if (ga2d__run_counted(c, ga2d__scatter_drift_gather, c->world->moving_count) > 0) ga2d__stage_gather(c);
 }
-/* A colour of a solver pass handed to the workers: its joints in blocks
-   of GA2D__JOINT_BLOCK, then its groups in blocks of GA2D__GROUP_BLOCK,
-   one run of block indices over both. */
-typedef struct ga2d__colour_task {
-    ga2d__step_context *c;
+/* A solver pass: its joints' and its lane groups' kernels, and whether
+   the hit events' peaks are tracked after it (ga2d__pass_done). */
+typedef struct ga2d__pass_kind {
     ga2d__range_fn *joints, *groups;
-    int joint_begin, joint_end, joint_blocks, group_begin, group_end;
-} ga2d__colour_task;
+    int peaks;
+} ga2d__pass_kind;
 
-static void ga2d__colour_entry(int start, int end, int worker, void *context)
+/* Blocks [start, end) of a pass's segment (ga2d__segments): a shared
+   segment's joints' blocks come first, then its groups'. */
+static void ga2d__segment_run(ga2d__step_context *c, const ga2d__segment *g, const ga2d__pass_kind *p, int start, int end)
 {
-    const ga2d__colour_task *t = (const ga2d__colour_task *)context;
-    int jb = t->joint_blocks, first, stop;
-    (void)worker;
+    int jb = g->joint_blocks, first, stop;
+    if (!g->shared) { /* one block, in order */
+        if (g->joint_end > g->joint_begin) p->joints(c, g->joint_begin, g->joint_end);
+        if (g->group_end > g->group_begin) p->groups(c, g->group_begin, g->group_end);
+        return;
+    }
     if (start < jb) {
-        first = t->joint_begin + start * GA2D__JOINT_BLOCK;
-        stop = ga2d__min_int(t->joint_begin + ga2d__min_int(end, jb) * GA2D__JOINT_BLOCK, t->joint_end);
-        t->joints(t->c, first, stop);
+        first = g->joint_begin + start * GA2D__JOINT_BLOCK;
+        stop = ga2d__min_int(g->joint_begin + ga2d__min_int(end, jb) * GA2D__JOINT_BLOCK, g->joint_end);
+        p->joints(c, first, stop);
     }
     if (end > jb) {
-        first = t->group_begin + (start > jb ? start - jb : 0) * GA2D__GROUP_BLOCK;
-        stop = ga2d__min_int(t->group_begin + (end - jb) * GA2D__GROUP_BLOCK, t->group_end);
-        t->groups(t->c, first, stop);
+        first = g->group_begin + (start > jb ? start - jb : 0) * GA2D__GROUP_BLOCK;
+        stop = ga2d__min_int(g->group_begin + (end - jb) * GA2D__GROUP_BLOCK, g->group_end);
+        p->groups(c, first, stop);
     }
 }
-
-/* Colour k of a solver pass: its joints' and groups' blocks, 0 when they
-   are fewer than GA2D__COLOUR_MIN groups' worth or there are no workers
-   to share them (the colour then runs here). */
-static int ga2d__colour_blocks(const ga2d__step_context *c, int k)
+/* A shared segment of a pass handed to the workers as a job of its own. */
+typedef struct ga2d__segment_task {
+    ga2d__step_context *c;
+    const ga2d__segment *segment;
+    const ga2d__pass_kind *pass;
+} ga2d__segment_task;
+static void ga2d__segment_entry(int start, int end, int worker, void *context)
 {
-    const ga2d_world *w = c->world;
-    int joints = c->joint_start[k + 1] - c->joint_start[k], groups = c->colour_start[k + 1] - c->colour_start[k];
-    int blocks = (joints + GA2D__JOINT_BLOCK - 1) / GA2D__JOINT_BLOCK + (groups + GA2D__GROUP_BLOCK - 1) / GA2D__GROUP_BLOCK;
-    if (w->def.worker_count <= 1 || !w->def.enqueue_task || blocks < GA2D__COLOUR_MIN / GA2D__GROUP_BLOCK) return 0;
-    return blocks;
+    const ga2d__segment_task *t = (const ga2d__segment_task *)context;
+    (void)worker;
+    ga2d__segment_run(t->c, t->segment, t->pass, start, end);
 }
 
-/* Colour k of a solver pass on the workers, in its `blocks`: its joints,
-   then its groups (they move no body in common, so the order is only the
-   bits'). */
-static void ga2d__share_colour(ga2d__step_context *c, ga2d__range_fn *joints, ga2d__range_fn *groups, int k, int blocks)
+/* Segment n: joints [jb, je), then groups [gb, ge); shared, in blocks of
+   GA2D__JOINT_BLOCK joints and GA2D__GROUP_BLOCK groups, else one block;
+   returns n + 1. */
+static int ga2d__segment_add(ga2d__step_context *c, int n, int jb, int je, int gb, int ge, int shared)
 {
-    const ga2d_world *w = c->world;
-    ga2d__colour_task t;
-    void *handle;
-    t.c = c;
-    t.joints = joints;
-    t.groups = groups;
-    t.joint_begin = c->joint_start[k];
-    t.joint_end = c->joint_start[k + 1];
-    t.group_begin = c->colour_start[k];
-    t.group_end = c->colour_start[k + 1];
-    t.joint_blocks = (t.joint_end - t.joint_begin + GA2D__JOINT_BLOCK - 1) / GA2D__JOINT_BLOCK;
-    handle = w->def.enqueue_task(ga2d__colour_entry, blocks, 1, &t, w->def.user_task_context);
-    if (handle) w->def.finish_task(handle, w->def.user_task_context);
+    ga2d__segment *g = &c->segments[n];
+    GA2D_ASSERT(n < GA2D__SEGMENTS);
+    g->joint_begin = jb;
+    g->joint_end = je;
+    g->group_begin = gb;
+    g->group_end = ge;
+    g->shared = shared;
+    g->joint_blocks = shared ? (je - jb + GA2D__JOINT_BLOCK - 1) / GA2D__JOINT_BLOCK : 0;
+    g->blocks = shared ? g->joint_blocks + (ge - gb + GA2D__GROUP_BLOCK - 1) / GA2D__GROUP_BLOCK : 1;
+    return n + 1;
+}
+/* What runs here since the last segment, as one block: the joints of the
+   colour that began it (none at first), then the groups from `here` to
+   group `to`, if there is any. */
+static int ga2d__segment_here(ga2d__step_context *c, int n, int jb, int je, int here, int to)
+{
+    if (je == jb && to == here) return n;
+    return ga2d__segment_add(c, n, jb, je, here, to, 0);
 }
 
-/* A solver pass: colour by colour, each colour's joints and then its
-   contacts' lane groups; then the overflow's joints and groups, here.  The
-   colours run here follow one another without a joint between them, so
-   their groups (adjacent in colour order) run in one call from `here`,
-   in the same order: a bin of a hundred mixed shapes has 20-30 colours
-   of 1-5 groups, and a call per colour per pass (each sets up its
-   constants first) cost it 2 % of its step. */
-static void ga2d__run_colours(ga2d__step_context *c, ga2d__range_fn *joints, ga2d__range_fn *groups)
+/* Cuts the step's colours into the segments every solver pass runs one
+   after the other, and returns how many are shared with the workers.  A
+   colour of GA2D__COLOUR_MIN groups' worth, when there are workers, is a
+   segment of its own in blocks of GA2D__JOINT_BLOCK joints and of
+   GA2D__GROUP_BLOCK groups (no two of a colour move one body, so the
+   blocks commute).  Between them, the colours run here follow one another
+   in one block without a joint between them, so their groups (adjacent
+   in colour order) run in one call, in the same order: a bin of a hundred
+   mixed shapes has 20-30 colours of 1-5 groups, and a call per colour per
+   pass (each sets up its constants first) cost it 2 % of its step.  Then
+   the overflow's joints and groups, here. */
+static int ga2d__segments(ga2d__step_context *c)
 {
-    int k, n = c->colour_count, here = 0;
-    for (k = 0; k < n; ++k) {
-        int blocks = ga2d__colour_blocks(c, k);
-        if (blocks > 0) {
-            if (c->colour_start[k] > here) groups(c, here, c->colour_start[k]);
-            ga2d__share_colour(c, joints, groups, k, blocks);
+    const ga2d_world *w = c->world;
+    int k, n = 0, shared = 0, here = 0, jb = 0, je = 0, colours = c->colour_count;
+    int workers = w->def.worker_count > 1 && w->def.enqueue_task;
+    for (k = 0; k <= colours; ++k) {
+        int joint_end = k < colours ? c->joint_start[k + 1] : c->joint_active;
+        int joints = joint_end - c->joint_start[k], groups = c->colour_start[k + (k < colours)] - c->colour_start[k];
+        int blocks = (joints + GA2D__JOINT_BLOCK - 1) / GA2D__JOINT_BLOCK + (groups + GA2D__GROUP_BLOCK - 1) / GA2D__GROUP_BLOCK;
+        if (k < colours && workers && blocks >= GA2D__COLOUR_MIN / GA2D__GROUP_BLOCK) {
+            n = ga2d__segment_here(c, n, jb, je, here, c->colour_start[k]);
+            n = ga2d__segment_add(c, n, c->joint_start[k], joint_end, c->colour_start[k], c->colour_start[k + 1], 1);
+            ++shared;
+            jb = je = 0;
             here = c->colour_start[k + 1];
-        } else if (c->joint_start[k + 1] > c->joint_start[k]) {
-            if (c->colour_start[k] > here) groups(c, here, c->colour_start[k]);
-            joints(c, c->joint_start[k], c->joint_start[k + 1]);
+        } else if (joints > 0) {
+            n = ga2d__segment_here(c, n, jb, je, here, c->colour_start[k]);
+            jb = c->joint_start[k];
+            je = joint_end;
             here = c->colour_start[k];
         }
     }
-    if (c->joint_start[n] < c->joint_active) {
-        if (c->colour_start[n] > here) groups(c, here, c->colour_start[n]);
-        joints(c, c->joint_start[n], c->joint_active);
-        here = c->colour_start[n];
+    c->segment_count = ga2d__segment_here(c, n, jb, je, here, c->group_count);
+    return shared;
+}
+
+/* After each solver pass: the lanes' anchors and masses are found at the
+   bodies' positions now (ga2d__wfind), and with hit events each point's
+   largest normal impulse of the step so far is kept. */
+static void ga2d__track_peaks(ga2d__step_context *c, int begin, int end);
+static void ga2d__pass_done(ga2d__step_context *c, const ga2d__pass_kind *p)
+{
+    c->masses_stale = 0;
+    if (p->peaks && c->world->hit_shapes > 0) ga2d__run(c, ga2d__track_peaks, c->group_count);
+}
+
+/* ---- the solver's passes as one job: a team of the workers */
+/* A colour handed to the workers as a job of its own costs a hand-off
+   (4-5 us on the machine measured: large_pyramid has 6 such colours, 3
+   passes and 4 substeps, 72 hand-offs a step, and two workers stepped it
+   1.6-1.8 times as fast as one).  So the passes of a substep run as one
+   job of worker_count members, each running every segment of every pass
+   in turn: it takes blocks of the segment, first from its own share (the
+   w-th of worker_count, so that a worker meets the same bodies in every
+   pass and substep, in its own cache) and then from the others', and
+   waits at the segment's end until every block taken is done.  A member
+   waits only on blocks another member has taken, and so is running: a
+   task system that runs the members one after the other, or fewer at
+   once than the world's workers, lets the first do everything and the
+   rest find it done.  The blocks of a segment commute (or it is one
+   block), so the bits are those of any other cut.  It needs atomics:
+   gcc's and clang's, here; elsewhere each colour is a job. */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(GA2D_NO_TEAM)
+#define GA2D__TEAM 1
+static int ga2d__atomic_add(int *p, int n) { return __atomic_fetch_add(p, n, __ATOMIC_ACQ_REL); }
+static int ga2d__atomic_load(int *p) { return __atomic_load_n(p, __ATOMIC_ACQUIRE); }
+static void ga2d__spin(void)
+{
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#elif defined(__aarch64__)
+    __asm__ __volatile__("yield");
+#endif
+}
+#else
+#define GA2D__TEAM 0
+#endif
+#define GA2D__LINE_INTS 16    /* a cache line of ints: shares' counters apart, so a member's own
+                                 claims do not pull the line from the others */
+#define GA2D__TEAM_SHARES 8   /* workers beyond share the shares */
+#define GA2D__TEAM_CHUNKS 8   /* a member takes an eighth of a share at a time */
+
+typedef struct ga2d__team {
+    ga2d__step_context *c;
+    const ga2d__pass_kind *passes;
+    int pass_count, shares;
+    int *lines;                  /* per pass and segment: a line per share (blocks taken of it),
+                                    then a line of blocks done */
+} ga2d__team;
+
+#if GA2D__TEAM
+/* Member `worker`'s part of segment g: the blocks it takes, from its own
+   share first; returns how many it ran. */
+static int ga2d__team_take(const ga2d__team *t, const ga2d__segment *g, const ga2d__pass_kind *p, int *line, int worker)
+{
+    int k, ran = 0, own = worker > 0 ? worker % t->shares : 0;
+    for (k = 0; k < t->shares; ++k) {
+        int share = (own + k) % t->shares, b;
+        int lo = (int)((long long)g->blocks * share / t->shares), hi = (int)((long long)g->blocks * (share + 1) / t->shares);
+        int chunk = (hi - lo + GA2D__TEAM_CHUNKS - 1) / GA2D__TEAM_CHUNKS;
+        if (hi <= lo) continue;
+        while ((b = lo + ga2d__atomic_add(&line[share * GA2D__LINE_INTS], chunk)) < hi) {
+            int stop = ga2d__min_int(b + chunk, hi);
+            ga2d__segment_run(t->c, g, p, b, stop);
+            ran += stop - b;
+        }
     }
-    if (c->group_count > here) groups(c, here, c->group_count);
+    return ran;
+}
+
+static void ga2d__team_entry(int start, int end, int worker, void *context)
+{
+    const ga2d__team *t = (const ga2d__team *)context;
+    ga2d__step_context *c = t->c;
+    int n = c->segment_count, p, s;
+    (void)start;
+    (void)end;
+    for (p = 0; p < t->pass_count; ++p)
+        for (s = 0; s < n; ++s) {
+            const ga2d__segment *g = &c->segments[s];
+            int *line = t->lines + (size_t)(p * n + s) * (size_t)(t->shares + 1) * GA2D__LINE_INTS;
+            int *done = line + t->shares * GA2D__LINE_INTS, last = s == n - 1;
+            int ran = ga2d__team_take(t, g, &t->passes[p], line, worker);
+            /* the member that finishes the pass's last segment closes the pass
+               before the others may go on */
+            if (ran > 0 && ga2d__atomic_add(done, ran) + ran == g->blocks && last) {
+                ga2d__pass_done(c, &t->passes[p]);
+                ga2d__atomic_add(done, 1);
+            }
+            while (ga2d__atomic_load(done) < g->blocks + last) ga2d__spin();
+        }
+}
+
+/* The passes as one job of the workers; 0 if memory for its counters ran
+   out (reported: the passes then run a colour a job, to the same bits). */
+static int ga2d__team_run(ga2d__step_context *c, const ga2d__pass_kind *passes, int pass_count)
+{
+    const ga2d_world *w = c->world;
+    ga2d__team t;
+    void *handle;
+    int lines;
+    t.c = c;
+    t.passes = passes;
+    t.pass_count = pass_count;
+    t.shares = ga2d__min_int(w->def.worker_count, GA2D__TEAM_SHARES);
+    lines = pass_count * c->segment_count * (t.shares + 1);
+    if (!ga2d__grow(&c->world->mem, (void **)&c->team_lines, &c->team_line_capacity, lines * GA2D__LINE_INTS, sizeof(int))) {
+        c->error = GA2D_ERR_OUT_OF_MEMORY;
+        return 0;
+    }
+    t.lines = c->team_lines;
+    memset(t.lines, 0, (size_t)lines * GA2D__LINE_INTS * sizeof(int));
+    handle = w->def.enqueue_task(ga2d__team_entry, w->def.worker_count, 1, &t, w->def.user_task_context);
+    if (handle) w->def.finish_task(handle, w->def.user_task_context);
+    return 1;
+}
+#endif
+
+/* Solver passes one after the other, over the step's colours: on a team
+   of the workers when a colour is long enough to share, else each
+   segment shared with the workers as a job of its own or run here. */
+static void ga2d__run_passes(ga2d__step_context *c, const ga2d__pass_kind *passes, int pass_count)
+{
+    const ga2d_world *w = c->world;
+    int p, s, shared = ga2d__segments(c);
+#if GA2D__TEAM
+    if (shared > 0 && ga2d__team_run(c, passes, pass_count)) return;
+#endif
+    for (p = 0; p < pass_count; ++p) {
+        for (s = 0; s < c->segment_count; ++s) {
+            const ga2d__segment *g = &c->segments[s];
+            ga2d__segment_task t;
+            void *handle;
+            if (!g->shared) {
+                ga2d__segment_run(c, g, &passes[p], 0, g->blocks);
+                continue;
+            }
+            t.c = c;
+            t.segment = g;
+            t.pass = &passes[p];
+            handle = w->def.enqueue_task(ga2d__segment_entry, g->blocks, 1, &t, w->def.user_task_context);
+            if (handle) w->def.finish_task(handle, w->def.user_task_context);
+        }
+        ga2d__pass_done(c, &passes[p]);
+    }
 }
 static void ga2d__joints_biased(ga2d__step_context *c, int begin, int end) { ga2d__solve_joints(c, begin, end, 1); }
 static void ga2d__joints_relaxed(ga2d__step_context *c, int begin, int end)
 {
     ga2d__solve_joints(c, begin, end, c->joint_bias_in_relax);
-}
-static void ga2d__stage_warm_start(ga2d__step_context *c)
-{
-    ga2d__run_colours(c, ga2d__warm_start_joints, ga2d__warm_start);
-    c->masses_stale = 0; /* it found them (ga2d__wfind) */
 }
 /* Stage, over the groups, after each pass of a world with hit events:
    each point's largest normal impulse of the step so far (a body stopped
@@ -13814,15 +13997,24 @@ static void ga2d__track_peaks(ga2d__step_context *c, int begin, int end)
     }
 }
 
-static void ga2d__run_pass(ga2d__step_context *c, ga2d__range_fn *joints, ga2d__range_fn *groups)
+/* The passes (the warm start finds the lanes' anchors and masses,
+   ga2d__wfind, as a pass does, and tracks no peak) */
+static const ga2d__pass_kind ga2d__warm_pass = {ga2d__warm_start_joints, ga2d__warm_start, 0};
+static const ga2d__pass_kind ga2d__soft_pass = {ga2d__joints_biased, ga2d__solve_soft, 1};
+static const ga2d__pass_kind ga2d__relax_pass = {ga2d__joints_relaxed, ga2d__solve_rigid, 1};
+static const ga2d__pass_kind ga2d__baumgarte_pass = {ga2d__joints_biased, ga2d__solve_baumgarte, 1};
+static void ga2d__stage_warm_start(ga2d__step_context *c) { ga2d__run_passes(c, &ga2d__warm_pass, 1); }
+static void ga2d__stage_solve(ga2d__step_context *c) { ga2d__run_passes(c, &ga2d__soft_pass, 1); }
+/* The soft step's warm start and soft pass follow one another: one job. */
+static void ga2d__stage_warm_solve(ga2d__step_context *c)
 {
-    ga2d__run_colours(c, joints, groups);
-    c->masses_stale = 0; /* every group's, at the bodies' positions now */
-    if (c->world->hit_shapes > 0) ga2d__run(c, ga2d__track_peaks, c->group_count);
+    ga2d__pass_kind both[2];
+    both[0] = ga2d__warm_pass;
+    both[1] = ga2d__soft_pass;
+    ga2d__run_passes(c, both, 2);
 }
-static void ga2d__stage_solve(ga2d__step_context *c) { ga2d__run_pass(c, ga2d__joints_biased, ga2d__solve_soft); }
-static void ga2d__stage_relax(ga2d__step_context *c) { ga2d__run_pass(c, ga2d__joints_relaxed, ga2d__solve_rigid); }
-static void ga2d__stage_baumgarte(ga2d__step_context *c) { ga2d__run_pass(c, ga2d__joints_biased, ga2d__solve_baumgarte); }
+static void ga2d__stage_relax(ga2d__step_context *c) { ga2d__run_passes(c, &ga2d__relax_pass, 1); }
+static void ga2d__stage_baumgarte(ga2d__step_context *c) { ga2d__run_passes(c, &ga2d__baumgarte_pass, 1); }
 static void ga2d__stage_push_apart(ga2d__step_context *c)
 {
     c->masses_stale = 1;
@@ -13857,16 +14049,18 @@ static int ga2d__plan_substep(const ga2d_world *w, ga2d__stage *plan, int compac
     int joined = soft && w->def.integrator == GA2D_INTEGRATOR_SYMPLECTIC_EULER; /* ga2d__kick_gather */
     if (compact) { /* ga2d__compact_begin */
         n = ga2d__plan_add(plan, n, ga2d__stage_ckick, 1);
-        if (w->def.enable_warm_starting) n = ga2d__plan_add(plan, n, ga2d__stage_warm_start, 1);
-        n = ga2d__plan_add(plan, n, ga2d__stage_solve, 1);
+        n = ga2d__plan_add(plan, n, w->def.enable_warm_starting ? ga2d__stage_warm_solve : ga2d__stage_solve, 1);
         n = ga2d__plan_add(plan, n, ga2d__stage_cdrift, 1);
         return ga2d__plan_add(plan, n, ga2d__stage_relax, 1);
     }
     n = ga2d__plan_add(plan, n, joined ? ga2d__stage_kick_gather : ga2d__integrate_velocities, 1);
     if (!joined) n = ga2d__plan_add(plan, n, ga2d__stage_gather, 1);
-    if (w->def.enable_warm_starting) n = ga2d__plan_add(plan, n, ga2d__stage_warm_start, 1);
-    if (soft) n = ga2d__plan_add(plan, n, ga2d__stage_solve, 1);
-    else n = ga2d__plan_add(plan, n, ngs ? ga2d__stage_relax : ga2d__stage_baumgarte, w->def.velocity_iterations);
+    if (soft) {
+        n = ga2d__plan_add(plan, n, w->def.enable_warm_starting ? ga2d__stage_warm_solve : ga2d__stage_solve, 1);
+    } else {
+        if (w->def.enable_warm_starting) n = ga2d__plan_add(plan, n, ga2d__stage_warm_start, 1);
+        n = ga2d__plan_add(plan, n, ngs ? ga2d__stage_relax : ga2d__stage_baumgarte, w->def.velocity_iterations);
+    }
     if (!joined) {
         n = ga2d__plan_add(plan, n, ga2d__stage_scatter, 1);
         n = ga2d__plan_add(plan, n, ga2d__integrate_positions, 1);

@@ -58,13 +58,17 @@ void task_pool_finish(void *user_task, void *user_context);
 #include <stdlib.h>
 
 #define TASK_POOL_RANGES_PER_WORKER 4
-/* A step hands over many short jobs (a solver pass per colour), each a
-   few microseconds: a worker waiting on a condition variable takes about
-   as long to wake.  So an idle worker first spins on the job word,
+/* A step hands over a few dozen short jobs (a stage over the bodies, a
+   substep's solver passes), some of them a few microseconds: a worker
+   waiting on a condition variable takes about as long to wake.  So an idle worker first spins on the job word,
    pausing, then yields its core (more workers than cores), and only then
    sleeps until the next job. */
+#ifndef TASK_POOL_SPINS
 #define TASK_POOL_SPINS 2000  /* polls with a pause between */
+#endif
+#ifndef TASK_POOL_YIELDS
 #define TASK_POOL_YIELDS 200  /* then polls with a yield between */
+#endif
 
 /* The compiler's atomics (gcc, clang); another compiler brings its own. */
 #define TASK_POOL_LOAD(x) __atomic_load_n(&(x), __ATOMIC_ACQUIRE)

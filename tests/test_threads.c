@@ -463,6 +463,99 @@ static void hinge_lanes_same_bits(void)
     if (p) task_pool_destroy(p);
 }
 
+/* ------------------------------------------------ hit events on a team */
+/* The solver's passes run on a team of the workers, and the member that
+   finishes a pass keeps each point's peak impulse (what a hit event is
+   made of) before the others go on.  HIT_BOXES boxes dropped side by side
+   onto one ground, all reporting hits: their ground contacts are one
+   colour of HIT_BOXES / 4 groups (float lanes), past GA2D__COLOUR_MIN, so
+   shared.  Each step's hit events, every field, must be those of the
+   world with no task system: on a pool of 2 and 3, on the backwards
+   system (the members one after the other) and on a pool of 2 threads
+   told of 4 workers (two members a thread). */
+#define HIT_BOXES 480
+#define HIT_STEPS 90
+typedef struct hit_log {
+    int steps_with_hits, total;
+    uint64_t hash;
+} hit_log;
+
+static hit_log hit_run(ga2d_world_def wd)
+{
+    hit_log log = {0, 0, 14695981039346656037ull};
+    ga2d_world *w = ga2d_world_create(&wd);
+    ga2d_body_def d = ga2d_default_body_def();
+    ga2d_shape_def sd = ga2d_default_shape_def();
+    ga2d_polygon box = ga2d_polygon_box((ga2d_real)0.4, (ga2d_real)0.4);
+    int i, step, ok = w != NULL;
+    if (!ok) return log;
+    d.polygon = ga2d_polygon_box(HIT_BOXES, (ga2d_real)0.5); /* under every box */
+    d.position = ga2d_vec_make(0, (ga2d_real)-0.5);
+    ga2d_body_create(w, &d);
+    d.polygon.count = 0;
+    d.type = GA2D_BODY_DYNAMIC;
+    sd.enable_hit_events = 1;
+    for (i = 0; i < HIT_BOXES; ++i) { /* 1 m apart, from 0.5 to 2 m up: they land in different steps */
+        ga2d_body_id id;
+        d.position = ga2d_vec_make((ga2d_real)(i - HIT_BOXES / 2), (ga2d_real)(1 + 0.5 * (i % 4)));
+        id = ga2d_body_create(w, &d);
+        ok = ok && !ga2d_shape_id_is_null(ga2d_shape_create_polygon(w, id, &sd, &box));
+    }
+    for (step = 0; ok && step < HIT_STEPS; ++step) {
+        ga2d_contact_events ev;
+        ok = ga2d_world_step(w, (ga2d_real)1 / 60) == GA2D_OK;
+        ev = ga2d_world_contact_events(w);
+        log.steps_with_hits += ev.hit_count > 0;
+        log.total += ev.hit_count;
+        for (i = 0; i < ev.hit_count; ++i) {
+            const ga2d_contact_hit_event *h = &ev.hit[i];
+            /* the ids' slots (their generations carry each world's own tag) */
+            log.hash = dscene_fnv(log.hash, &h->shape_a.index1, sizeof h->shape_a.index1);
+            log.hash = dscene_fnv(log.hash, &h->shape_b.index1, sizeof h->shape_b.index1);
+            log.hash = dscene_fnv(log.hash, &h->point, sizeof h->point);
+            log.hash = dscene_fnv(log.hash, &h->normal, sizeof h->normal);
+            log.hash = dscene_fnv(log.hash, &h->approach_speed, sizeof h->approach_speed);
+        }
+    }
+    ga2d_world_destroy(w);
+    if (!ok) log.total = -1;
+    return log;
+}
+
+static void hit_events_on_a_team(void)
+{
+    hit_log want = hit_run(ga2d_default_world_def()), got;
+    backwards b;
+    int workers;
+    /* every box lands once: a hit each, in at least the 4 steps of the 4 heights */
+    CHECK(want.total >= HIT_BOXES);
+    CHECK(want.steps_with_hits >= 4);
+    for (workers = 2; workers <= 3; ++workers) {
+        task_pool *p = task_pool_create(workers);
+        CHECK(p != NULL);
+        if (!p) continue;
+        got = hit_run(with_pool(p));
+        if (got.total != want.total || got.hash != want.hash)
+            test_fail(__FILE__, __LINE__, "%d workers: %d hits (hash %016llx), %d without (%016llx)", workers, got.total,
+                      (unsigned long long)got.hash, want.total, (unsigned long long)want.hash);
+        task_pool_destroy(p);
+    }
+    got = hit_run(with_backwards(&b));
+    CHECK(got.total == want.total && got.hash == want.hash);
+    CHECK(b.bad == 0);
+    {
+        task_pool *p = task_pool_create(2);
+        ga2d_world_def wd;
+        CHECK(p != NULL);
+        if (!p) return;
+        wd = with_pool(p);
+        wd.worker_count = 4;
+        got = hit_run(wd);
+        if (got.total != want.total || got.hash != want.hash) test_fail(__FILE__, __LINE__, "2 threads as 4 workers: %d hits %d steps (hash %016llx), %d %d without (%016llx)", got.total, got.steps_with_hits, (unsigned long long)got.hash, want.total, want.steps_with_hits, (unsigned long long)want.hash);
+        task_pool_destroy(p);
+    }
+}
+
 /* ------------------------------------------------- the pool on its own */
 /* Every item of every job is done exactly once, by the time finish
    returns: jobs of 2 to 38 items back to back, so a worker late for one
@@ -509,5 +602,6 @@ void suite_threads(void)
     test_run("threads: the determinism scene's hash with 1-4 workers, backwards and inline", any_worker_count_same_bits);
     test_run("threads: a big mixed scene's bits and counters with every task system", big_scene_same_bits);
     test_run("threads: task fields checked; the world refuses its task system", task_fields_checked);
+    test_run("threads: hit events on the workers' team are those without workers", hit_events_on_a_team);
     test_run("threads: bare hinges in lanes give the one-by-one bits (every solver, pooled, contained)", hinge_lanes_same_bits);
 }
