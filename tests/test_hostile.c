@@ -1036,6 +1036,83 @@ static void step_and_gravity_are_bounded(void)
 }
 
 /* ============================================================= 8. speed caps */
+/* The cap on the drift itself: a solver pass can leave a body faster than
+   the kick's cap, and the drift caps it again before it moves the body.
+   YANK_PAIRS heavy boxes (1 m square, density 1000) fly at the cap, 400
+   m/s along x, spinning at 100 rad/s, each with a light box (0.2 m
+   square, density 1) on a revolute joint at 2 m from its centre, at rest:
+   the joint drags the light box to the heavy one's point velocity there,
+   |(400, 200)| = 447 m/s.  The soft step moves a body only in its drifts
+   (x += v h, four a step, each v capped at 400 (1 + 16 eps) and then
+   within a few ulps of it), so no centre moves more than 400 dt (1 + 64
+   eps) in a step, rounding of the four sums included; uncapped, a light
+   box would move up to 447 h in a substep, 3 % more in a step. */
+#define YANK_PAIRS 8
+static void yanked_past_the_cap(void)
+{
+    ga2d_world *w = weightless_world();
+    ga2d_body_id heavy[YANK_PAIRS], light[YANK_PAIRS];
+    ga2d_vec at[YANK_PAIRS];
+    double dt = 1.0 / 60, worst = 0, bound = GA2D_MAX_LINEAR_SPEED * dt * (1 + 64 * REAL_EPS);
+    int i, step, caps = 0;
+    CHECK(w != NULL);
+    if (!w) return;
+    for (i = 0; i < YANK_PAIRS; ++i) {
+        ga2d_body_def h = box_def(GA2D_BODY_DYNAMIC, 0, 10 * i, 0.5, 0.5), l = box_def(GA2D_BODY_DYNAMIC, 2, 10 * i, 0.1, 0.1);
+        ga2d_revolute_joint_def j = ga2d_default_revolute_joint_def();
+        h.density = 1000;
+        h.velocity = vec(GA2D_MAX_LINEAR_SPEED, 0);
+        h.angular_velocity = 100;
+        heavy[i] = ga2d_body_create(w, &h);
+        light[i] = ga2d_body_create(w, &l);
+        j.body_a = heavy[i];
+        j.body_b = light[i];
+        j.local_anchor_a = vec(2, 0);
+        j.local_anchor_b = vec(0, 0);
+        CHECK(!ga2d_joint_id_is_null(ga2d_revolute_joint_create(w, &j)));
+        at[i] = ga2d_body_center(w, light[i]);
+    }
+    for (step = 0; step < 5; ++step) {
+        CHECK_RESULT(ga2d_world_step(w, (ga2d_real)dt), GA2D_OK);
+        caps += ga2d_world_get_counters(w).speed_caps;
+        for (i = 0; i < YANK_PAIRS; ++i) {
+            ga2d_vec x = ga2d_body_center(w, light[i]);
+            double dx = (double)x.x - (double)at[i].x, dy = (double)x.y - (double)at[i].y, d = sqrt(dx * dx + dy * dy);
+            if (d > worst) worst = d;
+            at[i] = x;
+        }
+    }
+    CHECK(caps > 0);
+    if (!(worst <= bound)) test_fail(__FILE__, __LINE__, "a light box moved %.9g m in a step, bound %.9g", worst, bound);
+    ga2d_world_destroy(w);
+}
+
+/* A body that does not spin keeps its rotor to the bit, however far it is
+   from unit length in its last bit (q (3 - |q|^2) / 2 would move it): 24
+   boxes at angles 0.1 to 2.4 rad, at rest in a weightless world, 60
+   steps. */
+static void still_rotors_kept(void)
+{
+    ga2d_world *w = weightless_world();
+    ga2d_body_id ids[24];
+    ga2d_rotor q0[24];
+    int i, step, changed = 0;
+    CHECK(w != NULL);
+    if (!w) return;
+    for (i = 0; i < 24; ++i) {
+        ga2d_body_def d = box_def(GA2D_BODY_DYNAMIC, 3 * i, 0, 0.5, 0.5);
+        d.rotor = ga2d_rotor_from_angle((ga2d_real)(0.1 * (i + 1)));
+        ids[i] = ga2d_body_create(w, &d);
+        q0[i] = ga2d_body_rotor(w, ids[i]);
+    }
+    for (step = 0; step < 60; ++step) CHECK_RESULT(ga2d_world_step(w, (ga2d_real)(1.0 / 60)), GA2D_OK);
+    for (i = 0; i < 24; ++i) {
+        ga2d_rotor q = ga2d_body_rotor(w, ids[i]);
+        changed += memcmp(&q, &q0[i], sizeof q) != 0;
+    }
+    CHECK(changed == 0);
+    ga2d_world_destroy(w);
+}
 /* Old bug: a body driven past 400 m/s was capped silently, so a program
    whose scene was blowing up could not tell.  Now counters.speed_caps
    counts the caps of the last step.  The scene: a 1 kg box (1 m square,
@@ -1179,5 +1256,7 @@ void suite_hostile(void)
     test_run("hostile: coordinates are bounded", coordinates_are_bounded);
     test_run("hostile: step and gravity are bounded", step_and_gravity_are_bounded);
     test_run("hostile: speed caps counted", speed_caps_counted);
+    test_run("hostile: a body a joint yanks past the speed cap drifts no faster than it", yanked_past_the_cap);
+    test_run("hostile: bodies that do not spin keep their rotors to the bit", still_rotors_kept);
     test_run("hostile: a blow-up stops at the ground", blowup_stops_at_ground);
 }
