@@ -9910,6 +9910,17 @@ static GA2D__HOT void ga2d__wblock(const ga2d__group *g, const ga2d__w *inv_a, c
     lambda[1] = ga2d__wsel(both, b2, l2);
 }
 
+/* Where the colour of group gi ends, within a run of groups that ends
+   at `end`: the groups up to there move no body in common.  An overflow
+   group's ends where it begins (its next may move the same body). */
+static int ga2d__colour_end(const ga2d__step_context *c, int gi, int end)
+{
+    int k = 0;
+    while (k < c->colour_count && c->colour_start[k + 1] <= gi) ++k;
+    if (k == c->colour_count) return gi + 1;
+    return c->colour_start[k + 1] < end ? c->colour_start[k + 1] : end;
+}
+
 /* One group's accumulated impulses applied again at its anchors now
    (`extras` as in ga2d__solve_group; `find`, the anchors are found here
    first: ga2d__wfind). */
@@ -9985,23 +9996,36 @@ typedef struct ga2d__pass {
     ga2d__w stiff_rate, stiff_mass, stiff_impulse; /* against one the solver does not move */
 } ga2d__pass;
 
-/* One group's pass; `extras` (a constant where it is inlined) leaves a
-   polygon world's groups without the round, conveyor and rolling code,
-   and `fresh` (ps->fresh, a constant too) finds the anchors and masses
-   first (ga2d__wfind). */
-static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, int extras, int fresh)
+/* One group's pass, in phases over what it carries from one to the
+   next: the lanes' bodies, and each point's scaled inverse mass and own
+   update (ga2d__wblock).  A group's pass is one long chain of dependent
+   arithmetic (each friction point sees the last one's change), longer
+   than the processor looks ahead, so two groups of a colour, which move
+   no body in common, run phase by phase side by side
+   (ga2d__solve_pair): each one's chain fills the other's waits.
+   `extras` (a constant where it is inlined) leaves a polygon world's
+   groups without the round, conveyor and rolling code, and `fresh`
+   (ps->fresh, a constant too) finds the anchors and masses first
+   (ga2d__wfind). */
+typedef struct ga2d__gpass {
+    ga2d__wbody A, B;
+    ga2d__w inv_a[2], own[2];
+} ga2d__gpass;
+
+/* The bodies loaded (and the anchors and masses found, `fresh`), and
+   each point's update alone. */
+static GA2D__HOT void ga2d__pass_begin(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, ga2d__gpass *st,
+                                       int extras, int fresh)
 {
     const ga2d__w zero = ps->zero, one = ps->one;
     const int bias_kind = ps->bias_kind;
     const ga2d__warms *r = g->arm;
-    ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx);
-    ga2d__wbody A, B;
-    ga2d__w inv_a[2], own[2], lambda[2], soft_rate = zero, soft_mass = one, soft_impulse = zero, vn, dvx, dvy, lin;
-    ga2d__w ma, mb, tsum;
+    ga2d__w *inv_a = st->inv_a, *own = st->own;
+    ga2d__w soft_rate = zero, soft_mass = one, soft_impulse = zero, vn, dvx, dvy, lin;
     int k;
-    ga2d__wload(c->sbodies, g->a, &A, fresh);
-    ga2d__wload(c->sbodies, g->b, &B, fresh);
-    if (fresh) ga2d__wfind(g, &A, &B, ps->friction, extras);
+    ga2d__wload(c->sbodies, g->a, &st->A, fresh);
+    ga2d__wload(c->sbodies, g->b, &st->B, fresh);
+    if (fresh) ga2d__wfind(g, &st->A, &st->B, ps->friction, extras);
     if (bias_kind == GA2D__BIAS_SOFT) { /* the lanes that move both bodies are soft, the others stiff */
         ga2d__wmask both = ga2d__wand(g->move_a, g->move_b);
         soft_rate = ga2d__wsel(both, ps->soft_rate, ps->stiff_rate);
@@ -10009,8 +10033,8 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         soft_impulse = ga2d__wsel(both, ps->soft_impulse, ps->stiff_impulse);
     }
     /* the centres' relative velocity along n, shared by both points */
-    dvx = ga2d__wsub(B.vx, A.vx);
-    dvy = ga2d__wsub(B.vy, A.vy);
+    dvx = ga2d__wsub(st->B.vx, st->A.vx);
+    dvy = ga2d__wsub(st->B.vy, st->A.vy);
     lin = ga2d__wdot(dvx, dvy, g->nx, g->ny);
     for (k = 0; k < 2; ++k) {
         ga2d__w s = g->sep[k];
@@ -10026,7 +10050,7 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
            disc), and the step went to NaN in two substeps; NGS's moves
            did the same with deep overlaps of small bodies.  Found once
            per position of the bodies (ga2d__wfind) */
-        vn = ga2d__wrelative(&A, &B, lin, r[k].na, r[k].nb);
+        vn = ga2d__wrelative(&st->A, &st->B, lin, r[k].na, r[k].nb);
         if (bias_kind == GA2D__BIAS_SOFT) {
             /* the spring in impulse: its bias's push, and the part of
                the impulse it carries that the soft step lets go each pass
@@ -10069,18 +10093,34 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         inv_a[k] = ga2d__wmul(g->nmass[k], mass_scale);
         own[k] = ga2d__wsub(zero, ga2d__wadd(ga2d__wmul(inv_a[k], ga2d__wadd(vn, bias)), ga2d__wmul(impulse_scale, g->nimp[k])));
     }
-    ga2d__wblock(g, inv_a, own, lambda);
-    /* both points' impulses at once (they were found together) */
+}
+
+/* The points' normal impulses, both at once (they were found together). */
+static GA2D__HOT void ga2d__pass_normal(ga2d__group *g, ga2d__gpass *st)
+{
+    const ga2d__warms *r = g->arm;
+    ga2d__w lambda[2], ma, mb, tsum;
+    ga2d__wblock(g, st->inv_a, st->own, lambda);
     g->nimp[0] = ga2d__wadd(g->nimp[0], lambda[0]);
     g->nimp[1] = ga2d__wadd(g->nimp[1], lambda[1]);
     tsum = ga2d__wadd(lambda[0], lambda[1]);
     ma = ga2d__wadd(ga2d__wmul(r[0].na, lambda[0]), ga2d__wmul(r[1].na, lambda[1]));
     mb = ga2d__wadd(ga2d__wmul(r[0].nb, lambda[0]), ga2d__wmul(r[1].nb, lambda[1]));
-    ga2d__wapply(g, &A, &B, ga2d__wmul(g->nx, tsum), ga2d__wmul(g->ny, tsum), ma, mb);
-    if (ps->friction && bias_kind == GA2D__BIAS_SOFT) {
+    ga2d__wapply(g, &st->A, &st->B, ga2d__wmul(g->nx, tsum), ga2d__wmul(g->ny, tsum), ma, mb);
+}
+
+/* Friction at point k; the soft pass's cone takes both points at k = 0. */
+static GA2D__HOT void ga2d__pass_friction(ga2d__group *g, const ga2d__pass *ps, ga2d__gpass *st, int k, int extras)
+{
+    const ga2d__w zero = ps->zero;
+    const ga2d__warms *r = g->arm;
+    ga2d__w tx = g->ny, ty = ga2d__wsub(zero, g->nx), ma, mb, tsum;
+    if (!ps->friction) return;
+    if (ps->bias_kind == GA2D__BIAS_SOFT) {
+        ga2d__w d[2];
+        if (k > 0) return;
         /* the cone only: the pass's velocities carry the bias.  No
            velocity is read, so both points' changes go at once */
-        ga2d__w d[2];
         for (k = 0; k < 2; ++k) {
             ga2d__w cap = ga2d__wmul(g->friction, g->nimp[k]);
             ga2d__w total = ga2d__wclamp(g->timp[k], ga2d__wsub(zero, cap), cap);
@@ -10090,35 +10130,67 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
         tsum = ga2d__wadd(d[0], d[1]);
         ma = ga2d__wadd(ga2d__wmul(r[0].ta, d[0]), ga2d__wmul(r[1].ta, d[1]));
         mb = ga2d__wadd(ga2d__wmul(r[0].tb, d[0]), ga2d__wmul(r[1].tb, d[1]));
-        ga2d__wapply(g, &A, &B, ga2d__wmul(tx, tsum), ga2d__wmul(ty, tsum), ma, mb);
-    } else if (ps->friction) {
+        ga2d__wapply(g, &st->A, &st->B, ga2d__wmul(tx, tsum), ga2d__wmul(ty, tsum), ma, mb);
+    } else {
         /* point by point: the second sees the first's change */
-        for (k = 0; k < 2; ++k) {
-            ga2d__w cap = ga2d__wmul(g->friction, g->nimp[k]), dt, total, vt;
-            vt = ga2d__wrelative(&A, &B, ga2d__wdot(ga2d__wsub(B.vx, A.vx), ga2d__wsub(B.vy, A.vy), tx, ty), r[k].ta, r[k].tb);
-            if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
-            dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
-            total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
-            dt = ga2d__wsub(total, g->timp[k]);
-            g->timp[k] = total;
-            ga2d__wapply(g, &A, &B, ga2d__wmul(tx, dt), ga2d__wmul(ty, dt), ga2d__wmul(r[k].ta, dt), ga2d__wmul(r[k].tb, dt));
-        }
+        ga2d__wbody *A = &st->A, *B = &st->B;
+        ga2d__w cap = ga2d__wmul(g->friction, g->nimp[k]), dt, total, vt;
+        vt = ga2d__wrelative(A, B, ga2d__wdot(ga2d__wsub(B->vx, A->vx), ga2d__wsub(B->vy, A->vy), tx, ty), r[k].ta, r[k].tb);
+        if (extras && g->conveyor) vt = ga2d__wsub(vt, g->x->tspeed);
+        dt = ga2d__wsub(zero, ga2d__wmul(g->tmass[k], vt));
+        total = ga2d__wclamp(ga2d__wadd(g->timp[k], dt), ga2d__wsub(zero, cap), cap);
+        dt = ga2d__wsub(total, g->timp[k]);
+        g->timp[k] = total;
+        ga2d__wapply(g, A, B, ga2d__wmul(tx, dt), ga2d__wmul(ty, dt), ga2d__wmul(r[k].ta, dt), ga2d__wmul(r[k].tb, dt));
     }
+}
+
+/* Rolling resistance (`extras`), and the velocities back. */
+static GA2D__HOT void ga2d__pass_end(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, ga2d__gpass *st, int extras)
+{
     if (extras && g->rolling) {
         /* rolling resistance: a torque impulse against the bodies'
            relative spin, accumulated within +-c r times the normal
            impulse (the points' sum); the soft pass only keeps it within
            the cone, as friction */
         ga2d__w cap = ga2d__wmul(g->x->rr, ga2d__wadd(g->nimp[0], g->nimp[1]));
-        ga2d__w dl = bias_kind == GA2D__BIAS_SOFT ? zero : ga2d__wsub(zero, ga2d__wmul(g->x->rmass, ga2d__wsub(B.w, A.w)));
+        const ga2d__w zero = ps->zero;
+        ga2d__w dl = ps->bias_kind == GA2D__BIAS_SOFT ? zero : ga2d__wsub(zero, ga2d__wmul(g->x->rmass, ga2d__wsub(st->B.w, st->A.w)));
         ga2d__w total = ga2d__wclamp(ga2d__wadd(g->x->rimp, dl), ga2d__wsub(zero, cap), cap);
         dl = ga2d__wsub(total, g->x->rimp);
         g->x->rimp = total;
-        A.w = ga2d__wsub(A.w, ga2d__wmul(g->iia, dl));
-        B.w = ga2d__wadd(B.w, ga2d__wmul(g->iib, dl));
+        st->A.w = ga2d__wsub(st->A.w, ga2d__wmul(g->iia, dl));
+        st->B.w = ga2d__wadd(st->B.w, ga2d__wmul(g->iib, dl));
     }
-    ga2d__wstore(c->sbodies, g->a, g->move_a, &A);
-    ga2d__wstore(c->sbodies, g->b, g->move_b, &B);
+    ga2d__wstore(c->sbodies, g->a, g->move_a, &st->A);
+    ga2d__wstore(c->sbodies, g->b, g->move_b, &st->B);
+}
+
+static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, int extras, int fresh)
+{
+    ga2d__gpass st;
+    ga2d__pass_begin(c, g, ps, &st, extras, fresh);
+    ga2d__pass_normal(g, &st);
+    ga2d__pass_friction(g, ps, &st, 0, extras);
+    ga2d__pass_friction(g, ps, &st, 1, extras);
+    ga2d__pass_end(c, g, ps, &st, extras);
+}
+
+/* Two groups of one colour (no moved body in common, so either order
+   gives the same bits), phase by phase side by side; no extras. */
+static GA2D__HOT void ga2d__solve_pair(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, int fresh)
+{
+    ga2d__gpass st[2];
+    ga2d__pass_begin(c, &g[0], ps, &st[0], 0, fresh);
+    ga2d__pass_begin(c, &g[1], ps, &st[1], 0, fresh);
+    ga2d__pass_normal(&g[0], &st[0]);
+    ga2d__pass_normal(&g[1], &st[1]);
+    ga2d__pass_friction(&g[0], ps, &st[0], 0, 0);
+    ga2d__pass_friction(&g[1], ps, &st[1], 0, 0);
+    ga2d__pass_friction(&g[0], ps, &st[0], 1, 0);
+    ga2d__pass_friction(&g[1], ps, &st[1], 1, 0);
+    ga2d__pass_end(c, &g[0], ps, &st[0], 0);
+    ga2d__pass_end(c, &g[1], ps, &st[1], 0);
 }
 
 static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int bias_kind)
@@ -10126,7 +10198,7 @@ static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int
     ga2d_world *w = c->world;
     ga2d_real inv_h = c->inv_h, push = w->def.contact_push_max_velocity * w->def.length_units_per_meter;
     ga2d__pass ps;
-    int gi;
+    int gi, stop;
     ps.bias_kind = bias_kind;
     ps.friction = w->def.enable_friction;
     ps.fresh = c->masses_stale;
@@ -10143,11 +10215,17 @@ static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int
     ps.stiff_rate = ga2d__wsplat(c->stiff.bias_rate);
     ps.stiff_mass = ga2d__wsplat(c->stiff.mass_scale);
     ps.stiff_impulse = ga2d__wsplat(c->stiff.impulse_scale);
-    for (gi = begin; gi < end; ++gi) {
+    for (gi = begin, stop = begin; gi < end;) {
         ga2d__group *g = &c->groups[gi];
-        if (g->extras) ga2d__solve_group(c, g, &ps, 1, ps.fresh);
+        int pair;
+        if (gi >= stop) stop = ga2d__colour_end(c, gi, end);
+        pair = gi + 1 < stop && !g[0].extras && !g[1].extras;
+        if (pair && ps.fresh) ga2d__solve_pair(c, g, &ps, 1);
+        else if (pair) ga2d__solve_pair(c, g, &ps, 0);
+        else if (g->extras) ga2d__solve_group(c, g, &ps, 1, ps.fresh);
         else if (ps.fresh) ga2d__solve_group(c, g, &ps, 0, 1);
         else ga2d__solve_group(c, g, &ps, 0, 0);
+        gi += 1 + pair;
     }
 }
 

@@ -1443,6 +1443,54 @@ static void plank_past_the_colours(void)
 }
 
 
+/* The same plank in free space, struck at once by its 48 boxes at 1 m/s
+   (no gravity, no ground, no restitution): the overflow's groups each move
+   the plank, one after the other, and every impulse must reach both its
+   bodies, so the total momentum stays the boxes' P0 = 48 m (1 m/s) after
+   every step, to rounding.
+   Rounding: an impulse J applied to a body of momentum p changes the total
+   by at most eps (|p| + 2 |J|) (the velocity's sum rounded, J / m and its
+   product); |p| <= |P0| (no body carries more than all of it: they all
+   move down) and |J| <= |P0| likewise, so <= 3 eps |P0|.  A step applies at
+   most 48 contacts x (1 warm start + 2 normal passes' + 2 x 2 friction
+   points' applications) x 4 substeps x 2 bodies = 2688 impulses: after n
+   steps |P - P0| <= 2688 n 3 eps |P0| (1e-3 |P0| a step in float).  An
+   impulse on the plank that a group ran beside another lost (a body
+   stored twice: the second store wins) took 1 % of P0 away in the first
+   step. */
+static void plank_struck_past_the_colours(void)
+{
+    ga2d_world_def wd = ga2d_default_world_def();
+    ga2d_world *w;
+    ga2d_body_id plank, boxes[OVERFLOW_BOXES];
+    double p0, p = 0, mp, mb, worst = 0, per_step;
+    int i, n;
+    wd.gravity = ga2d_vec_make(0, 0);
+    w = make_world(wd, 0);
+    if (!w) return;
+    per_step = OVERFLOW_BOXES * (1 + 2 + 2 * 2) * wd.substeps * 2 * 3 * REAL_EPS;
+    plank = add_box(w, 0, 0, 8, 0.1);
+    for (i = 0; i < OVERFLOW_BOXES; ++i) {
+        boxes[i] = add_box(w, -7.05 + 0.3 * i, 0.21, 0.1, 0.1);
+        CHECK_RESULT(ga2d_body_set_velocity(w, boxes[i], ga2d_vec_make(0, -1)), GA2D_OK);
+    }
+    mp = (double)ga2d_body_mass_data(w, plank).mass;
+    mb = (double)ga2d_body_mass_data(w, boxes[0]).mass;
+    p0 = -OVERFLOW_BOXES * mb;
+    for (n = 1; n <= 60; ++n) {
+        step(w);
+        p = mp * vel_y(w, plank);
+        for (i = 0; i < OVERFLOW_BOXES; ++i) p += mb * vel_y(w, boxes[i]);
+        worst = fmax(worst, fabs(p - p0) / (n * per_step * fabs(p0)));
+    }
+    CHECK(ga2d_world_get_counters(w).constraint_count == OVERFLOW_BOXES);
+    CHECK(worst <= 1);
+    if (verbose())
+        printf("solver: %d boxes strike a free plank: momentum %.9g kg m/s of %.9g (worst %.3g of the bound), plank at %.4g m/s (shared %.4g)\n",
+               OVERFLOW_BOXES, p, p0, worst, vel_y(w, plank), p0 / (mp + OVERFLOW_BOXES * mb));
+    ga2d_world_destroy(w);
+}
+
 /* ------------------------------------------------ a kept colouring */
 /* A step keeps the colouring of the step before when it solves the same
    bodies' contacts, moved the same way, in the same order, and neither
@@ -1733,6 +1781,7 @@ static void kept_colouring_same_bits(void)
 void suite_solver(void)
 {
     test_run("solver: a plank carrying more boxes than there are colours", plank_past_the_colours);
+    test_run("solver: boxes past the colours strike a free plank: momentum kept", plank_struck_past_the_colours);
     test_run("solver: a dropped box rests at its height, flat", box_rests_at_its_height);
     test_run("solver: a stack of ten stands", stack_of_ten_stands);
     test_run("solver: every solver kind holds the stack", stack_with_every_solver);
