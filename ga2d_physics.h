@@ -10177,20 +10177,21 @@ static GA2D__HOT void ga2d__solve_group(ga2d__step_context *c, ga2d__group *g, c
 }
 
 /* Two groups of one colour (no moved body in common, so either order
-   gives the same bits), phase by phase side by side; no extras. */
-static GA2D__HOT void ga2d__solve_pair(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, int fresh)
+   gives the same bits), phase by phase side by side (`extras` if either
+   has them: the other's flags are clear). */
+static GA2D__HOT void ga2d__solve_pair(ga2d__step_context *c, ga2d__group *g, const ga2d__pass *ps, int extras, int fresh)
 {
     ga2d__gpass st[2];
-    ga2d__pass_begin(c, &g[0], ps, &st[0], 0, fresh);
-    ga2d__pass_begin(c, &g[1], ps, &st[1], 0, fresh);
+    ga2d__pass_begin(c, &g[0], ps, &st[0], extras, fresh);
+    ga2d__pass_begin(c, &g[1], ps, &st[1], extras, fresh);
     ga2d__pass_normal(&g[0], &st[0]);
     ga2d__pass_normal(&g[1], &st[1]);
-    ga2d__pass_friction(&g[0], ps, &st[0], 0, 0);
-    ga2d__pass_friction(&g[1], ps, &st[1], 0, 0);
-    ga2d__pass_friction(&g[0], ps, &st[0], 1, 0);
-    ga2d__pass_friction(&g[1], ps, &st[1], 1, 0);
-    ga2d__pass_end(c, &g[0], ps, &st[0], 0);
-    ga2d__pass_end(c, &g[1], ps, &st[1], 0);
+    ga2d__pass_friction(&g[0], ps, &st[0], 0, extras);
+    ga2d__pass_friction(&g[1], ps, &st[1], 0, extras);
+    ga2d__pass_friction(&g[0], ps, &st[0], 1, extras);
+    ga2d__pass_friction(&g[1], ps, &st[1], 1, extras);
+    ga2d__pass_end(c, &g[0], ps, &st[0], extras);
+    ga2d__pass_end(c, &g[1], ps, &st[1], extras);
 }
 
 static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int end, int bias_kind)
@@ -10219,9 +10220,10 @@ static GA2D__HOT void ga2d__solve_contacts(ga2d__step_context *c, int begin, int
         ga2d__group *g = &c->groups[gi];
         int pair;
         if (gi >= stop) stop = ga2d__colour_end(c, gi, end);
-        pair = gi + 1 < stop && !g[0].extras && !g[1].extras;
-        if (pair && ps.fresh) ga2d__solve_pair(c, g, &ps, 1);
-        else if (pair) ga2d__solve_pair(c, g, &ps, 0);
+        pair = gi + 1 < stop;
+        if (pair && (g[0].extras || g[1].extras)) ga2d__solve_pair(c, g, &ps, 1, ps.fresh);
+        else if (pair && ps.fresh) ga2d__solve_pair(c, g, &ps, 0, 1);
+        else if (pair) ga2d__solve_pair(c, g, &ps, 0, 0);
         else if (g->extras) ga2d__solve_group(c, g, &ps, 1, ps.fresh);
         else if (ps.fresh) ga2d__solve_group(c, g, &ps, 0, 1);
         else ga2d__solve_group(c, g, &ps, 0, 0);
